@@ -1,0 +1,179 @@
+#include "app/cli.hpp"
+
+#include <charconv>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <vector>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "gfx/context.hpp"
+#include "gfx/shader_program.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium {
+namespace {
+
+template <typename T>
+T parse_number(std::string_view flag, std::string_view text, T min, T max) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < min || value > max) {
+    throw UsageError(std::string(flag) + " expects a whole number from " + std::to_string(min) + " to " +
+                     std::to_string(max) + ", got '" + std::string(text) + "'");
+  }
+  return value;
+}
+
+glm::ivec2 parse_size(std::string_view text) {
+  const auto x = text.find('x');
+  if (x == std::string_view::npos) throw UsageError("--size expects WIDTHxHEIGHT (e.g. 640x360), got '" + std::string(text) + "'");
+  try {
+    return {parse_number<int>("--size", text.substr(0, x), 1, kMaxImageSide),
+            parse_number<int>("--size", text.substr(x + 1), 1, kMaxImageSide)};
+  } catch (const UsageError&) {
+    throw UsageError("--size expects WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide) +
+                     ", got '" + std::string(text) + "'");
+  }
+}
+
+}  // namespace
+
+std::string help_text() {
+  std::string modes;
+  for (const auto& info : lighting::technique_table()) {
+    modes += "  " + std::string(info.name) + std::string(std::max<std::size_t>(2, 22 - info.name.size()), ' ') +
+             std::string(info.description) + "\n";
+  }
+  return "Usage:\n"
+         "  atrium [SCENE] [options]                 open the demo window\n"
+         "  atrium render [SCENE] --out FILE.png [options]\n"
+         "                                           render one frame headless to a PNG\n"
+         "  atrium --help                            show this text\n"
+         "\n"
+         "SCENE is the built-in scene 'atrium' (the default).\n"
+         "\n"
+         "Options:\n"
+         "  --mode M        lighting technique (default: the scene's, 'forward')\n"
+         "  --lights N      number of point lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160)\n"
+         "  --view K        stored view 1..5 (default 1)\n"
+         "  --size WxH      image or window size in pixels (default 1280x720)\n"
+         "  --out FILE.png  render: where to write the image\n"
+         "  --frames N      window: quit after N frames (for scripted runs)\n"
+         "\n"
+         "Modes:\n" + modes +
+         "\n"
+         "Window keys: 1..5 stored views, t / Shift+t next / previous mode, Esc quit.\n"
+         "Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.\n";
+}
+
+CliOptions parse_cli(std::span<const std::string_view> args) {
+  CliOptions options;
+  std::size_t i = 0;
+  if (i < args.size() && args[i] == "render") {
+    options.command = Command::Render;
+    ++i;
+  }
+  bool scene_given = false;
+  bool out_given = false;
+  for (; i < args.size(); ++i) {
+    const std::string_view arg = args[i];
+    if (arg == "--help" || arg == "-h") {
+      options.command = Command::Help;
+      return options;
+    }
+    auto value = [&]() -> std::string_view {
+      if (i + 1 >= args.size()) throw UsageError(std::string(arg) + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--mode") {
+      options.mode = std::string(value());
+    } else if (arg == "--lights") {
+      options.lights = parse_number<std::uint32_t>("--lights", value(), 0, kMaxLights);
+    } else if (arg == "--view") {
+      options.view = parse_number<int>("--view", value(), 1, 1000);
+    } else if (arg == "--size") {
+      options.size = parse_size(value());
+    } else if (arg == "--out") {
+      options.out = std::string(value());
+      out_given = true;
+    } else if (arg == "--frames") {
+      options.frames = parse_number<std::uint64_t>("--frames", value(), 1, 1'000'000'000);
+    } else if (arg.starts_with("-")) {
+      throw UsageError("unknown option '" + std::string(arg) + "' (see atrium --help)");
+    } else if (!scene_given) {
+      options.scene = std::string(arg);
+      scene_given = true;
+    } else {
+      throw UsageError("unexpected argument '" + std::string(arg) + "' (one scene at most)");
+    }
+  }
+  if (options.command == Command::Render && !out_given) throw UsageError("render needs --out FILE.png");
+  if (options.command != Command::Render && out_given) throw UsageError("--out is for `atrium render`");
+  if (options.command == Command::Render && options.frames) throw UsageError("--frames is for the window");
+  if (options.mode) {
+    try {
+      require_known_mode(*options.mode);
+    } catch (const InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  return options;
+}
+
+namespace {
+
+int run_render(const CliOptions& options) {
+  const std::filesystem::path out(options.out);
+  if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path())) {
+    throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");
+  }
+  const auto context = gfx::HeadlessContext::create();
+  World world({options.scene, options.lights, options.mode, options.view, options.size});
+  world.frame(0.0);
+  assets::write_png(out, world.renderer().read_output());
+  std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %s)\n", options.out.c_str(), options.size.x,
+              options.size.y, world.mode().c_str(), world.view(),
+              world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(),
+              world.renderer().stats().lights, context->info().renderer.c_str());
+  return kExitOk;
+}
+
+}  // namespace
+
+int run_command(const CliOptions& options) {
+  switch (options.command) {
+    case Command::Help: std::fputs(help_text().c_str(), stdout); return kExitOk;
+    case Command::Render: return run_render(options);
+    case Command::Window: return run_window(options);
+  }
+  return kExitUsage;
+}
+
+int run_cli(int argc, char** argv) {
+  std::vector<std::string_view> args(argv + 1, argv + argc);
+  try {
+    return run_command(parse_cli(args));
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return kExitUsage;
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return kExitUsage;
+  } catch (const assets::ImageError& e) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return kExitUsage;
+  } catch (const gfx::ContextError& e) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return kExitRuntimeFailure;
+  } catch (const gfx::ShaderError& e) {
+    std::fprintf(stderr, "atrium: shader error:\n%s\n", e.what());
+    return kExitRuntimeFailure;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return kExitRuntimeFailure;
+  }
+}
+
+}  // namespace atrium

@@ -1,0 +1,50 @@
+// The `atrium` command line: parsing (pure, testable) and the commands.
+// Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.
+#pragma once
+
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+namespace atrium {
+
+inline constexpr int kExitOk = 0;
+inline constexpr int kExitRuntimeFailure = 1;
+inline constexpr int kExitUsage = 2;
+inline constexpr std::uint32_t kMaxLights = 1'000'000;
+inline constexpr int kMaxImageSide = 16384;
+
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class Command { Window, Render, Help };
+
+struct CliOptions {
+  Command command = Command::Window;
+  std::string scene = "atrium";
+  std::optional<std::string> mode;
+  std::optional<std::uint32_t> lights;
+  int view = 1;
+  glm::ivec2 size{1280, 720};
+  std::string out;                 // render: PNG path
+  std::optional<std::uint64_t> frames;  // window: quit after this many frames
+};
+
+// Throws UsageError with a one-line message naming the bad argument.
+[[nodiscard]] CliOptions parse_cli(std::span<const std::string_view> args);
+[[nodiscard]] std::string help_text();
+
+// Runs a parsed command; returns the process exit code.
+int run_command(const CliOptions& options);
+// parse + run, with every error turned into a message and an exit code.
+int run_cli(int argc, char** argv);
+
+int run_window(const CliOptions& options);
+
+}  // namespace atrium

@@ -1,0 +1,68 @@
+// A World is one running scene: the registry with its entities and resources,
+// the scheduler with every system registered in its phase, and the loaded
+// assets. Both the window and the headless commands drive a World.
+#pragma once
+
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "assets/asset_manager.hpp"
+#include "assets/scene.hpp"
+#include "ecs/scheduler.hpp"
+#include "systems/mesh_renderer.hpp"
+
+namespace atrium {
+
+// Bad user input (unknown scene, view or mode): the CLI exits 2 with the message.
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct WorldOptions {
+  std::string scene = "atrium";
+  std::optional<std::uint32_t> lights;  // replaces the scene's light count
+  std::optional<std::string> mode;      // the scene's default mode when absent
+  int view = 1;                         // 1-based index into the scene's views
+  glm::ivec2 size{1280, 720};
+};
+
+class World {
+ public:
+  // Loads the scene named in options and uploads it to the current GL context.
+  explicit World(const WorldOptions& options);
+  // A scene built elsewhere (tests, importers): `assets` holds what it references.
+  World(assets::AssetManager assets, assets::SceneDescription scene, const WorldOptions& options);
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Runs every phase once.
+  void frame(double delta_seconds);
+
+  // Moves the camera to stored view `index` (1-based). Throws InputError.
+  void set_view(int index);
+  void set_mode(const std::string& mode);
+  void set_size(glm::ivec2 size);
+
+  [[nodiscard]] ecs::Registry& registry() { return registry_; }
+  [[nodiscard]] const assets::SceneDescription& scene() const { return scene_; }
+  [[nodiscard]] MeshRenderer& renderer() { return registry_.resource<MeshRenderer>(); }
+  [[nodiscard]] const std::string& mode() const;
+  [[nodiscard]] int view() const { return view_; }
+
+ private:
+  ecs::Registry registry_;
+  ecs::Scheduler scheduler_;
+  assets::SceneDescription scene_;
+  int view_ = 1;
+
+  void start(const WorldOptions& options);
+};
+
+// Checks a mode name against the technique table; throws InputError listing the modes.
+void require_known_mode(const std::string& mode);
+
+}  // namespace atrium

@@ -1,0 +1,94 @@
+#include "assets/gpu_assets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace atrium::assets {
+namespace {
+
+constexpr float kMaxAnisotropy = 8.0f;
+
+gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_t& bytes) {
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  const GLenum format = color_space == ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  if (levels > 1) glGenerateTextureMipmap(texture.id());
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
+  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+      epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic")) {
+    glTextureParameterf(texture.id(), GL_TEXTURE_MAX_ANISOTROPY, kMaxAnisotropy);
+  }
+  bytes += static_cast<std::size_t>(image.width) * image.height * 4 * 4 / 3;  // with the mip chain
+  return texture;
+}
+
+}  // namespace
+
+void GpuAssets::upload(const AssetManager& assets) {
+  if (!white_) {
+    const Image white{1, 1, {255, 255, 255, 255}};
+    std::size_t ignored = 0;
+    white_ = upload_image(white, ColorSpace::Linear, ignored);
+  }
+  for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
+    const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
+    textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
+  }
+  for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
+    const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    GpuMeshAsset gpu;
+    std::vector<Vertex> vertices;
+    std::vector<std::uint32_t> indices;
+    for (const Mesh& mesh : asset.meshes) {
+      auto& ranges = gpu.meshes.emplace_back();
+      for (const Primitive& p : mesh.primitives) {
+        ranges.push_back({static_cast<std::uint32_t>(indices.size()), static_cast<std::uint32_t>(p.indices.size()),
+                          static_cast<std::int32_t>(vertices.size())});
+        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
+        indices.insert(indices.end(), p.indices.begin(), p.indices.end());
+      }
+    }
+    gpu.vertices = gfx::create_buffer();
+    gpu.indices = gfx::create_buffer();
+    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
+                         vertices.empty() ? nullptr : vertices.data(), 0);
+    glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
+                         indices.empty() ? nullptr : indices.data(), 0);
+    buffer_bytes_ += vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+
+    gpu.vertex_array = gfx::create_vertex_array();
+    const GLuint vao = gpu.vertex_array.id();
+    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, gpu.indices.id());
+    struct Attribute {
+      GLuint location;
+      GLint components;
+      std::size_t offset;
+    };
+    const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
+                                    {1, 3, offsetof(Vertex, normal)},
+                                    {2, 4, offsetof(Vertex, tangent)},
+                                    {3, 2, offsetof(Vertex, uv0)},
+                                    {4, 2, offsetof(Vertex, uv1)}};
+    for (const auto& attribute : attributes) {
+      glEnableVertexArrayAttrib(vao, attribute.location);
+      glVertexArrayAttribFormat(vao, attribute.location, attribute.components, GL_FLOAT, GL_FALSE,
+                                static_cast<GLuint>(attribute.offset));
+      glVertexArrayAttribBinding(vao, attribute.location, 0);
+    }
+    mesh_assets_.push_back(std::move(gpu));
+  }
+}
+
+GLuint GpuAssets::texture(TextureHandle handle) const {
+  return handle.valid() && handle.index < textures_.size() ? textures_[handle.index].id() : white_.id();
+}
+
+}  // namespace atrium::assets

@@ -1,0 +1,47 @@
+// GPU copies of the AssetManager's contents: one vertex and one index buffer per
+// mesh asset (primitives are ranges in them), one mipmapped texture per image,
+// and neutral 1x1 defaults for the texture slots a material leaves empty.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "assets/asset_manager.hpp"
+#include "gfx/gl_object.hpp"
+
+namespace atrium::assets {
+
+struct GpuPrimitive {
+  std::uint32_t first_index = 0;  // in the asset's index buffer
+  std::uint32_t index_count = 0;
+  std::int32_t base_vertex = 0;
+};
+
+struct GpuMeshAsset {
+  gfx::Buffer vertices;
+  gfx::Buffer indices;
+  gfx::VertexArray vertex_array;
+  std::vector<std::vector<GpuPrimitive>> meshes;  // [mesh][primitive]
+};
+
+class GpuAssets {
+ public:
+  // Uploads everything the AssetManager holds that is not on the GPU yet.
+  // Needs a current GL 4.5 context.
+  void upload(const AssetManager& assets);
+
+  [[nodiscard]] const GpuMeshAsset& mesh_asset(MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
+  // The texture's GL name, or the white default for an empty handle.
+  [[nodiscard]] GLuint texture(TextureHandle handle) const;
+  [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
+  [[nodiscard]] std::size_t buffer_bytes() const { return buffer_bytes_; }
+
+ private:
+  std::vector<GpuMeshAsset> mesh_assets_;
+  std::vector<gfx::Texture> textures_;
+  gfx::Texture white_;
+  std::size_t texture_bytes_ = 0;
+  std::size_t buffer_bytes_ = 0;
+};
+
+}  // namespace atrium::assets

@@ -1,0 +1,38 @@
+// Registry resources (one per world) that systems share each frame. Plain data.
+#pragma once
+
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace atrium {
+
+// Size of the image the renderer produces, in pixels.
+struct Viewport {
+  glm::ivec2 size{1280, 720};
+};
+
+// Camera matrices for the frame, written by the camera system (PostUpdate).
+struct ViewState {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  glm::mat4 view_projection{1.0f};
+  glm::vec3 camera_position{0.0f};
+  float near_plane = 0.05f;
+  float far_plane = 200.0f;
+};
+
+// Scene-wide lighting settings.
+struct SceneSettings {
+  glm::vec3 ambient{0.03f};
+  glm::vec3 background{0.0f};
+  float exposure = 1.0f;
+};
+
+// What the MeshRenderer draws with: a mode name from the technique table.
+struct RendererSettings {
+  std::string mode = "forward";
+  bool present_to_window = false;  // blit the final image to the default framebuffer
+};
+
+}  // namespace atrium

@@ -1,0 +1,18 @@
+// Where an entity is: position, orientation and scale in world space.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+namespace atrium {
+
+struct Transform {
+  glm::vec3 position{0.0f};
+  glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+  glm::vec3 scale{1.0f};
+};
+
+// The model matrix of a Transform (translate * rotate * scale).
+[[nodiscard]] glm::mat4 to_matrix(const Transform& transform);
+
+}  // namespace atrium

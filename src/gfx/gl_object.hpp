@@ -1,0 +1,80 @@
+// Move-only RAII owners of GL object names, one alias per kind. Every owner counts
+// itself in a per-kind live counter, so tests can prove that create/destroy cycles
+// and mode switches leave no GL objects behind.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <string_view>
+#include <utility>
+
+#include "gfx/gl.hpp"
+
+namespace atrium::gfx {
+
+enum class GlKind : std::uint8_t { Buffer, Texture, Framebuffer, VertexArray, Shader, Program, Query, Sampler, Renderbuffer };
+inline constexpr std::size_t kGlKindCount = 9;
+
+[[nodiscard]] std::string_view gl_kind_name(GlKind kind);
+// Names currently owned by GlObject wrappers, per kind and in total.
+[[nodiscard]] std::int64_t live_gl_objects(GlKind kind);
+[[nodiscard]] std::int64_t live_gl_objects();
+// Asks the driver (glIs*) whether a name still denotes an object of that kind.
+[[nodiscard]] bool gl_object_exists(GlKind kind, GLuint name);
+
+namespace detail {
+void count_created(GlKind kind);
+void destroy_gl_object(GlKind kind, GLuint name);
+}  // namespace detail
+
+template <GlKind K>
+class GlObject {
+ public:
+  GlObject() = default;
+  // Takes ownership of a name created elsewhere (glCreateShader, glCreateProgram...).
+  static GlObject adopt(GLuint name) {
+    GlObject object;
+    object.name_ = name;
+    if (name != 0) detail::count_created(K);
+    return object;
+  }
+  ~GlObject() { reset(); }
+  GlObject(const GlObject&) = delete;
+  GlObject& operator=(const GlObject&) = delete;
+  GlObject(GlObject&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+  GlObject& operator=(GlObject&& other) noexcept {
+    if (this != &other) {
+      reset();
+      name_ = std::exchange(other.name_, 0);
+    }
+    return *this;
+  }
+
+  [[nodiscard]] GLuint id() const { return name_; }
+  explicit operator bool() const { return name_ != 0; }
+  void reset() {
+    if (name_ != 0) detail::destroy_gl_object(K, std::exchange(name_, 0));
+  }
+
+ private:
+  GLuint name_ = 0;
+};
+
+using Buffer = GlObject<GlKind::Buffer>;
+using Texture = GlObject<GlKind::Texture>;
+using Framebuffer = GlObject<GlKind::Framebuffer>;
+using VertexArray = GlObject<GlKind::VertexArray>;
+using Shader = GlObject<GlKind::Shader>;
+using Program = GlObject<GlKind::Program>;
+using Query = GlObject<GlKind::Query>;
+using Sampler = GlObject<GlKind::Sampler>;
+
+// Creation through GL 4.5 direct state access.
+[[nodiscard]] Buffer create_buffer();
+[[nodiscard]] Texture create_texture(GLenum target);
+[[nodiscard]] Framebuffer create_framebuffer();
+[[nodiscard]] VertexArray create_vertex_array();
+[[nodiscard]] Query create_query(GLenum target);
+[[nodiscard]] Sampler create_sampler();
+
+}  // namespace atrium::gfx

@@ -1,0 +1,196 @@
+#include "gfx/shader_program.hpp"
+
+#include <fstream>
+#include <optional>
+#include <regex>
+#include <set>
+#include <sstream>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace atrium::gfx {
+namespace fs = std::filesystem;
+
+ShaderSearchPath default_shader_path() {
+  if (const char* dir = std::getenv("ATRIUM_SHADER_DIR"); dir && *dir) return {dir};
+  return {ATRIUM_SHADER_DIR};
+}
+
+namespace {
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return {};
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+struct Preprocessor {
+  const ShaderSearchPath& path;
+  PreprocessedShader result;
+  std::set<std::string> included;
+
+  // Appends `name` (a root-relative path) to result.text. `defines` is non-null for
+  // the stage's main file only: they go right after its #version line.
+  void append(const std::string& name, const std::vector<ShaderDefine>* defines) {
+    const auto source_index = static_cast<int>(result.files.size());
+    result.files.push_back(name);
+    included.insert(name);
+    const std::optional<fs::path> found = find(name);
+    if (!found) throw ShaderError(name + ": cannot open shader file (looked in " + describe_path() + ")");
+    const std::string text = read_text(*found);
+    if (!defines) result.text += "#line 1 " + std::to_string(source_index) + "\n";
+    std::istringstream lines(text);
+    std::string line;
+    int line_number = 0;
+    static const std::regex kInclude(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
+    while (std::getline(lines, line)) {
+      ++line_number;
+      std::smatch match;
+      if (std::regex_match(line, match, kInclude)) {
+        const std::string target = resolve(name, match[1].str(), line_number);
+        if (!included.contains(target)) {
+          append(target, nullptr);
+          result.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(source_index) + "\n";
+        } else {
+          result.text += "\n";
+        }
+        continue;
+      }
+      result.text += line + "\n";
+      if (defines && line.rfind("#version", 0) == 0) {
+        for (const auto& define : *defines) result.text += "#define " + define.name + " " + define.value + "\n";
+        result.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(source_index) + "\n";
+        defines = nullptr;
+      }
+    }
+    if (defines) throw ShaderError(name + ":1: error: the main shader file must start with #version");
+  }
+
+  std::optional<fs::path> find(const std::string& name) const {
+    for (const fs::path& folder : path) {
+      if (fs::is_regular_file(folder / name)) return folder / name;
+    }
+    return std::nullopt;
+  }
+
+  std::string describe_path() const {
+    std::string out;
+    for (const fs::path& folder : path) out += (out.empty() ? "" : ", ") + folder.string();
+    return out;
+  }
+
+  std::string resolve(const std::string& from, const std::string& target, int line_number) const {
+    const std::string beside = (fs::path(from).parent_path() / target).lexically_normal().generic_string();
+    if (find(beside)) return beside;
+    const std::string from_root = fs::path(target).lexically_normal().generic_string();
+    if (find(from_root)) return from_root;
+    throw ShaderError(from + ":" + std::to_string(line_number) + ": error: cannot find included file \"" + target + "\"");
+  }
+};
+
+GLenum stage_of(const std::string& file) {
+  const std::string ext = fs::path(file).extension().string();
+  if (ext == ".vert") return GL_VERTEX_SHADER;
+  if (ext == ".frag") return GL_FRAGMENT_SHADER;
+  if (ext == ".comp") return GL_COMPUTE_SHADER;
+  if (ext == ".geom") return GL_GEOMETRY_SHADER;
+  throw ShaderError(file + ": unknown shader stage (expected .vert, .frag, .comp or .geom)");
+}
+
+std::string info_log(GLuint object, bool is_program) {
+  GLint length = 0;
+  if (is_program) glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+  else glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+  std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+  if (is_program) glGetProgramInfoLog(object, length, nullptr, log.data());
+  else glGetShaderInfoLog(object, length, nullptr, log.data());
+  log.resize(std::char_traits<char>::length(log.c_str()));
+  return log;
+}
+
+}  // namespace
+
+PreprocessedShader preprocess_shader(const ShaderSearchPath& path, const std::string& file,
+                                     const std::vector<ShaderDefine>& defines) {
+  Preprocessor preprocessor{path, {}, {}};
+  preprocessor.append(fs::path(file).lexically_normal().generic_string(), &defines);
+  return std::move(preprocessor.result);
+}
+
+std::string map_shader_log(const std::string& log, const std::vector<std::string>& files) {
+  // Mesa: "0:12(5): error: msg"; NVIDIA: "0(12) : error C0000: msg".
+  static const std::regex kMesa(R"(^(\d+):(\d+)\(\d+\):\s*(.*)$)");
+  static const std::regex kNvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
+  std::istringstream lines(log);
+  std::string line;
+  std::string out;
+  while (std::getline(lines, line)) {
+    if (line.empty()) continue;
+    std::smatch match;
+    if (std::regex_match(line, match, kMesa) || std::regex_match(line, match, kNvidia)) {
+      const auto index = std::stoul(match[1].str());
+      const std::string file = index < files.size() ? files[index] : "source " + match[1].str();
+      out += file + ":" + match[2].str() + ": " + match[3].str() + "\n";
+    } else {
+      out += line + "\n";
+    }
+  }
+  return out;
+}
+
+ShaderProgram ShaderProgram::load(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines,
+                                  const ShaderSearchPath& path) {
+  ShaderProgram result;
+  std::vector<Shader> shaders;
+  std::string names;
+  for (const auto& file : files) {
+    names += (names.empty() ? "" : " + ") + file;
+    const GLenum stage = stage_of(file);
+    const PreprocessedShader source = preprocess_shader(path, file, defines);
+    Shader shader = Shader::adopt(glCreateShader(stage));
+    const char* text = source.text.c_str();
+    glShaderSource(shader.id(), 1, &text, nullptr);
+    glCompileShader(shader.id());
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader.id(), GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      std::string message = map_shader_log(info_log(shader.id(), false), source.files);
+      if (!message.empty() && message.back() == '\n') message.pop_back();
+      throw ShaderError(message.empty() ? file + ": compile failed without a log" : message);
+    }
+    shaders.push_back(std::move(shader));
+  }
+  result.program_ = Program::adopt(glCreateProgram());
+  for (const auto& shader : shaders) glAttachShader(result.program_.id(), shader.id());
+  glLinkProgram(result.program_.id());
+  for (const auto& shader : shaders) glDetachShader(result.program_.id(), shader.id());
+  GLint ok = GL_FALSE;
+  glGetProgramiv(result.program_.id(), GL_LINK_STATUS, &ok);
+  if (!ok) throw ShaderError(names + ": link failed: " + info_log(result.program_.id(), true));
+  return result;
+}
+
+void ShaderProgram::use() const { glUseProgram(program_.id()); }
+
+GLint ShaderProgram::location(const char* name) {
+  auto it = locations_.find(name);
+  if (it == locations_.end()) it = locations_.emplace(name, glGetUniformLocation(program_.id(), name)).first;
+  return it->second;
+}
+
+void ShaderProgram::set(const char* name, int value) { glProgramUniform1i(id(), location(name), value); }
+void ShaderProgram::set(const char* name, unsigned value) { glProgramUniform1ui(id(), location(name), value); }
+void ShaderProgram::set(const char* name, float value) { glProgramUniform1f(id(), location(name), value); }
+void ShaderProgram::set(const char* name, const glm::vec2& v) { glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, const glm::vec3& v) { glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, const glm::vec4& v) { glProgramUniform4fv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, const glm::mat3& m) {
+  glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(m));
+}
+void ShaderProgram::set(const char* name, const glm::mat4& m) {
+  glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(m));
+}
+
+}  // namespace atrium::gfx

@@ -1,0 +1,41 @@
+// The frame's geometry as draw items, gathered once from MeshInstance entities
+// and shared by every pass of every technique: opaque and alpha-masked items in
+// asset order, blended items sorted back to front.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "assets/asset_manager.hpp"
+#include "assets/gpu_assets.hpp"
+#include "ecs/registry.hpp"
+#include "gfx/shader_program.hpp"
+
+namespace atrium::lighting {
+
+struct DrawItem {
+  GLuint vertex_array = 0;
+  assets::GpuPrimitive range;
+  const assets::Material* material = nullptr;
+  glm::mat4 model{1.0f};
+  glm::mat3 normal_matrix{1.0f};
+  float view_depth = 0.0f;  // distance along the view axis to the bounds' centre
+};
+
+struct DrawList {
+  std::vector<DrawItem> opaque;   // Opaque and Mask materials
+  std::vector<DrawItem> blended;  // Blend materials, farthest first
+  std::size_t triangles = 0;
+};
+
+[[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
+                                       const assets::GpuAssets& gpu, const glm::mat4& view);
+
+// Issues one draw per item with `program`: sets the model and material uniforms,
+// binds the material's textures to units 0-4, and disables back-face culling
+// for double-sided materials. Leaves culling enabled on return.
+void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items);
+
+}  // namespace atrium::lighting

@@ -1,0 +1,33 @@
+#include "systems/lighting/forward.hpp"
+
+namespace atrium::lighting {
+
+ForwardTechnique::ForwardTechnique() : program_(gfx::ShaderProgram::load({"forward/mesh.vert", "forward/shade.frag"})) {}
+
+void ForwardTechnique::resize(glm::ivec2 /*size*/) {}
+
+void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
+  glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  program_.use();
+  draw_items(program_, frame.gpu, frame.draws.opaque);
+
+  if (!frame.draws.blended.empty()) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+    draw_items(program_, frame.gpu, frame.draws.blended);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,58 @@
+// The one interface every lighting technique implements, and the technique table
+// that names them. A technique draws the frame's lit, linear HDR image into the
+// renderer's colour target (with depth in its depth-stencil target); the
+// MeshRenderer then tone-maps it. Adding a technique is one file pair here, one
+// shader folder, and one row in technique_table.cpp.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <string_view>
+
+#include <glm/glm.hpp>
+
+#include "assets/gpu_assets.hpp"
+#include "gfx/gl.hpp"
+#include "systems/lighting/draw_list.hpp"
+
+namespace atrium::lighting {
+
+// What a technique reads each frame. The frame uniform block and the light
+// storage buffer are already bound at kFrameUniformBinding / kLightStorageBinding.
+struct FrameContext {
+  const DrawList& draws;
+  const assets::GpuAssets& gpu;
+  std::uint32_t light_count = 0;
+  glm::vec3 background{0.0f};
+};
+
+// The frame's named targets, owned by the MeshRenderer.
+struct FrameTargets {
+  GLuint hdr_framebuffer = 0;  // colour attachment 0 = hdr_color, depth-stencil = depth_stencil
+  GLuint hdr_color = 0;        // RGBA16F
+  GLuint depth_stencil = 0;    // DEPTH24_STENCIL8
+  glm::ivec2 size{0};
+};
+
+class LightingTechnique {
+ public:
+  virtual ~LightingTechnique() = default;
+  // Called before the first frame and whenever the output size changes; a
+  // technique (re)allocates only the targets of its own here.
+  virtual void resize(glm::ivec2 size) = 0;
+  virtual void execute(const FrameContext& frame, const FrameTargets& targets) = 0;
+  // Technique-specific controls for the overlay; most techniques have none.
+  virtual void draw_ui() {}
+};
+
+struct TechniqueInfo {
+  std::string_view name;         // the mode name users type (--mode, `t`)
+  std::string_view description;  // one line for --help and the overlay
+  std::unique_ptr<LightingTechnique> (*create)();
+};
+
+[[nodiscard]] std::span<const TechniqueInfo> technique_table();
+// nullptr when no technique has that name.
+[[nodiscard]] const TechniqueInfo* find_technique(std::string_view name);
+
+}  // namespace atrium::lighting

@@ -1,0 +1,28 @@
+// The technique table: one row per lighting mode, in the order `t` cycles them.
+#include "systems/lighting/forward.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium::lighting {
+namespace {
+
+template <typename T>
+std::unique_ptr<LightingTechnique> make() {
+  return std::make_unique<T>();
+}
+
+constexpr TechniqueInfo kTechniques[] = {
+    {"forward", "one geometry pass; every fragment loops over every light (the baseline)", &make<ForwardTechnique>},
+};
+
+}  // namespace
+
+std::span<const TechniqueInfo> technique_table() { return kTechniques; }
+
+const TechniqueInfo* find_technique(std::string_view name) {
+  for (const TechniqueInfo& info : kTechniques) {
+    if (info.name == name) return &info;
+  }
+  return nullptr;
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,156 @@
+#include "systems/mesh_renderer.hpp"
+
+#include <stdexcept>
+
+#include "components/frame_resources.hpp"
+#include "systems/light_buffer.hpp"
+#include "systems/lighting/frame_uniforms.hpp"
+
+namespace atrium {
+namespace {
+
+gfx::Texture make_target(GLenum format, glm::ivec2 size) {
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, format, size.x, size.y);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void require_complete(GLuint framebuffer, const char* what) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error(std::string("render target ") + what + " is incomplete (status 0x" +
+                             std::to_string(status) + ")");
+  }
+}
+
+}  // namespace
+
+MeshRenderer::MeshRenderer()
+    : frame_uniforms_(gfx::create_buffer()),
+      empty_vertex_array_(gfx::create_vertex_array()),
+      tonemap_(gfx::ShaderProgram::load({"post/fullscreen.vert", "post/tonemap.frag"})) {
+  glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+void MeshRenderer::resize(glm::ivec2 size) {
+  size_ = size;
+  hdr_color_ = make_target(GL_RGBA16F, size);
+  depth_stencil_ = make_target(GL_DEPTH24_STENCIL8, size);
+  hdr_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
+  glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
+  require_complete(hdr_framebuffer_.id(), "hdr");
+  output_color_ = make_target(GL_RGBA8, size);
+  output_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
+  require_complete(output_framebuffer_.id(), "output");
+  if (technique_) technique_->resize(size);
+}
+
+void MeshRenderer::select_technique(const std::string& mode) {
+  const lighting::TechniqueInfo* info = lighting::find_technique(mode);
+  if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
+  technique_.reset();  // release the old technique's targets before the new one allocates
+  technique_ = info->create();
+  technique_->resize(size_);
+  mode_ = mode;
+}
+
+void MeshRenderer::render(ecs::Registry& registry) {
+  const glm::ivec2 size = registry.resource<Viewport>().size;
+  if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
+  if (size != size_) resize(size);
+  const auto& settings = registry.resource<RendererSettings>();
+  if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
+
+  const auto& view = registry.resource<ViewState>();
+  const auto& scene = registry.resource<SceneSettings>();
+  const auto& lights = registry.resource<LightBuffer>();
+  const auto& assets = registry.resource<assets::AssetManager>();
+  const auto& gpu = registry.resource<assets::GpuAssets>();
+
+  const lighting::DrawList draws = lighting::build_draw_list(registry, assets, gpu, view.view);
+  stats_ = {draws.opaque.size() + draws.blended.size(), draws.triangles, lights.count};
+
+  lighting::FrameUniforms uniforms{};
+  uniforms.view = view.view;
+  uniforms.projection = view.projection;
+  uniforms.view_projection = view.view_projection;
+  uniforms.inverse_view_projection = glm::inverse(view.view_projection);
+  uniforms.camera_position = glm::vec4(view.camera_position, 1.0f);
+  uniforms.ambient = glm::vec4(scene.ambient, 0.0f);
+  uniforms.background = glm::vec4(scene.background, 1.0f);
+  uniforms.viewport_size = glm::vec2(size);
+  uniforms.exposure = scene.exposure;
+  uniforms.light_count = lights.count;
+  uniforms.near_plane = view.near_plane;
+  uniforms.far_plane = view.far_plane;
+  glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
+  glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
+
+  const lighting::FrameContext frame{draws, gpu, lights.count, scene.background};
+  const lighting::FrameTargets targets{hdr_framebuffer_.id(), hdr_color_.id(), depth_stencil_.id(), size_};
+  technique_->execute(frame, targets);
+
+  // Tone map into the 8-bit output.
+  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
+  glViewport(0, 0, size_.x, size_.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glDisable(GL_CULL_FACE);
+  tonemap_.use();
+  glBindTextureUnit(0, hdr_color_.id());
+  glBindVertexArray(empty_vertex_array_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+
+  if (settings.present_to_window) {
+    glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+assets::Image MeshRenderer::read_output() const {
+  assets::Image image{size_.x, size_.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size_.x) * size_.y * 4)};
+  if (image.rgba.empty()) return image;
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glGetTextureImage(output_color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
+                    image.rgba.data());
+  // GL's rows run bottom to top; images run top to bottom.
+  const std::size_t row = static_cast<std::size_t>(size_.x) * 4;
+  for (int y = 0; y < size_.y / 2; ++y) {
+    std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                     image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                     image.rgba.begin() + static_cast<std::ptrdiff_t>((size_.y - 1 - y) * row));
+  }
+  return image;
+}
+
+std::vector<float> MeshRenderer::read_depth() const {
+  const std::size_t count = static_cast<std::size_t>(size_.x) * size_.y;
+  std::vector<float> bottom_up(count);
+  if (count == 0) return bottom_up;
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(depth_stencil_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
+                    bottom_up.data());
+  std::vector<float> top_down(count);
+  for (int y = 0; y < size_.y; ++y) {
+    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * size_.x, size_.x,
+                top_down.begin() + static_cast<std::ptrdiff_t>(size_.y - 1 - y) * size_.x);
+  }
+  return top_down;
+}
+
+void register_mesh_renderer(ecs::Scheduler& scheduler) {
+  scheduler.add(ecs::Phase::Render, "mesh_renderer",
+                [](ecs::Registry& registry) { registry.resource<MeshRenderer>().render(registry); });
+}
+
+}  // namespace atrium

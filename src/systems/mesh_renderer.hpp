@@ -1,0 +1,67 @@
+// The MeshRenderer system (Render phase): owns the frame's render targets, the
+// lighting technique selected by RendererSettings::mode, and the tone-mapping
+// pass. Each frame it gathers the draw list, fills the frame uniforms, runs the
+// technique into the HDR target and tone-maps into the 8-bit output target.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "assets/asset_manager.hpp"
+#include "assets/gpu_assets.hpp"
+#include "assets/image.hpp"
+#include "ecs/scheduler.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/shader_program.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium {
+
+struct FrameStats {
+  std::size_t draw_calls = 0;
+  std::size_t triangles = 0;
+  std::uint32_t lights = 0;
+};
+
+class MeshRenderer {
+ public:
+  MeshRenderer();
+
+  // Renders one frame of the registry's world. Throws std::invalid_argument for
+  // a mode that is not in the technique table.
+  void render(ecs::Registry& registry);
+
+  // The last frame's display image (sRGB, top row first).
+  [[nodiscard]] assets::Image read_output() const;
+  // The last frame's window-space depth in [0, 1], top row first.
+  [[nodiscard]] std::vector<float> read_depth() const;
+
+  [[nodiscard]] const std::string& mode() const { return mode_; }
+  [[nodiscard]] const FrameStats& stats() const { return stats_; }
+  [[nodiscard]] glm::ivec2 size() const { return size_; }
+
+ private:
+  void resize(glm::ivec2 size);
+  void select_technique(const std::string& mode);
+
+  glm::ivec2 size_{0};
+  std::string mode_;
+  std::unique_ptr<lighting::LightingTechnique> technique_;
+  gfx::Texture hdr_color_;
+  gfx::Texture depth_stencil_;
+  gfx::Framebuffer hdr_framebuffer_;
+  gfx::Texture output_color_;
+  gfx::Framebuffer output_framebuffer_;
+  gfx::Buffer frame_uniforms_;
+  gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
+  gfx::ShaderProgram tonemap_;
+  FrameStats stats_;
+};
+
+// Adds the MeshRenderer to the Render phase. The world must hold the resources
+// AssetManager, GpuAssets, Viewport, ViewState, SceneSettings, RendererSettings
+// and a MeshRenderer (constructed with a current GL context).
+void register_mesh_renderer(ecs::Scheduler& scheduler);
+
+}  // namespace atrium

@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include "ecs/registry.hpp"
+
+namespace atrium::ecs {
+namespace {
+
+struct Position {
+  float x = 0, y = 0;
+};
+struct Velocity {
+  float dx = 0, dy = 0;
+};
+struct Name {
+  std::string text;
+};
+
+TEST(Registry, CreatedEntitiesAreAliveAndDistinct) {
+  Registry registry;
+  const Entity a = registry.create();
+  const Entity b = registry.create();
+  EXPECT_NE(a, b);
+  EXPECT_TRUE(registry.alive(a));
+  EXPECT_TRUE(registry.alive(b));
+  EXPECT_EQ(registry.alive_count(), 2u);
+  EXPECT_FALSE(registry.alive(kNullEntity));
+}
+
+TEST(Registry, StaleHandleIsDetectedAfterSlotReuse) {
+  Registry registry;
+  const Entity old_handle = registry.create();
+  registry.add<Position>(old_handle, 1.0f, 2.0f);
+  registry.destroy(old_handle);
+  const Entity reused = registry.create();
+  ASSERT_EQ(reused.index, old_handle.index) << "the slot is recycled";
+  EXPECT_NE(reused.generation, old_handle.generation);
+  EXPECT_FALSE(registry.alive(old_handle));
+  EXPECT_TRUE(registry.alive(reused));
+  // The stale handle never reaches the new entity's components.
+  registry.add<Position>(reused, 5.0f, 6.0f);
+  EXPECT_FALSE(registry.has<Position>(old_handle));
+  EXPECT_EQ(registry.try_get<Position>(old_handle), nullptr);
+  EXPECT_THROW(registry.add<Velocity>(old_handle), std::invalid_argument);
+  EXPECT_THROW((void)registry.get<Position>(old_handle), std::invalid_argument);
+  EXPECT_FALSE(registry.remove<Position>(old_handle));
+  EXPECT_TRUE(registry.has<Position>(reused));
+  registry.destroy(old_handle);  // destroying a stale handle does nothing
+  EXPECT_TRUE(registry.alive(reused));
+}
+
+TEST(Registry, AddGetTryGetHasRemove) {
+  Registry registry;
+  const Entity e = registry.create();
+  EXPECT_FALSE(registry.has<Position>(e));
+  registry.add<Position>(e, 3.0f, 4.0f);
+  ASSERT_TRUE(registry.has<Position>(e));
+  EXPECT_FLOAT_EQ(registry.get<Position>(e).y, 4.0f);
+  registry.get<Position>(e).x = 7.0f;
+  EXPECT_FLOAT_EQ(registry.try_get<Position>(e)->x, 7.0f);
+  EXPECT_EQ(registry.try_get<Velocity>(e), nullptr);
+  EXPECT_THROW((void)registry.get<Velocity>(e), std::out_of_range);
+  registry.add<Position>(e, 9.0f, 9.0f);  // adding again replaces
+  EXPECT_EQ(registry.count<Position>(), 1u);
+  EXPECT_FLOAT_EQ(registry.get<Position>(e).x, 9.0f);
+  EXPECT_TRUE(registry.remove<Position>(e));
+  EXPECT_FALSE(registry.has<Position>(e));
+  EXPECT_FALSE(registry.remove<Position>(e));
+}
+
+TEST(Registry, RemovalKeepsOtherEntitiesComponents) {
+  Registry registry;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 10; ++i) {
+    entities.push_back(registry.create());
+    registry.add<Name>(entities.back(), "e" + std::to_string(i));
+  }
+  registry.remove<Name>(entities[0]);  // swap-and-pop moves the last one into slot 0
+  registry.destroy(entities[4]);
+  for (int i = 0; i < 10; ++i) {
+    if (i == 0 || i == 4) continue;
+    EXPECT_EQ(registry.get<Name>(entities[static_cast<std::size_t>(i)]).text, "e" + std::to_string(i));
+  }
+  EXPECT_EQ(registry.count<Name>(), 8u);
+}
+
+TEST(Registry, DestroyRemovesEveryComponent) {
+  Registry registry;
+  const Entity e = registry.create();
+  registry.add<Position>(e);
+  registry.add<Velocity>(e);
+  registry.destroy(e);
+  EXPECT_EQ(registry.count<Position>(), 0u);
+  EXPECT_EQ(registry.count<Velocity>(), 0u);
+  EXPECT_EQ(registry.alive_count(), 0u);
+}
+
+TEST(Registry, ResourcesAreSingletonsPerType) {
+  Registry registry;
+  EXPECT_EQ(registry.try_resource<Position>(), nullptr);
+  EXPECT_THROW((void)registry.resource<Position>(), std::out_of_range);
+  registry.set_resource<Position>(Position{1, 2});
+  registry.resource<Position>().x = 5;
+  EXPECT_FLOAT_EQ(registry.resource<Position>().x, 5);
+  registry.set_resource<Position>(Position{8, 9});  // replaces
+  EXPECT_FLOAT_EQ(registry.resource<Position>().x, 8);
+}
+
+}  // namespace
+}  // namespace atrium::ecs

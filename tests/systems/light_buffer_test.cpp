@@ -1,0 +1,78 @@
+#include "components/light.hpp"
+#include "components/transform.hpp"
+#include "ecs/scheduler.hpp"
+#include "support/gl_test.hpp"
+#include "systems/light_buffer.hpp"
+#include "systems/lighting/light_falloff.hpp"
+
+namespace atrium {
+namespace {
+
+using LightBufferSystem = testing::GlTest;
+
+ecs::Entity add_light(ecs::Registry& registry, glm::vec3 position, glm::vec3 color, float intensity) {
+  const ecs::Entity e = registry.create();
+  registry.add<Transform>(e, Transform{position});
+  registry.add<LightColor>(e, color, intensity);
+  return e;
+}
+
+std::vector<GpuPointLight> read_back(const LightBuffer& buffer) {
+  std::vector<GpuPointLight> lights(buffer.count);
+  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(GpuPointLight)), lights.data());
+  return lights;
+}
+
+TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  const ecs::Entity a = add_light(registry, {1, 2, 3}, {1.0f, 0.5f, 0.25f}, 2.0f);
+  const ecs::Entity b = add_light(registry, {-4, 5, 6}, {0.2f, 0.4f, 0.8f}, 1.0f);
+  registry.add<LightRadius>(b, 2.5f);
+  const ecs::Entity not_a_light = registry.create();
+  registry.add<Transform>(not_a_light);
+  scheduler.run_frame(registry, 0.0);
+
+  const auto lights = read_back(registry.resource<LightBuffer>());
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(glm::vec3(lights[0].position_radius), glm::vec3(1, 2, 3));
+  EXPECT_FLOAT_EQ(lights[0].position_radius.w, lighting::light_radius_from_intensity({1.0f, 0.5f, 0.25f}, 2.0f));
+  EXPECT_EQ(glm::vec3(lights[0].color), glm::vec3(2.0f, 1.0f, 0.5f));
+  EXPECT_FLOAT_EQ(lights[1].position_radius.w, 2.5f);
+
+  // Changes to the entities show up in the next frame.
+  registry.get<Transform>(a).position = {7, 8, 9};
+  registry.destroy(b);
+  scheduler.run_frame(registry, 0.0);
+  const auto after = read_back(registry.resource<LightBuffer>());
+  ASSERT_EQ(after.size(), 1u);
+  EXPECT_EQ(glm::vec3(after[0].position_radius), glm::vec3(7, 8, 9));
+}
+
+TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  add_light(registry, {0, 0, 0}, {1, 1, 1}, 1.0f);
+  scheduler.run_frame(registry, 0.0);
+  for (int i = 1; i < 100'000; ++i) add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f);
+  scheduler.run_frame(registry, 0.0);
+  const LightBuffer& buffer = registry.resource<LightBuffer>();
+  EXPECT_EQ(buffer.count, 100'000u);
+  EXPECT_GE(buffer.capacity, 100'000u);
+  const auto lights = read_back(buffer);
+  EXPECT_EQ(lights.back().position_radius.x, 99'999.0f);
+}
+
+TEST_F(LightBufferSystem, ZeroLightsIsValid) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(registry.resource<LightBuffer>().count, 0u);
+  EXPECT_NE(registry.resource<LightBuffer>().buffer.id(), 0u);
+}
+
+}  // namespace
+}  // namespace atrium
