@@ -133,10 +133,11 @@ int run_render(const CliOptions& options) {
   World world({options.scene, options.lights, options.mode, options.view, options.size});
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
-  std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %s)\n", options.out.c_str(), options.size.x,
-              options.size.y, world.mode().c_str(), world.view(),
-              world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(),
-              world.renderer().stats().lights, context->info().renderer.c_str());
+  const FrameStats& stats = world.renderer().stats();
+  std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles in %zu draws, %s)\n",
+              options.out.c_str(), options.size.x, options.size.y, world.mode().c_str(), world.view(),
+              world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(), stats.lights,
+              stats.triangles, stats.draw_calls, context->info().renderer.c_str());
   return kExitOk;
 }
 
@@ -153,26 +154,23 @@ int run_command(const CliOptions& options) {
 
 int run_cli(int argc, char** argv) {
   std::vector<std::string_view> args(argv + 1, argv + argc);
+  auto fail = [](const std::exception& e, int code) {
+    std::fprintf(stderr, "atrium: %s\n", e.what());
+    return code;
+  };
   try {
     return run_command(parse_cli(args));
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "atrium: %s\n", e.what());
-    return kExitUsage;
+    return fail(e, kExitUsage);
   } catch (const InputError& e) {
-    std::fprintf(stderr, "atrium: %s\n", e.what());
-    return kExitUsage;
+    return fail(e, kExitUsage);
   } catch (const assets::ImageError& e) {
-    std::fprintf(stderr, "atrium: %s\n", e.what());
-    return kExitUsage;
-  } catch (const gfx::ContextError& e) {
-    std::fprintf(stderr, "atrium: %s\n", e.what());
-    return kExitRuntimeFailure;
+    return fail(e, kExitUsage);
   } catch (const gfx::ShaderError& e) {
     std::fprintf(stderr, "atrium: shader error:\n%s\n", e.what());
     return kExitRuntimeFailure;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "atrium: %s\n", e.what());
-    return kExitRuntimeFailure;
+    return fail(e, kExitRuntimeFailure);
   }
 }
 

@@ -4,24 +4,26 @@
 
 namespace atrium::assets {
 
-MeshAssetHandle AssetManager::add_mesh_asset(MeshAsset asset, const std::string& key) {
+namespace {
+// Appends `value` unless `key` is already cached; an empty key never caches.
+template <typename Handle, typename T>
+Handle add_cached(std::vector<T>& values, std::unordered_map<std::string, Handle>& keys, T value, const std::string& key) {
   if (!key.empty()) {
-    if (auto found = find_mesh_asset(key); found.valid()) return found;
+    if (auto it = keys.find(key); it != keys.end()) return it->second;
   }
-  const MeshAssetHandle handle{static_cast<std::uint32_t>(mesh_assets_.size())};
-  mesh_assets_.push_back(std::move(asset));
-  if (!key.empty()) mesh_keys_[key] = handle;
+  const Handle handle{static_cast<std::uint32_t>(values.size())};
+  values.push_back(std::move(value));
+  if (!key.empty()) keys[key] = handle;
   return handle;
+}
+}  // namespace
+
+MeshAssetHandle AssetManager::add_mesh_asset(MeshAsset asset, const std::string& key) {
+  return add_cached(mesh_assets_, mesh_keys_, std::move(asset), key);
 }
 
 TextureHandle AssetManager::add_texture(TextureData texture, const std::string& key) {
-  if (!key.empty()) {
-    if (auto found = find_texture(key); found.valid()) return found;
-  }
-  const TextureHandle handle{static_cast<std::uint32_t>(textures_.size())};
-  textures_.push_back(std::move(texture));
-  if (!key.empty()) texture_keys_[key] = handle;
-  return handle;
+  return add_cached(textures_, texture_keys_, std::move(texture), key);
 }
 
 MeshAssetHandle AssetManager::find_mesh_asset(const std::string& key) const {

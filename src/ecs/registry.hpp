@@ -5,17 +5,21 @@
 // Rules for structural change while a view is iterating (see View::each):
 //  * Changing component values is always allowed.
 //  * Removing components from, or destroying, the entity being visited is allowed:
-//    views walk their smallest pool from the back, so the swap-and-pop of a removal
-//    only moves elements that were already visited.
+//    the walk notices the change and visits the entity that swap-and-pop moved
+//    into the freed slot.
 //  * Adding components and creating entities is allowed; entities that enter the
-//    view during the walk may or may not be visited. A reference to a component of
-//    type T is invalidated by adding a T to any entity (the pool may grow).
+//    view during the walk may or may not be visited.
 //  * Removing components from, or destroying, *other* entities of the view is not
-//    allowed during the walk (an element could be skipped); collect them and apply
-//    the change after `each` returns.
+//    allowed during the walk (an entity could be skipped or visited twice);
+//    collect them and apply the change after `each` returns.
+//  * A reference or pointer to a component of type T is invalidated by adding a T
+//    to any entity (the pool may grow) and by removing any T (the last T moves).
 #pragma once
 
+#include <algorithm>
+#include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -46,6 +50,15 @@ std::size_t component_id() {
 
 template <typename... Ts>
 class View;
+
+inline constexpr std::size_t kMaxViewComponents = 8;
+
+// Whether the pools of a multi-component view hold the same entities in the same
+// order, remembered for the pools' versions it was computed at.
+struct ViewAlignment {
+  std::vector<std::uint64_t> versions;
+  bool aligned = false;
+};
 
 class Registry {
  public:
@@ -114,7 +127,9 @@ class Registry {
 
   template <typename... Ts>
   [[nodiscard]] View<Ts...> view() {
-    return View<Ts...>(pool<Ts>()...);
+    ViewAlignment* alignment = nullptr;
+    if constexpr (sizeof...(Ts) > 1) alignment = &alignments_[{detail::component_id<Ts>()...}];
+    return View<Ts...>(alignment, pool<Ts>()...);
   }
 
   template <typename T>
@@ -180,14 +195,22 @@ class Registry {
   std::vector<std::uint32_t> free_;
   std::vector<std::unique_ptr<SparseSetBase>> pools_;
   std::unordered_map<std::type_index, std::shared_ptr<void>> resources_;
+  std::map<std::vector<std::size_t>, ViewAlignment> alignments_;
 };
 
 // Entities that have every component in Ts. The walk is driven by the smallest of
 // the pools, so a view over a rare and a common component costs the rare one.
+// When all pools hold the same entities in the same order (components that are
+// added together), the walk reads them in lockstep like plain arrays. Each step
+// checks the pools' versions, so a structural change made by the callback is
+// noticed at once and the walk continues on fresh storage.
 template <typename... Ts>
 class View {
+  static_assert(sizeof...(Ts) >= 1 && sizeof...(Ts) <= kMaxViewComponents, "a view takes 1 to 8 component types");
+  using Versions = std::array<std::uint64_t, sizeof...(Ts)>;
+
  public:
-  explicit View(SparseSet<Ts>&... pools) : pools_(&pools...) {
+  explicit View(ViewAlignment* alignment, SparseSet<Ts>&... pools) : pools_(&pools...), alignment_(alignment) {
     driver_ = std::get<0>(pools_);
     ((driver_ = pools.size() < driver_->size() ? &pools : driver_), ...);
   }
@@ -195,23 +218,108 @@ class View {
   // Calls fn(entity, components...) or fn(components...) for every match.
   template <typename Fn>
   void each(Fn&& fn) {
-    for (std::size_t i = driver_->size(); i-- > 0;) {
-      if (i >= driver_->size()) continue;  // the callback removed more than the current element
-      const Entity e = driver_->entities()[i];
-      if (!(std::get<SparseSet<Ts>*>(pools_)->contains(e) && ...)) continue;
-      if constexpr (std::is_invocable_v<Fn, Entity, Ts&...>) {
-        fn(e, std::get<SparseSet<Ts>*>(pools_)->get(e)...);
-      } else {
-        fn(std::get<SparseSet<Ts>*>(pools_)->get(e)...);
-      }
-    }
+    std::size_t end = driver_->size();
+    std::size_t i = 0;
+    while (i < end) i = aligned() ? walk_aligned(fn, i, end) : walk_sparse(fn, i, end);
   }
 
   // Number of entities in the driving pool: an upper bound on the matches.
   [[nodiscard]] std::size_t size_hint() const { return driver_->size(); }
 
  private:
+  [[nodiscard]] Versions versions() const { return {std::get<SparseSet<Ts>*>(pools_)->version()...}; }
+
+  bool aligned() {
+    if constexpr (sizeof...(Ts) == 1) {
+      return true;
+    } else {
+      const std::size_t size = driver_->size();
+      if (((std::get<SparseSet<Ts>*>(pools_)->size() != size) || ...)) return false;
+      const Versions now = versions();
+      if (!std::equal(now.begin(), now.end(), alignment_->versions.begin(), alignment_->versions.end())) {
+        const auto& reference = driver_->entities();
+        alignment_->aligned = ((std::get<SparseSet<Ts>*>(pools_)->entities() == reference) && ...);
+        alignment_->versions.assign(now.begin(), now.end());
+      }
+      return alignment_->aligned;
+    }
+  }
+
+  template <typename Fn, typename... Cs>
+  static void call(Fn& fn, Entity e, Cs&... components) {
+    if constexpr (std::is_invocable_v<Fn, Entity, Ts&...>) {
+      fn(e, components...);
+    } else {
+      fn(components...);
+    }
+  }
+
+  template <std::size_t... I>
+  [[nodiscard]] bool changed_since(const Versions& before, std::index_sequence<I...>) const {
+    return ((std::get<I>(pools_)->version() != before[I]) || ...);
+  }
+
+  // Both walks visit [i, end) and return where the next walk starts: `end`, or
+  // the first index to visit after the callback changed the pools. `end` is the
+  // count of entities the walk started with that are still unvisited or behind i;
+  // entities added during the walk lie past it and are not visited.
+  template <typename Fn>
+  std::size_t walk_aligned(Fn& fn, std::size_t i, std::size_t& end) {
+    const Versions before = versions();
+    const Entity* entities = driver_->entities().data();
+    const auto data = std::make_tuple(std::get<SparseSet<Ts>*>(pools_)->components().data()...);
+    const Entity last_original = entities[end - 1];
+    for (; i < end; ++i) {
+      call(fn, entities[i], std::get<Ts*>(data)[i]...);
+      if (changed_since(before, std::index_sequence_for<Ts...>{})) [[unlikely]] {
+        return next_after_change(i, end, last_original);
+      }
+    }
+    return i;
+  }
+
+  template <typename Fn>
+  std::size_t walk_sparse(Fn& fn, std::size_t i, std::size_t& end) {
+    const Versions before = versions();
+    const Entity last_original = driver_->entities()[end - 1];
+    for (; i < end; ++i) {
+      const Entity e = driver_->entities()[i];
+      const std::array<std::uint32_t, sizeof...(Ts)> slots{std::get<SparseSet<Ts>*>(pools_)->find_slot(e, i)...};
+      if (std::find(slots.begin(), slots.end(), SparseSetBase::kAbsent) != slots.end()) continue;
+      invoke(fn, e, slots, std::index_sequence_for<Ts...>{});
+      if (changed_since(before, std::index_sequence_for<Ts...>{})) [[unlikely]] {
+        return next_after_change(i, end, last_original);
+      }
+    }
+    return i;
+  }
+
+  // After the callback at index i changed the pools: when the last entity the
+  // walk started with was moved into slot i (swap-and-pop of the visited one),
+  // visit slot i again and shorten the walk by one; otherwise go on from i + 1.
+  std::size_t next_after_change(std::size_t i, std::size_t& end, Entity last_original) const {
+    const auto& entities = driver_->entities();
+    if (i + 1 < end && i < entities.size() && entities[i] == last_original) {
+      --end;
+      return i;
+    }
+    end = std::min(end, entities.size());
+    return i + 1;
+  }
+
+  template <typename Fn, std::size_t... I>
+  void invoke(Fn& fn, Entity e, const std::array<std::uint32_t, sizeof...(Ts)>& slots, std::index_sequence<I...>) {
+    call(fn, e, std::get<I>(pools_)->at_slot(slots[I])...);
+  }
+
+  // If the visited entity left the driving pool, swap-and-pop moved an unvisited
+  // entity into its slot: visit that slot again.
+  [[nodiscard]] std::size_t next_after_change(std::size_t i, Entity visited) const {
+    return (i < driver_->size() && driver_->entities()[i] == visited) ? i + 1 : i;
+  }
+
   std::tuple<SparseSet<Ts>*...> pools_;
+  ViewAlignment* alignment_ = nullptr;
   SparseSetBase* driver_ = nullptr;
 };
 

@@ -23,7 +23,18 @@ class SparseSetBase {
            dense_[sparse_[e.index]] == e;
   }
   [[nodiscard]] std::size_t size() const { return dense_.size(); }
+
+  // e's slot in the packed arrays, or kAbsent. `hint` is checked first: when
+  // pools hold the same entities in the same order (components added together),
+  // a view finds every slot without touching the sparse arrays.
+  [[nodiscard]] std::uint32_t find_slot(Entity e, std::size_t hint) const {
+    if (hint < dense_.size() && dense_[hint] == e) return static_cast<std::uint32_t>(hint);
+    return contains(e) ? sparse_[e.index] : kAbsent;
+  }
+  static constexpr std::uint32_t kAbsent = 0xffffffffu;
   [[nodiscard]] const std::vector<Entity>& entities() const { return dense_; }
+  // Changes whenever an entity joins or leaves the set; never repeats across sets.
+  [[nodiscard]] std::uint64_t version() const { return version_; }
 
   // Removes e's component if it has one; returns whether it did.
   bool remove(Entity e) {
@@ -38,12 +49,11 @@ class SparseSetBase {
     dense_.pop_back();
     pop_component();
     sparse_[e.index] = kAbsent;
+    bump_version();
     return true;
   }
 
  protected:
-  static constexpr std::uint32_t kAbsent = 0xffffffffu;
-
   [[nodiscard]] std::uint32_t slot_of(Entity e) const { return sparse_[e.index]; }
 
   std::uint32_t push_entity(Entity e) {
@@ -51,6 +61,7 @@ class SparseSetBase {
     const auto slot = static_cast<std::uint32_t>(dense_.size());
     sparse_[e.index] = slot;
     dense_.push_back(e);
+    bump_version();
     return slot;
   }
 
@@ -58,8 +69,14 @@ class SparseSetBase {
   virtual void pop_component() = 0;
 
  private:
+  void bump_version() {
+    static std::uint64_t counter = 0;
+    version_ = ++counter;
+  }
+
   std::vector<std::uint32_t> sparse_;
   std::vector<Entity> dense_;
+  std::uint64_t version_ = 0;
 };
 
 template <typename T>
@@ -89,6 +106,7 @@ class SparseSet final : public SparseSetBase {
   [[nodiscard]] T* try_get(Entity e) { return contains(e) ? &components_[slot_of(e)] : nullptr; }
 
   [[nodiscard]] std::vector<T>& components() { return components_; }
+  [[nodiscard]] T& at_slot(std::uint32_t slot) { return components_[slot]; }
 
  private:
   void move_component(std::uint32_t from, std::uint32_t to) override {

@@ -57,35 +57,21 @@ void destroy_gl_object(GlKind kind, GLuint name) {
 }
 }  // namespace detail
 
-Buffer create_buffer() {
+namespace {
+// Calls a glCreate* function for one name: create(args..., 1, &name).
+template <GlKind K, typename Create, typename... Args>
+GlObject<K> create_one(Create create, Args... args) {
   GLuint name = 0;
-  glCreateBuffers(1, &name);
-  return Buffer::adopt(name);
+  create(args..., 1, &name);
+  return GlObject<K>::adopt(name);
 }
-Texture create_texture(GLenum target) {
-  GLuint name = 0;
-  glCreateTextures(target, 1, &name);
-  return Texture::adopt(name);
-}
-Framebuffer create_framebuffer() {
-  GLuint name = 0;
-  glCreateFramebuffers(1, &name);
-  return Framebuffer::adopt(name);
-}
-VertexArray create_vertex_array() {
-  GLuint name = 0;
-  glCreateVertexArrays(1, &name);
-  return VertexArray::adopt(name);
-}
-Query create_query(GLenum target) {
-  GLuint name = 0;
-  glCreateQueries(target, 1, &name);
-  return Query::adopt(name);
-}
-Sampler create_sampler() {
-  GLuint name = 0;
-  glCreateSamplers(1, &name);
-  return Sampler::adopt(name);
-}
+}  // namespace
+
+Buffer create_buffer() { return create_one<GlKind::Buffer>(glCreateBuffers); }
+Texture create_texture(GLenum target) { return create_one<GlKind::Texture>(glCreateTextures, target); }
+Framebuffer create_framebuffer() { return create_one<GlKind::Framebuffer>(glCreateFramebuffers); }
+VertexArray create_vertex_array() { return create_one<GlKind::VertexArray>(glCreateVertexArrays); }
+Query create_query(GLenum target) { return create_one<GlKind::Query>(glCreateQueries, target); }
+Sampler create_sampler() { return create_one<GlKind::Sampler>(glCreateSamplers); }
 
 }  // namespace atrium::gfx

@@ -8,6 +8,7 @@
 #include "gfx/context.hpp"
 #include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
+#include "gfx/sanitizer_support.hpp"
 
 namespace atrium::gfx {
 namespace {
@@ -96,6 +97,7 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const ContextOptions& o
   if (!eglMakeCurrent(display.handle, EGL_NO_SURFACE, EGL_NO_SURFACE, context->context_)) {
     throw ContextError("EGL: cannot make the context current without a surface (EGL_KHR_surfaceless_context)");
   }
+  keep_gl_driver_loaded();
   if (options.debug) enable_debug_output();
   context->info_ = current_context_info(display.platform);
   return context;

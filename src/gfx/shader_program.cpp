@@ -2,9 +2,9 @@
 
 #include <fstream>
 #include <optional>
-#include <regex>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -17,6 +17,69 @@ ShaderSearchPath default_shader_path() {
 }
 
 namespace {
+
+// The quoted name of an `#include "name"` line, or nullopt for any other line.
+std::optional<std::string> include_target(std::string_view line) {
+  auto skip_space = [&] { while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1); };
+  skip_space();
+  if (!line.starts_with('#')) return std::nullopt;
+  line.remove_prefix(1);
+  skip_space();
+  if (!line.starts_with("include")) return std::nullopt;
+  line.remove_prefix(7);
+  skip_space();
+  if (!line.starts_with('"')) return std::nullopt;
+  const auto close = line.find('"', 1);
+  if (close == std::string_view::npos) return std::nullopt;
+  const std::string_view rest = line.substr(close + 1);
+  if (rest.find_first_not_of(" \t\r") != std::string_view::npos) return std::nullopt;
+  return std::string(line.substr(1, close - 1));
+}
+
+// Parses the leading digits of `text`, advancing it; nullopt when there are none.
+std::optional<unsigned long> take_number(std::string_view& text) {
+  std::size_t digits = 0;
+  while (digits < text.size() && text[digits] >= '0' && text[digits] <= '9') ++digits;
+  if (digits == 0 || digits > 9) return std::nullopt;
+  const unsigned long value = std::stoul(std::string(text.substr(0, digits)));
+  text.remove_prefix(digits);
+  return value;
+}
+
+struct LogLocation {
+  unsigned long source = 0;
+  unsigned long line = 0;
+  std::string_view message;
+};
+
+// Mesa: "0:12(5): error: msg"; NVIDIA: "0(12) : error C0000: msg".
+std::optional<LogLocation> parse_log_location(std::string_view text) {
+  LogLocation location;
+  const auto source = take_number(text);
+  if (!source) return std::nullopt;
+  location.source = *source;
+  if (text.starts_with(':')) {
+    text.remove_prefix(1);
+    const auto line = take_number(text);
+    if (!line || !text.starts_with('(')) return std::nullopt;
+    location.line = *line;
+    text.remove_prefix(text.find(')') == std::string_view::npos ? text.size() : text.find(')') + 1);
+  } else if (text.starts_with('(')) {
+    text.remove_prefix(1);
+    const auto line = take_number(text);
+    if (!line || !text.starts_with(')')) return std::nullopt;
+    location.line = *line;
+    text.remove_prefix(1);
+  } else {
+    return std::nullopt;
+  }
+  while (text.starts_with(' ')) text.remove_prefix(1);
+  if (!text.starts_with(':')) return std::nullopt;
+  text.remove_prefix(1);
+  while (text.starts_with(' ')) text.remove_prefix(1);
+  location.message = text;
+  return location;
+}
 
 std::string read_text(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -44,12 +107,10 @@ struct Preprocessor {
     std::istringstream lines(text);
     std::string line;
     int line_number = 0;
-    static const std::regex kInclude(R"(^\s*#\s*include\s+"([^"]+)\"\s*$)");
     while (std::getline(lines, line)) {
       ++line_number;
-      std::smatch match;
-      if (std::regex_match(line, match, kInclude)) {
-        const std::string target = resolve(name, match[1].str(), line_number);
+      if (const auto included_name = include_target(line)) {
+        const std::string target = resolve(name, *included_name, line_number);
         if (!included.contains(target)) {
           append(target, nullptr);
           result.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(source_index) + "\n";
@@ -120,19 +181,14 @@ PreprocessedShader preprocess_shader(const ShaderSearchPath& path, const std::st
 }
 
 std::string map_shader_log(const std::string& log, const std::vector<std::string>& files) {
-  // Mesa: "0:12(5): error: msg"; NVIDIA: "0(12) : error C0000: msg".
-  static const std::regex kMesa(R"(^(\d+):(\d+)\(\d+\):\s*(.*)$)");
-  static const std::regex kNvidia(R"(^(\d+)\((\d+)\)\s*:\s*(.*)$)");
   std::istringstream lines(log);
   std::string line;
   std::string out;
   while (std::getline(lines, line)) {
     if (line.empty()) continue;
-    std::smatch match;
-    if (std::regex_match(line, match, kMesa) || std::regex_match(line, match, kNvidia)) {
-      const auto index = std::stoul(match[1].str());
-      const std::string file = index < files.size() ? files[index] : "source " + match[1].str();
-      out += file + ":" + match[2].str() + ": " + match[3].str() + "\n";
+    if (const auto at = parse_log_location(line)) {
+      const std::string file = at->source < files.size() ? files[at->source] : "source " + std::to_string(at->source);
+      out += file + ":" + std::to_string(at->line) + ": " + std::string(at->message) + "\n";
     } else {
       out += line + "\n";
     }

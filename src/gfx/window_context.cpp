@@ -6,6 +6,7 @@
 
 #include "gfx/context.hpp"
 #include "gfx/debug_output.hpp"
+#include "gfx/sanitizer_support.hpp"
 
 namespace atrium::gfx {
 
@@ -34,6 +35,7 @@ std::unique_ptr<WindowContext> WindowContext::create(const std::string& title, i
   auto context = std::unique_ptr<WindowContext>(new WindowContext());
   context->window_ = window;
   context->set_vsync(true);
+  keep_gl_driver_loaded();
   if (options.debug) enable_debug_output();
   context->info_ = current_context_info("glfw");
   return context;

@@ -16,8 +16,6 @@ std::vector<GpuPointLight> gather_point_lights(ecs::Registry& registry) {
     const float r = radius ? radius->radius : lighting::light_radius_from_intensity(light.color, light.intensity);
     lights.push_back({glm::vec4(transform.position, r), glm::vec4(light.color * light.intensity, 0.0f)});
   });
-  // Views walk from the back; restore creation order so buffers are stable and readable.
-  std::reverse(lights.begin(), lights.end());
   return lights;
 }
 

@@ -116,5 +116,41 @@ TEST(View, AddingComponentsDuringIterationDoesNotRevisit) {
   EXPECT_EQ(registry.count<A>(), 20u);
 }
 
+TEST(View, DestroyAndRespawnDuringIterationTerminatesAndVisitsEveryOriginal) {
+  Registry registry;
+  for (int i = 0; i < 20; ++i) {
+    const Entity e = registry.create();
+    registry.add<A>(e, i);
+    registry.add<B>(e, i);
+  }
+  std::multiset<int> seen;
+  registry.view<A, B>().each([&](Entity e, A& a, B&) {
+    seen.insert(a.value);
+    const int value = a.value;
+    registry.destroy(e);
+    const Entity replacement = registry.create();
+    registry.add<A>(replacement, value + 1000);
+    registry.add<B>(replacement, value + 1000);
+  });
+  for (int i = 0; i < 20; ++i) EXPECT_EQ(seen.count(i), 1u) << i;
+  EXPECT_EQ(registry.count<A>(), 20u);
+}
+
+TEST(View, RemovalIsSafeWhenPoolsAreNotInTheSameOrder) {
+  Registry registry;
+  std::vector<Entity> entities;
+  for (int i = 0; i < 40; ++i) entities.push_back(registry.create());
+  for (int i = 0; i < 40; ++i) registry.add<A>(entities[static_cast<std::size_t>(i)], i);
+  for (int i = 39; i >= 0; --i) registry.add<B>(entities[static_cast<std::size_t>(i)], i);  // reversed order
+  std::multiset<int> seen;
+  registry.view<A, B>().each([&](Entity e, A& a, B& b) {
+    EXPECT_EQ(a.value, b.value);
+    seen.insert(a.value);
+    if (a.value % 3 == 0) registry.remove<B>(e);
+    if (a.value % 5 == 0) registry.destroy(e);
+  });
+  for (int i = 0; i < 40; ++i) EXPECT_EQ(seen.count(i), 1u) << i;
+}
+
 }  // namespace
 }  // namespace atrium::ecs

@@ -31,8 +31,6 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       (item.material->alpha_mode == assets::AlphaMode::Blend ? list.blended : list.opaque).push_back(item);
     }
   });
-  // Views walk entities from the back; draw in creation order for stable output.
-  std::reverse(list.opaque.begin(), list.opaque.end());
   std::stable_sort(list.blended.begin(), list.blended.end(),
                    [](const DrawItem& a, const DrawItem& b) { return a.view_depth > b.view_depth; });
   return list;

@@ -1,0 +1,19 @@
+#!/usr/bin/env bash
+# Installs what is missing, builds, and runs every test with ctest. GL tests run
+# headless through EGL; the window test runs under xvfb-run.
+#   ./test.sh             Release build in build/
+#   ./test.sh --sanitize  the same suite built with ASan and UBSan in build-sanitize/
+set -euo pipefail
+cd "$(dirname "$0")"
+build=build
+flags=(-DCMAKE_BUILD_TYPE=Release)
+case "${1:-}" in
+  --sanitize) build=build-sanitize; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DATRIUM_SANITIZE=ON -DATRIUM_BUILD_BENCH=OFF) ;;
+  "") ;;
+  *) echo "usage: ./test.sh [--sanitize]" >&2; exit 2 ;;
+esac
+./scripts/install-deps.sh
+cmake -S . -B "$build" "${flags[@]}" >/dev/null
+cmake --build "$build" -j"$(nproc)"
+cd "$build"
+ctest --output-on-failure -j"$(nproc)"
