@@ -9,7 +9,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config
   libglm-dev libglfw3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
-  libepoxy-dev libegl-dev libgl-dev libimgui-dev
+  libepoxy-dev libegl-dev libgl-dev libimgui-dev libmeshoptimizer-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth
 )

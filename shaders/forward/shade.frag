@@ -9,12 +9,13 @@
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;
-in vec2 v_uv;
+in vec2 v_uv0;
+in vec2 v_uv1;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, gl_FrontFacing);
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, gl_FrontFacing);
   if (s.alpha < u_alpha_cutoff) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
   vec3 color = shade_unlit_terms(s, u_ambient.rgb);

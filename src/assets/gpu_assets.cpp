@@ -17,14 +17,6 @@ gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
   if (levels > 1) glGenerateTextureMipmap(texture.id());
-  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, levels > 1 ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_REPEAT);
-  if (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
-      epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic")) {
-    glTextureParameterf(texture.id(), GL_TEXTURE_MAX_ANISOTROPY, kMaxAnisotropy);
-  }
   bytes += static_cast<std::size_t>(image.width) * image.height * 4 * 4 / 3;  // with the mip chain
   return texture;
 }
@@ -36,6 +28,7 @@ void GpuAssets::upload(const AssetManager& assets) {
     const Image white{1, 1, {255, 255, 255, 255}};
     std::size_t ignored = 0;
     white_ = upload_image(white, ColorSpace::Linear, ignored);
+    make_sampler(SamplerDesc{});
   }
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
     const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
@@ -43,6 +36,12 @@ void GpuAssets::upload(const AssetManager& assets) {
   }
   for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
     const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    for (const Material& m : asset.materials) {
+      for (const TextureSlot* slot : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
+                                      &m.occlusion_texture, &m.emissive_texture}) {
+        make_sampler(slot->sampler);
+      }
+    }
     GpuMeshAsset gpu;
     std::vector<Vertex> vertices;
     std::vector<std::uint32_t> indices;
@@ -85,6 +84,26 @@ void GpuAssets::upload(const AssetManager& assets) {
     }
     mesh_assets_.push_back(std::move(gpu));
   }
+}
+
+GLuint GpuAssets::sampler(const SamplerDesc& desc) const {
+  auto it = samplers_.find(desc);
+  return it != samplers_.end() ? it->second.id() : samplers_.at(SamplerDesc{}).id();
+}
+
+void GpuAssets::make_sampler(const SamplerDesc& desc) {
+  if (samplers_.contains(desc)) return;
+  gfx::Sampler sampler = gfx::create_sampler();
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, desc.mag_filter);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, desc.min_filter);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, desc.wrap_s);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, desc.wrap_t);
+  const bool mipmapped = desc.min_filter != SamplerDesc::kNearest && desc.min_filter != SamplerDesc::kLinear;
+  if (mipmapped && (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+                    epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))) {
+    glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, kMaxAnisotropy);
+  }
+  samplers_.emplace(desc, std::move(sampler));
 }
 
 GLuint GpuAssets::texture(TextureHandle handle) const {

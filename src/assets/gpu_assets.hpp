@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <map>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
@@ -33,13 +34,18 @@ class GpuAssets {
   [[nodiscard]] const GpuMeshAsset& mesh_asset(MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
   // The texture's GL name, or the white default for an empty handle.
   [[nodiscard]] GLuint texture(TextureHandle handle) const;
+  // The sampler object for `desc` (made by upload for every material slot).
+  [[nodiscard]] GLuint sampler(const SamplerDesc& desc) const;
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
   [[nodiscard]] std::size_t buffer_bytes() const { return buffer_bytes_; }
 
  private:
+  void make_sampler(const SamplerDesc& desc);
+
   std::vector<GpuMeshAsset> mesh_assets_;
   std::vector<gfx::Texture> textures_;
   gfx::Texture white_;
+  std::map<SamplerDesc, gfx::Sampler> samplers_;
   std::size_t texture_bytes_ = 0;
   std::size_t buffer_bytes_ = 0;
 };

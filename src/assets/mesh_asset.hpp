@@ -24,6 +24,28 @@ static_assert(sizeof(Vertex) == 56, "the GPU vertex layout in gpu_assets.cpp ass
 
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
+// Texture filtering and wrapping, with glTF's numeric codes (which are GL's).
+struct SamplerDesc {
+  static constexpr std::uint16_t kNearest = 9728, kLinear = 9729, kLinearMipmapLinear = 9987;
+  static constexpr std::uint16_t kRepeat = 10497, kClampToEdge = 33071, kMirroredRepeat = 33648;
+  std::uint16_t mag_filter = kLinear;
+  std::uint16_t min_filter = kLinearMipmapLinear;
+  std::uint16_t wrap_s = kRepeat;
+  std::uint16_t wrap_t = kRepeat;
+  auto operator<=>(const SamplerDesc&) const = default;
+};
+
+// One texture a material samples: which image, how, with which UV set, and the
+// KHR_texture_transform matrix applied to the UVs (identity when absent).
+struct TextureSlot {
+  TextureHandle texture;
+  SamplerDesc sampler;
+  std::uint8_t uv_set = 0;
+  glm::mat3 uv_transform{1.0f};
+
+  [[nodiscard]] bool valid() const { return texture.valid(); }
+};
+
 // glTF 2.0 metallic-roughness material. Texture channels follow glTF:
 // metallic_roughness.g = roughness, .b = metallic; occlusion.r.
 struct Material {
@@ -38,11 +60,11 @@ struct Material {
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;
   bool double_sided = false;
-  TextureHandle base_color_texture;
-  TextureHandle metallic_roughness_texture;
-  TextureHandle normal_texture;
-  TextureHandle occlusion_texture;
-  TextureHandle emissive_texture;
+  TextureSlot base_color_texture;
+  TextureSlot metallic_roughness_texture;
+  TextureSlot normal_texture;
+  TextureSlot occlusion_texture;
+  TextureSlot emissive_texture;
 };
 
 struct Primitive {

@@ -245,6 +245,13 @@ void ShaderProgram::set(const char* name, const glm::vec4& v) { glProgramUniform
 void ShaderProgram::set(const char* name, const glm::mat3& m) {
   glProgramUniformMatrix3fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(m));
 }
+void ShaderProgram::set(const char* name, std::span<const glm::mat3> values) {
+  glProgramUniformMatrix3fv(id(), location(name), static_cast<GLsizei>(values.size()), GL_FALSE,
+                            glm::value_ptr(values.front()));
+}
+void ShaderProgram::set(const char* name, std::span<const int> values) {
+  glProgramUniform1iv(id(), location(name), static_cast<GLsizei>(values.size()), values.data());
+}
 void ShaderProgram::set(const char* name, const glm::mat4& m) {
   glProgramUniformMatrix4fv(id(), location(name), 1, GL_FALSE, glm::value_ptr(m));
 }

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -64,6 +65,8 @@ class ShaderProgram {
   void set(const char* name, const glm::vec4& value);
   void set(const char* name, const glm::mat3& value);
   void set(const char* name, const glm::mat4& value);
+  void set(const char* name, std::span<const glm::mat3> values);
+  void set(const char* name, std::span<const int> values);
 
  private:
   GLint location(const char* name);

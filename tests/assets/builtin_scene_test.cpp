@@ -40,14 +40,14 @@ TEST_F(BuiltinScene, HasAtLeastEightTexturedMaterialsWithEmissiveAndMaskedOnes) 
     EXPECT_TRUE(m.base_color_texture.valid()) << m.name;
     EXPECT_TRUE(m.normal_texture.valid()) << m.name;
     EXPECT_TRUE(m.metallic_roughness_texture.valid()) << m.name;
-    EXPECT_EQ(manager_->texture(m.base_color_texture).color_space, ColorSpace::Srgb) << m.name;
-    EXPECT_EQ(manager_->texture(m.normal_texture).color_space, ColorSpace::Linear) << m.name;
+    EXPECT_EQ(manager_->texture(m.base_color_texture.texture).color_space, ColorSpace::Srgb) << m.name;
+    EXPECT_EQ(manager_->texture(m.normal_texture.texture).color_space, ColorSpace::Linear) << m.name;
     if (m.emissive_texture.valid()) ++emissive;
     if (m.alpha_mode == AlphaMode::Mask) {
       ++masked;
       EXPECT_TRUE(m.double_sided) << "banners are seen from both sides";
       // The banner's albedo alpha really cuts holes.
-      const Image& albedo = manager_->texture(m.base_color_texture).image;
+      const Image& albedo = manager_->texture(m.base_color_texture.texture).image;
       int holes = 0;
       for (std::size_t i = 3; i < albedo.rgba.size(); i += 4) holes += albedo.rgba[i] < 128;
       EXPECT_GT(holes, static_cast<int>(albedo.rgba.size() / 4 / 50)) << m.name;

@@ -59,9 +59,21 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
       program.set("u_alpha_cutoff", m.alpha_mode == assets::AlphaMode::Mask ? m.alpha_cutoff : -1.0f);
       program.set("u_has_normal_texture", m.normal_texture.valid() ? 1 : 0);
       program.set("u_double_sided", m.double_sided ? 1 : 0);
-      const GLuint textures[] = {gpu.texture(m.base_color_texture), gpu.texture(m.metallic_roughness_texture),
-                                 gpu.texture(m.normal_texture), gpu.texture(m.occlusion_texture), gpu.texture(m.emissive_texture)};
-      glBindTextures(0, 5, textures);
+      const assets::TextureSlot* slots[kMaterialTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture,
+                                                                 &m.normal_texture, &m.occlusion_texture, &m.emissive_texture};
+      GLuint textures[kMaterialTextureSlots], samplers[kMaterialTextureSlots];
+      glm::mat3 uv_transforms[kMaterialTextureSlots];
+      int uv_sets[kMaterialTextureSlots];
+      for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
+        textures[s] = gpu.texture(slots[s]->texture);
+        samplers[s] = gpu.sampler(slots[s]->sampler);
+        uv_transforms[s] = slots[s]->uv_transform;
+        uv_sets[s] = slots[s]->uv_set;
+      }
+      glBindTextures(0, kMaterialTextureSlots, textures);
+      glBindSamplers(0, kMaterialTextureSlots, samplers);
+      program.set("u_uv_transform", std::span<const glm::mat3>(uv_transforms));
+      program.set("u_uv_set", std::span<const int>(uv_sets));
       if (m.double_sided) glDisable(GL_CULL_FACE);
       else glEnable(GL_CULL_FACE);
     }
@@ -71,6 +83,7 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
   }
   glEnable(GL_CULL_FACE);
   glBindVertexArray(0);
+  glBindSamplers(0, kMaterialTextureSlots, nullptr);
 }
 
 }  // namespace atrium::lighting

@@ -15,6 +15,9 @@
 
 namespace atrium::lighting {
 
+// Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
+inline constexpr unsigned kMaterialTextureSlots = 5;
+
 struct DrawItem {
   GLuint vertex_array = 0;
   assets::GpuPrimitive range;
