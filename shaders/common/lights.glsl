@@ -1,10 +1,16 @@
-// The scene's point lights, mirrored from light entities each frame by the
-// LightBuffer system. C++ twin: GpuPointLight in src/systems/light_buffer.hpp.
-struct PointLight {
-  vec4 position_radius;  // xyz world position, w radius (m)
-  vec4 color;            // rgb = colour * intensity, w unused
+// The scene's lights, mirrored from light entities each frame by the
+// LightBuffer system. C++ twin: GpuLight in src/systems/light_buffer.hpp.
+const uint kLightPoint = 0u;
+const uint kLightSpot = 1u;
+const uint kLightDirectional = 2u;
+
+struct Light {
+  vec4 position_radius;  // xyz world position, w radius (m); directional: 0
+  vec4 color_kind;       // rgb = colour * intensity, w = kind
+  vec4 direction;        // xyz: where a spot or directional light points
+  vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x
 };
 
 layout(std430, binding = 0) readonly buffer LightBlock {
-  PointLight u_lights[];
+  Light u_lights[];
 };

@@ -1,16 +1,34 @@
-// Light evaluation shared by every technique: what one point light adds to a
-// surface seen from the camera, and the terms that do not depend on lights.
+// Light evaluation shared by every technique: what one light (point, spot or
+// directional) adds to a surface seen from the camera, and the terms that do
+// not depend on lights.
 #include "attenuation.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
 
-vec3 shade_point_light(Surface s, vec3 v, PointLight light) {
+// Radiance that reaches `s` from `light` (colour times falloff) and the
+// direction towards it, for every light kind.
+vec3 incoming_light(Surface s, Light light, out vec3 l) {
+  uint kind = uint(light.color_kind.w);
+  if (kind == kLightDirectional) {
+    l = -light.direction.xyz;
+    return light.color_kind.rgb;
+  }
   vec3 to_light = light.position_radius.xyz - s.position;
   float distance = length(to_light);
+  l = to_light / max(distance, 1e-6);
   float attenuation = light_attenuation(distance, light.position_radius.w);
-  if (attenuation <= 0.0) return vec3(0.0);
-  vec3 l = to_light / max(distance, 1e-6);
-  return brdf_cook_torrance(s.normal, v, l, s.albedo, s.metallic, s.roughness) * light.color.rgb * attenuation;
+  if (kind == kLightSpot) {
+    float cone = clamp(dot(light.direction.xyz, -l) * light.spot.x + light.spot.y, 0.0, 1.0);
+    attenuation *= cone * cone;
+  }
+  return light.color_kind.rgb * attenuation;
+}
+
+vec3 shade_light(Surface s, vec3 v, Light light) {
+  vec3 l;
+  vec3 radiance = incoming_light(s, light, l);
+  if (all(lessThanEqual(radiance, vec3(0.0)))) return vec3(0.0);
+  return brdf_cook_torrance(s.normal, v, l, s.albedo, s.metallic, s.roughness) * radiance;
 }
 
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {

@@ -19,6 +19,6 @@ void main() {
   if (s.alpha < u_alpha_cutoff) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
   vec3 color = shade_unlit_terms(s, u_ambient.rgb);
-  for (uint i = 0u; i < u_light_count; ++i) color += shade_point_light(s, v, u_lights[i]);
+  for (uint i = 0u; i < u_light_count; ++i) color += shade_light(s, v, u_lights[i]);
   out_color = vec4(color, s.alpha);
 }

@@ -1,6 +1,16 @@
 #include "app/world.hpp"
 
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtc/constants.hpp>
+#include <glm/gtx/quaternion.hpp>
+
 #include "assets/asset_manager.hpp"
+#include "assets/scene_file.hpp"
 #include "assets/builtin_scene.hpp"
 #include "assets/gpu_assets.hpp"
 #include "components/camera.hpp"
@@ -14,10 +24,30 @@
 namespace atrium {
 namespace {
 
-assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetManager& assets) {
+assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetManager& assets, assets::LoadReport& report) {
   if (options.scene == assets::kBuiltinSceneName) return assets::build_builtin_scene(assets, options.lights);
-  throw InputError(options.scene + ": unknown scene; this build knows the built-in scene '" +
-                   std::string(assets::kBuiltinSceneName) + "' (scene files and glTF models are not supported yet)");
+  std::string extension = std::filesystem::path(options.scene).extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+  try {
+    if (extension == ".gltf" || extension == ".glb") {
+      return assets::load_model_scene(options.scene, assets, options.lights.value_or(0), report);
+    }
+    if (extension == ".json") {
+      assets::SceneDescription scene = assets::load_scene_file(options.scene, assets, report);
+      if (!lighting::find_technique(scene.default_mode)) {
+        throw InputError(options.scene + ": /default_mode: unknown mode '" + scene.default_mode + "' (modes: " +
+                         lighting::technique_names() + ")");
+      }
+      if (options.lights) assets::resize_lights(scene, *options.lights);
+      return scene;
+    }
+  } catch (const assets::SceneFileError& e) {
+    throw InputError(e.what());
+  } catch (const assets::ImportError& e) {
+    throw InputError(e.what());
+  }
+  throw InputError(options.scene + ": unknown scene (expected the built-in scene '" + std::string(assets::kBuiltinSceneName) +
+                   "', a scene file .json, or a glTF model .gltf/.glb)");
 }
 
 void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
@@ -28,9 +58,16 @@ void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
   }
   for (const auto& light : scene.lights) {
     const ecs::Entity e = registry.create();
-    registry.add<Transform>(e, Transform{light.position});
+    Transform transform{light.position};
+    // Lights point along their local -Z, like glTF's.
+    const glm::vec3 forward(0.0f, 0.0f, -1.0f);
+    if (glm::dot(forward, light.direction) < -0.9999f) transform.rotation = glm::angleAxis(glm::pi<float>(), glm::vec3(0, 1, 0));
+    else transform.rotation = glm::rotation(forward, glm::normalize(light.direction));
+    registry.add<Transform>(e, transform);
     registry.add<LightColor>(e, light.color, light.intensity);
     if (light.radius) registry.add<LightRadius>(e, *light.radius);
+    if (light.kind == assets::LightKind::Spot) registry.add<SpotCone>(e, light.inner_cone, light.outer_cone);
+    if (light.kind == assets::LightKind::Directional) registry.add<DirectionalLight>(e);
   }
   const ecs::Entity camera = registry.create();
   registry.add<Transform>(camera);
@@ -42,13 +79,12 @@ void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
 
 void require_known_mode(const std::string& mode) {
   if (lighting::find_technique(mode)) return;
-  std::string known;
-  for (const auto& info : lighting::technique_table()) known += (known.empty() ? "" : ", ") + std::string(info.name);
-  throw InputError("unknown mode '" + mode + "' (modes: " + known + ")");
+  throw InputError("unknown mode '" + mode + "' (modes: " + lighting::technique_names() + ")");
 }
 
 World::World(const WorldOptions& options) {
-  scene_ = load_scene(options, registry_.set_resource<assets::AssetManager>());
+  scene_ = load_scene(options, registry_.set_resource<assets::AssetManager>(), report_);
+  for (const std::string& warning : report_.warnings) std::fprintf(stderr, "warning: %s\n", warning.c_str());
   start(options);
 }
 
@@ -59,7 +95,9 @@ World::World(assets::AssetManager assets, assets::SceneDescription scene, const 
 }
 
 void World::start(const WorldOptions& options) {
+  const auto upload_start = std::chrono::steady_clock::now();
   registry_.set_resource<assets::GpuAssets>().upload(registry_.resource<assets::AssetManager>());
+  upload_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - upload_start).count();
 
   registry_.set_resource<Viewport>(Viewport{options.size});
   registry_.set_resource<ViewState>();

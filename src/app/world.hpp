@@ -11,6 +11,7 @@
 
 #include "assets/asset_manager.hpp"
 #include "assets/scene.hpp"
+#include "assets/scene_file.hpp"
 #include "ecs/scheduler.hpp"
 #include "systems/mesh_renderer.hpp"
 
@@ -52,12 +53,17 @@ class World {
   [[nodiscard]] MeshRenderer& renderer() { return registry_.resource<MeshRenderer>(); }
   [[nodiscard]] const std::string& mode() const;
   [[nodiscard]] int view() const { return view_; }
+  // What loading reported: warnings, parse and decode times, images.
+  [[nodiscard]] const assets::LoadReport& load_report() const { return report_; }
+  [[nodiscard]] double upload_seconds() const { return upload_seconds_; }
 
  private:
   ecs::Registry registry_;
   ecs::Scheduler scheduler_;
   assets::SceneDescription scene_;
   int view_ = 1;
+  assets::LoadReport report_;
+  double upload_seconds_ = 0.0;
 
   void start(const WorldOptions& options);
 };

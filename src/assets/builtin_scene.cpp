@@ -229,6 +229,17 @@ std::vector<glm::vec3> lamp_light_positions() {
   return positions;
 }
 
+// Coloured lights filling the court beyond the lamps.
+LightGenerator fill_lights() {
+  LightGenerator fill;
+  fill.seed = 2024;
+  fill.box_min = glm::vec3(-16.0f, 0.4f, -13.0f);
+  fill.box_max = glm::vec3(16.0f, 12.5f, 13.0f);
+  fill.intensity_min = 0.5f;
+  fill.intensity_max = 1.2f;
+  return fill;
+}
+
 }  // namespace
 
 std::vector<SceneLight> builtin_scene_lights(std::uint32_t count) {
@@ -237,13 +248,8 @@ std::vector<SceneLight> builtin_scene_lights(std::uint32_t count) {
     if (lights.size() == count) return lights;
     lights.push_back({p, glm::vec3(1.0f, 0.72f, 0.42f), 1.6f, std::nullopt});
   }
-  LightGenerator fill;
+  LightGenerator fill = fill_lights();
   fill.count = count - static_cast<std::uint32_t>(lights.size());
-  fill.seed = 2024;
-  fill.box_min = glm::vec3(-16.0f, 0.4f, -13.0f);
-  fill.box_max = glm::vec3(16.0f, 12.5f, 13.0f);
-  fill.intensity_min = 0.5f;
-  fill.intensity_max = 1.2f;
   for (const SceneLight& light : generate_lights(fill)) lights.push_back(light);
   return lights;
 }
@@ -292,6 +298,7 @@ SceneDescription build_builtin_scene(AssetManager& assets, std::optional<std::ui
   place(kFountain, glm::vec3(0.0f));
 
   scene.lights = builtin_scene_lights(light_count.value_or(kBuiltinDefaultLightCount));
+  scene.fill_generator = fill_lights();
   scene.views = {
       {"court", glm::vec3(-15.5f, 1.8f, 0.0f), 90.0f, -4.0f},
       {"gallery", glm::vec3(-15.0f, kStorey + 1.7f, -12.0f), 75.0f, -6.0f},

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -29,12 +30,38 @@ std::vector<SceneLight> generate_lights(const LightGenerator& generator) {
     SceneLight light;
     light.position = generator.box_min + (generator.box_max - generator.box_min) *
                                              glm::vec3(unit(random), unit(random), unit(random));
-    light.color = hue_to_rgb(unit(random));
+    const glm::vec3 hue = hue_to_rgb(unit(random));
+    light.color = generator.color.value_or(hue);
     light.intensity = glm::mix(generator.intensity_min, generator.intensity_max, unit(random));
-    light.radius = generator.radius;
+    const float radius_pick = unit(random);
+    if (generator.radius_range) light.radius = glm::mix(generator.radius_range->x, generator.radius_range->y, radius_pick);
     lights.push_back(light);
   }
   return lights;
+}
+
+void resize_lights(SceneDescription& scene, std::uint32_t count) {
+  if (count <= scene.lights.size()) {
+    scene.lights.resize(count);
+    return;
+  }
+  LightGenerator generator;
+  if (scene.fill_generator) {
+    generator = *scene.fill_generator;
+  } else {
+    // Around the scene's bounds (grown by a quarter, so that a single object is
+    // lit from outside too). A light is bright only well inside its radius
+    // (irradiance is 5/256 * (radius / distance)^2), so radii of three diagonals
+    // light everything in the box clearly.
+    const glm::vec3 margin = 0.25f * (scene.bounds_max - scene.bounds_min);
+    const float radius = std::max(3.0f * glm::length(scene.bounds_max - scene.bounds_min), 0.1f);
+    generator.box_min = scene.bounds_min - margin;
+    generator.box_max = scene.bounds_max + margin;
+    generator.intensity_min = generator.intensity_max = radius * radius * 5.0f / 256.0f;
+    generator.seed = 7;
+  }
+  generator.count = count - static_cast<std::uint32_t>(scene.lights.size());
+  for (const SceneLight& light : generate_lights(generator)) scene.lights.push_back(light);
 }
 
 }  // namespace atrium::assets

@@ -20,11 +20,17 @@ struct SceneInstance {
   Transform transform;
 };
 
+enum class LightKind : std::uint8_t { Point, Spot, Directional };
+
 struct SceneLight {
   glm::vec3 position{0.0f};
   glm::vec3 color{1.0f};
-  float intensity = 1.0f;
+  float intensity = 1.0f;       // W/sr for point and spot lights, W/m^2 for directional
   std::optional<float> radius;  // derived from colour and intensity when absent
+  LightKind kind = LightKind::Point;
+  glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot and directional: where the light points
+  float inner_cone = 0.0f;                 // spot: radians from the axis, full intensity inside
+  float outer_cone = 0.7853982f;           // spot: radians from the axis, dark outside
 };
 
 struct NamedView {
@@ -34,6 +40,20 @@ struct NamedView {
   float pitch_degrees = 0.0f;
 };
 
+// Seeded light generator: `count` point lights uniformly inside a box, colour
+// fixed or a random saturated hue, intensity uniform in [intensity_min,
+// intensity_max], radius uniform in [radius_min, radius_max] when given
+// (derived from colour and intensity otherwise).
+struct LightGenerator {
+  std::uint32_t count = 0;
+  std::uint32_t seed = 1;
+  glm::vec3 box_min{-1.0f};
+  glm::vec3 box_max{1.0f};
+  float intensity_min = 1.0f;
+  float intensity_max = 1.0f;
+  std::optional<glm::vec2> radius_range;
+  std::optional<glm::vec3> color;
+};
 struct SceneDescription {
   std::string name;
   std::vector<SceneInstance> instances;
@@ -45,19 +65,14 @@ struct SceneDescription {
   std::string default_mode = "forward";
   glm::vec3 bounds_min{0.0f};
   glm::vec3 bounds_max{0.0f};
+  // Fills the scene up to --lights N: the scene's own generator, or one over its bounds.
+  std::optional<LightGenerator> fill_generator;
 };
 
-// Seeded light generator: `count` lights uniformly inside a box, hue drawn from
-// a fully saturated palette, intensity uniform in [intensity_min, intensity_max].
-struct LightGenerator {
-  std::uint32_t count = 0;
-  std::uint32_t seed = 1;
-  glm::vec3 box_min{-1.0f};
-  glm::vec3 box_max{1.0f};
-  float intensity_min = 1.0f;
-  float intensity_max = 1.0f;
-  std::optional<float> radius;
-};
+// Sets the scene's light count to `count`: its listed lights first (cut when
+// there are more), then lights from its fill generator (the bounds when none).
+void resize_lights(SceneDescription& scene, std::uint32_t count);
+
 [[nodiscard]] std::vector<SceneLight> generate_lights(const LightGenerator& generator);
 
 }  // namespace atrium::assets

@@ -1,6 +1,7 @@
 // A point light is an entity with a Transform (its position), a LightColor and,
 // optionally, a LightRadius. Without a LightRadius the radius is derived from the
-// colour and intensity (see systems/lighting/light_falloff.hpp).
+// colour and intensity (see systems/lighting/light_falloff.hpp). A SpotCone or a
+// DirectionalLight component changes the kind.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -15,5 +16,16 @@ struct LightColor {
 struct LightRadius {
   float radius = 1.0f;  // metres; the light contributes nothing beyond it
 };
+
+// Makes a light a spot light: it shines along its Transform's -Z axis, at full
+// intensity within inner_cone radians of the axis and not at all beyond outer_cone.
+struct SpotCone {
+  float inner_cone = 0.0f;
+  float outer_cone = 0.7853982f;
+};
+
+// Makes a light directional: parallel rays along its Transform's -Z axis, no
+// position, no falloff, no radius.
+struct DirectionalLight {};
 
 }  // namespace atrium

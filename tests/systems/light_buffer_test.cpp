@@ -17,9 +17,9 @@ ecs::Entity add_light(ecs::Registry& registry, glm::vec3 position, glm::vec3 col
   return e;
 }
 
-std::vector<GpuPointLight> read_back(const LightBuffer& buffer) {
-  std::vector<GpuPointLight> lights(buffer.count);
-  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(GpuPointLight)), lights.data());
+std::vector<GpuLight> read_back(const LightBuffer& buffer) {
+  std::vector<GpuLight> lights(buffer.count);
+  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(GpuLight)), lights.data());
   return lights;
 }
 
@@ -38,7 +38,8 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   ASSERT_EQ(lights.size(), 2u);
   EXPECT_EQ(glm::vec3(lights[0].position_radius), glm::vec3(1, 2, 3));
   EXPECT_FLOAT_EQ(lights[0].position_radius.w, lighting::light_radius_from_intensity({1.0f, 0.5f, 0.25f}, 2.0f));
-  EXPECT_EQ(glm::vec3(lights[0].color), glm::vec3(2.0f, 1.0f, 0.5f));
+  EXPECT_EQ(glm::vec3(lights[0].color_kind), glm::vec3(2.0f, 1.0f, 0.5f));
+  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(GpuLightKind::Point));
   EXPECT_FLOAT_EQ(lights[1].position_radius.w, 2.5f);
 
   // Changes to the entities show up in the next frame.
@@ -63,6 +64,27 @@ TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
   EXPECT_GE(buffer.capacity, 100'000u);
   const auto lights = read_back(buffer);
   EXPECT_EQ(lights.back().position_radius.x, 99'999.0f);
+}
+
+TEST_F(LightBufferSystem, SpotAndDirectionalLightsCarryTheirKindDirectionAndCone) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  const ecs::Entity spot = add_light(registry, {0, 5, 0}, {1, 1, 1}, 4.0f);
+  registry.get<Transform>(spot).rotation = glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0));  // -Z turned to -Y
+  registry.add<SpotCone>(spot, 0.2f, 0.5f);
+  const ecs::Entity sun = add_light(registry, {0, 0, 0}, {1, 0.9f, 0.8f}, 3.0f);
+  registry.add<DirectionalLight>(sun);
+  scheduler.run_frame(registry, 0.0);
+  const auto lights = read_back(registry.resource<LightBuffer>());
+  ASSERT_EQ(lights.size(), 2u);
+  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(GpuLightKind::Spot));
+  EXPECT_NEAR(lights[0].direction.y, -1.0f, 1e-6f);
+  const float scale = 1.0f / (std::cos(0.2f) - std::cos(0.5f));
+  EXPECT_NEAR(lights[0].spot.x, scale, 1e-3f);
+  EXPECT_NEAR(lights[0].spot.y, -std::cos(0.5f) * scale, 1e-3f);
+  EXPECT_EQ(lights[1].color_kind.w, static_cast<float>(GpuLightKind::Directional));
+  EXPECT_EQ(lights[1].position_radius.w, 0.0f);
 }
 
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {

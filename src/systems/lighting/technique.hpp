@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <span>
+#include <string>
 #include <string_view>
 
 #include <glm/glm.hpp>
@@ -54,5 +55,7 @@ struct TechniqueInfo {
 [[nodiscard]] std::span<const TechniqueInfo> technique_table();
 // nullptr when no technique has that name.
 [[nodiscard]] const TechniqueInfo* find_technique(std::string_view name);
+// "forward, deferred, ..." for messages.
+[[nodiscard]] std::string technique_names();
 
 }  // namespace atrium::lighting

@@ -25,4 +25,10 @@ const TechniqueInfo* find_technique(std::string_view name) {
   return nullptr;
 }
 
+std::string technique_names() {
+  std::string names;
+  for (const TechniqueInfo& info : kTechniques) names += (names.empty() ? "" : ", ") + std::string(info.name);
+  return names;
+}
+
 }  // namespace atrium::lighting

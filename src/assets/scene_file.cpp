@@ -1,0 +1,294 @@
+#include "assets/scene_file.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+
+namespace atrium::assets {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// Reads typed values out of the scene JSON; every error carries the file and
+// the JSON pointer of the value, e.g. "scenes/x.json: /lights/3/radius: ...".
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& pointer, const std::string& problem) const {
+    throw SceneFileError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + problem);
+  }
+
+  static std::string describe(const json& value) {
+    std::string text = value.dump();
+    return text.size() > 40 ? text.substr(0, 37) + "..." : text;
+  }
+
+  const json& member(const json& object, const std::string& pointer, const char* key) const {
+    if (!object.contains(key)) fail(pointer + "/" + key, "is missing");
+    return object.at(key);
+  }
+
+  double number(const json& value, const std::string& pointer, double min, double max, const char* expected) const {
+    if (!value.is_number()) fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
+    const double v = value.get<double>();
+    if (!std::isfinite(v) || v < min || v > max) fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
+    return v;
+  }
+
+  glm::vec3 vec3(const json& value, const std::string& pointer, double min = -1e7, double max = 1e7) const {
+    if (!value.is_array() || value.size() != 3) fail(pointer, "expected an array of 3 numbers, got " + describe(value));
+    glm::vec3 out;
+    for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(number(value[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i), min, max, "a number"));
+    return out;
+  }
+
+  // A colour: [r, g, b] with non-negative channels, or one number for grey.
+  glm::vec3 color(const json& value, const std::string& pointer) const {
+    if (value.is_number()) return glm::vec3(static_cast<float>(number(value, pointer, 0.0, 1e6, "a non-negative number")));
+    return vec3(value, pointer, 0.0, 1e6);
+  }
+
+  glm::vec2 range(const json& value, const std::string& pointer, double min, double max, const char* expected) const {
+    if (value.is_number()) return glm::vec2(static_cast<float>(number(value, pointer, min, max, expected)));
+    if (!value.is_array() || value.size() != 2) fail(pointer, std::string("expected ") + expected + " or [min, max], got " + describe(value));
+    const glm::vec2 r(static_cast<float>(number(value[0], pointer + "/0", min, max, expected)),
+                      static_cast<float>(number(value[1], pointer + "/1", min, max, expected)));
+    if (r.x > r.y) fail(pointer, "expected [min, max] with min <= max, got " + describe(value));
+    return r;
+  }
+
+  std::string string(const json& value, const std::string& pointer) const {
+    if (!value.is_string()) fail(pointer, "expected a string, got " + describe(value));
+    return value.get<std::string>();
+  }
+
+  const json& array(const json& value, const std::string& pointer) const {
+    if (!value.is_array()) fail(pointer, "expected an array, got " + describe(value));
+    return value;
+  }
+
+  void only_keys(const json& object, const std::string& pointer, std::initializer_list<const char*> keys) const {
+    if (!object.is_object()) fail(pointer, "expected an object, got " + describe(object));
+    for (const auto& [key, value] : object.items()) {
+      if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) == keys.end()) {
+        std::string known;
+        for (const char* k : keys) known += (known.empty() ? "" : ", ") + std::string(k);
+        fail(pointer + "/" + key, "unknown key (expected one of: " + known + ")");
+      }
+    }
+  }
+
+ private:
+  std::string file_;
+};
+
+SceneLight read_light(const Reader& r, const json& j, const std::string& p) {
+  r.only_keys(j, p, {"type", "position", "color", "intensity", "radius", "direction", "inner_cone_degrees", "outer_cone_degrees"});
+  SceneLight light;
+  const std::string type = j.contains("type") ? r.string(j["type"], p + "/type") : "point";
+  if (type == "spot") light.kind = LightKind::Spot;
+  else if (type == "directional") light.kind = LightKind::Directional;
+  else if (type != "point") r.fail(p + "/type", "expected \"point\", \"spot\" or \"directional\", got \"" + type + "\"");
+  if (light.kind != LightKind::Directional) light.position = r.vec3(r.member(j, p, "position"), p + "/position");
+  if (j.contains("color")) light.color = r.color(j["color"], p + "/color");
+  light.intensity = static_cast<float>(r.number(r.member(j, p, "intensity"), p + "/intensity", 0.0, 1e9, "a non-negative number"));
+  if (j.contains("radius")) light.radius = static_cast<float>(r.number(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number"));
+  if (light.kind != LightKind::Point) {
+    const glm::vec3 direction = r.vec3(r.member(j, p, "direction"), p + "/direction");
+    if (glm::length(direction) < 1e-6f) r.fail(p + "/direction", "expected a non-zero vector");
+    light.direction = glm::normalize(direction);
+  }
+  if (light.kind == LightKind::Spot) {
+    light.inner_cone = glm::radians(static_cast<float>(j.contains("inner_cone_degrees") ? r.number(j["inner_cone_degrees"], p + "/inner_cone_degrees", 0.0, 90.0, "degrees from 0 to 90") : 0.0));
+    light.outer_cone = glm::radians(static_cast<float>(j.contains("outer_cone_degrees") ? r.number(j["outer_cone_degrees"], p + "/outer_cone_degrees", 0.0, 90.0, "degrees from 0 to 90") : 45.0));
+    if (light.inner_cone > light.outer_cone) r.fail(p + "/inner_cone_degrees", "must not exceed outer_cone_degrees");
+  }
+  return light;
+}
+
+LightGenerator read_generator(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+  r.only_keys(j, p, {"count", "seed", "box", "color", "intensity", "radius"});
+  LightGenerator g;
+  g.count = static_cast<std::uint32_t>(r.number(r.member(j, p, "count"), p + "/count", 0, 1'000'000, "a whole number from 0 to 1000000"));
+  if (j.contains("seed")) g.seed = static_cast<std::uint32_t>(r.number(j["seed"], p + "/seed", 0, 4294967295.0, "a whole number"));
+  if (!j.contains("box") || (j["box"].is_string() && j["box"] == "bounds")) {
+    g.box_min = scene.bounds_min;
+    g.box_max = scene.bounds_max;
+  } else {
+    const json& box = j["box"];
+    r.only_keys(box, p + "/box", {"min", "max"});
+    g.box_min = r.vec3(r.member(box, p + "/box", "min"), p + "/box/min");
+    g.box_max = r.vec3(r.member(box, p + "/box", "max"), p + "/box/max");
+    if (glm::any(glm::greaterThan(g.box_min, g.box_max))) r.fail(p + "/box", "expected min <= max in every axis");
+  }
+  if (j.contains("color") && !(j["color"].is_string() && j["color"] == "random")) g.color = r.color(j["color"], p + "/color");
+  const glm::vec2 intensity = r.range(r.member(j, p, "intensity"), p + "/intensity", 0.0, 1e9, "a non-negative number");
+  g.intensity_min = intensity.x;
+  g.intensity_max = intensity.y;
+  if (j.contains("radius")) g.radius_range = r.range(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number");
+  return g;
+}
+
+NamedView read_view(const Reader& r, const json& j, const std::string& p) {
+  r.only_keys(j, p, {"name", "position", "yaw_degrees", "pitch_degrees"});
+  NamedView view;
+  view.name = r.string(r.member(j, p, "name"), p + "/name");
+  view.position = r.vec3(r.member(j, p, "position"), p + "/position");
+  view.yaw_degrees = static_cast<float>(j.contains("yaw_degrees") ? r.number(j["yaw_degrees"], p + "/yaw_degrees", -720, 720, "degrees") : 0.0);
+  view.pitch_degrees = static_cast<float>(j.contains("pitch_degrees") ? r.number(j["pitch_degrees"], p + "/pitch_degrees", -90, 90, "degrees from -90 to 90") : 0.0);
+  return view;
+}
+
+void grow_bounds(SceneDescription& scene, glm::vec3 lo, glm::vec3 hi, bool& any) {
+  scene.bounds_min = any ? glm::min(scene.bounds_min, lo) : lo;
+  scene.bounds_max = any ? glm::max(scene.bounds_max, hi) : hi;
+  any = true;
+}
+
+// Places an imported model's instances and lights under a model transform.
+void add_model(SceneDescription& scene, const GltfImport& model, const glm::mat4& placement, bool& any_bounds) {
+  for (SceneInstance instance : model.instances) {
+    instance.asset = model.asset;
+    const glm::mat4 world = placement * to_matrix(instance.transform);
+    instance.transform.position = glm::vec3(world[3]);
+    instance.transform.rotation = glm::quat_cast(glm::mat3(placement)) * instance.transform.rotation;
+    instance.transform.scale *= glm::vec3(glm::length(glm::vec3(placement[0])), glm::length(glm::vec3(placement[1])),
+                                          glm::length(glm::vec3(placement[2])));
+    scene.instances.push_back(instance);
+  }
+  for (SceneLight light : model.lights) {
+    light.position = glm::vec3(placement * glm::vec4(light.position, 1.0f));
+    light.direction = glm::normalize(glm::vec3(placement * glm::vec4(light.direction, 0.0f)));
+    scene.lights.push_back(light);
+  }
+  if (!model.instances.empty()) {
+    glm::vec3 lo(1e30f), hi(-1e30f);
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 local((corner & 1) ? model.bounds_max.x : model.bounds_min.x, (corner & 2) ? model.bounds_max.y : model.bounds_min.y,
+                            (corner & 4) ? model.bounds_max.z : model.bounds_min.z);
+      const glm::vec3 w(placement * glm::vec4(local, 1.0f));
+      lo = glm::min(lo, w);
+      hi = glm::max(hi, w);
+    }
+    grow_bounds(scene, lo, hi, any_bounds);
+  }
+}
+
+void merge_report(LoadReport& report, const GltfImport& model) {
+  report.warnings.insert(report.warnings.end(), model.warnings.begin(), model.warnings.end());
+  report.timings.parse_seconds += model.timings.parse_seconds;
+  report.timings.decode_seconds += model.timings.decode_seconds;
+  report.images += model.images;
+}
+
+// Five views framing a box: front, side, high corner, top, and inside its centre.
+std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
+  const glm::vec3 centre = 0.5f * (lo + hi);
+  const glm::vec3 size = glm::max(hi - lo, glm::vec3(1e-3f));
+  const float reach = std::max({size.x, size.y, size.z});
+  auto look_at = [&](const char* name, glm::vec3 from) {
+    const glm::vec3 d = glm::normalize(centre - from);
+    return NamedView{name, from, glm::degrees(std::atan2(d.x, -d.z)), glm::degrees(std::asin(glm::clamp(d.y, -1.0f, 1.0f)))};
+  };
+  return {look_at("front", centre + glm::vec3(0.0f, size.y * 0.15f, size.z * 0.5f + reach)),
+          look_at("side", centre + glm::vec3(size.x * 0.5f + reach, size.y * 0.15f, 0.0f)),
+          look_at("corner", centre + glm::vec3(reach, reach * 0.7f, reach)),
+          NamedView{"top", centre + glm::vec3(0.0f, size.y * 0.5f + reach, 0.001f), 0.0f, -89.0f},
+          NamedView{"inside", centre, 0.0f, 0.0f}};
+}
+
+}  // namespace
+
+SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report) {
+  const std::string file = path.string();
+  std::ifstream in(path);
+  if (!in) throw SceneFileError(file + ": cannot open the scene file");
+  json root;
+  try {
+    root = json::parse(in);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    throw SceneFileError(file + ": not valid JSON (" + what.substr(what.find(']') + 2) + ")");
+  }
+  const Reader r(file);
+  r.only_keys(root, "", {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode"});
+  SceneDescription scene;
+  scene.name = root.contains("name") ? r.string(root["name"], "/name") : path.stem().string();
+  if (root.contains("ambient")) scene.ambient = r.color(root["ambient"], "/ambient");
+  if (root.contains("background")) scene.background = r.color(root["background"], "/background");
+  if (root.contains("exposure")) scene.exposure = static_cast<float>(r.number(root["exposure"], "/exposure", 1e-6, 1e6, "a positive number"));
+  // The mode name is checked against the technique table by the World.
+  if (root.contains("default_mode")) scene.default_mode = r.string(root["default_mode"], "/default_mode");
+
+  bool any_bounds = false;
+  std::map<std::string, GltfImport> imported;  // canonical path -> import, so repeats share one asset
+  if (root.contains("models")) {
+    const json& models = r.array(root["models"], "/models");
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      const std::string p = "/models/" + std::to_string(i);
+      const json& m = models[i];
+      r.only_keys(m, p, {"path", "position", "rotation_degrees", "scale", "fetch"});
+      const fs::path model_path = (path.parent_path() / r.string(r.member(m, p, "path"), p + "/path")).lexically_normal();
+      std::error_code ec;
+      if (!fs::is_regular_file(model_path, ec)) {
+        const std::string fetch = m.contains("fetch") ? "; fetch it with `" + r.string(m["fetch"], p + "/fetch") + "`" : "";
+        r.fail(p + "/path", model_path.string() + " does not exist" + fetch);
+      }
+      const std::string key = fs::weakly_canonical(model_path).string();
+      if (!imported.contains(key)) {
+        imported.emplace(key, import_gltf(model_path, assets));
+        merge_report(report, imported.at(key));
+      }
+      glm::mat4 placement(1.0f);
+      if (m.contains("position")) placement = glm::translate(placement, r.vec3(m["position"], p + "/position"));
+      if (m.contains("rotation_degrees")) placement *= glm::mat4_cast(glm::quat(glm::radians(r.vec3(m["rotation_degrees"], p + "/rotation_degrees"))));
+      if (m.contains("scale")) {
+        const glm::vec3 scale = m["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(m["scale"], p + "/scale", 1e-6, 1e6, "a positive number")))
+                                                       : r.vec3(m["scale"], p + "/scale", 1e-6, 1e6);
+        placement = glm::scale(placement, scale);
+      }
+      add_model(scene, imported.at(key), placement, any_bounds);
+    }
+  }
+  if (root.contains("lights")) {
+    const json& lights = r.array(root["lights"], "/lights");
+    for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], "/lights/" + std::to_string(i)));
+  }
+  if (root.contains("light_generators")) {
+    const json& generators = r.array(root["light_generators"], "/light_generators");
+    for (std::size_t i = 0; i < generators.size(); ++i) {
+      const LightGenerator g = read_generator(r, generators[i], "/light_generators/" + std::to_string(i), scene);
+      for (const SceneLight& light : generate_lights(g)) scene.lights.push_back(light);
+      if (!scene.fill_generator) scene.fill_generator = g;
+    }
+  }
+  if (root.contains("views")) {
+    const json& views = r.array(root["views"], "/views");
+    if (views.empty() || views.size() > 9) r.fail("/views", "expected 1 to 9 views, got " + std::to_string(views.size()));
+    for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], "/views/" + std::to_string(i)));
+  } else {
+    scene.views = framing_views(scene.bounds_min, scene.bounds_max);
+  }
+  return scene;
+}
+
+SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, std::uint32_t extra_lights, LoadReport& report) {
+  const GltfImport model = import_gltf(path, assets);
+  merge_report(report, model);
+  SceneDescription scene;
+  scene.name = path.stem().string();
+  bool any_bounds = false;
+  add_model(scene, model, glm::mat4(1.0f), any_bounds);
+  scene.views = framing_views(scene.bounds_min, scene.bounds_max);
+  resize_lights(scene, static_cast<std::uint32_t>(scene.lights.size()) + extra_lights);
+  return scene;
+}
+
+}  // namespace atrium::assets
