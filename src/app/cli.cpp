@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "app/info.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "gfx/context.hpp"
@@ -50,17 +51,22 @@ std::string help_text() {
          "  atrium [SCENE] [options]                 open the demo window\n"
          "  atrium render [SCENE] --out FILE.png [options]\n"
          "                                           render one frame headless to a PNG\n"
+         "  atrium info [SCENE] [--json]             what the scene holds and what loading cost\n"
          "  atrium --help                            show this text\n"
          "\n"
-         "SCENE is the built-in scene 'atrium' (the default).\n"
+         "SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json,\n"
+         "see docs/scene-format.md) or a glTF model (.gltf or .glb).\n"
          "\n"
          "Options:\n"
          "  --mode M        lighting technique (default: the scene's, 'forward')\n"
-         "  --lights N      number of point lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160)\n"
+         "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
+         "                  scene its listed lights come first, then generated ones; for a glTF\n"
+         "                  model, N generated lights are added to the model's own\n"
          "  --view K        stored view 1..5 (default 1)\n"
          "  --size WxH      image or window size in pixels (default 1280x720)\n"
          "  --out FILE.png  render: where to write the image\n"
          "  --frames N      window: quit after N frames (for scripted runs)\n"
+         "  --json          info: print JSON\n"
          "\n"
          "Modes:\n" + modes +
          "\n"
@@ -73,6 +79,9 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   std::size_t i = 0;
   if (i < args.size() && args[i] == "render") {
     options.command = Command::Render;
+    ++i;
+  } else if (i < args.size() && args[i] == "info") {
+    options.command = Command::Info;
     ++i;
   }
   bool scene_given = false;
@@ -98,6 +107,9 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     } else if (arg == "--out") {
       options.out = std::string(value());
       out_given = true;
+    } else if (arg == "--json") {
+      if (options.command != Command::Info) throw UsageError("--json is for `atrium info`");
+      options.json = true;
     } else if (arg == "--frames") {
       options.frames = parse_number<std::uint64_t>("--frames", value(), 1, 1'000'000'000);
     } else if (arg.starts_with("-")) {
@@ -111,7 +123,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   }
   if (options.command == Command::Render && !out_given) throw UsageError("render needs --out FILE.png");
   if (options.command != Command::Render && out_given) throw UsageError("--out is for `atrium render`");
-  if (options.command == Command::Render && options.frames) throw UsageError("--frames is for the window");
+  if (options.command != Command::Window && options.frames) throw UsageError("--frames is for the window");
   if (options.mode) {
     try {
       require_known_mode(*options.mode);
@@ -143,10 +155,19 @@ int run_render(const CliOptions& options) {
 
 }  // namespace
 
+int run_info(const CliOptions& options) {
+  const auto context = gfx::HeadlessContext::create();
+  World world({options.scene, options.lights, options.mode, 1, {16, 16}});
+  const SceneInfo info = gather_info(world, options.scene);
+  std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);
+  return kExitOk;
+}
+
 int run_command(const CliOptions& options) {
   switch (options.command) {
     case Command::Help: std::fputs(help_text().c_str(), stdout); return kExitOk;
     case Command::Render: return run_render(options);
+    case Command::Info: return run_info(options);
     case Command::Window: return run_window(options);
   }
   return kExitUsage;

@@ -23,7 +23,7 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Command { Window, Render, Help };
+enum class Command { Window, Render, Info, Help };
 
 struct CliOptions {
   Command command = Command::Window;
@@ -34,6 +34,7 @@ struct CliOptions {
   glm::ivec2 size{1280, 720};
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
+  bool json = false;                    // info: print JSON
 };
 
 // Throws UsageError with a one-line message naming the bad argument.

@@ -8,6 +8,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "assets/builtin_scene.hpp"
+
 
 namespace atrium::assets {
 namespace {
@@ -89,14 +91,27 @@ class Reader {
   std::string file_;
 };
 
-SceneLight read_light(const Reader& r, const json& j, const std::string& p) {
-  r.only_keys(j, p, {"type", "position", "color", "intensity", "radius", "direction", "inner_cone_degrees", "outer_cone_degrees"});
+// A point given either absolutely ("position") or as fractions of the scene's
+// bounds ("position_in_bounds": [0.5, 0.1, 0.5] is the centre, near the floor),
+// which keeps views right whatever units a model was authored in.
+glm::vec3 read_point(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+  if (j.contains("position_in_bounds")) {
+    const glm::vec3 f = r.vec3(j["position_in_bounds"], p + "/position_in_bounds", -10.0, 10.0);
+    return scene.bounds_min + f * (scene.bounds_max - scene.bounds_min);
+  }
+  if (!j.contains("position")) r.fail(p + "/position", "is missing (or give position_in_bounds)");
+  return r.vec3(j["position"], p + "/position");
+}
+
+SceneLight read_light(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+  r.only_keys(j, p, {"type", "position", "position_in_bounds", "color", "intensity", "radius", "direction", "inner_cone_degrees",
+                     "outer_cone_degrees"});
   SceneLight light;
   const std::string type = j.contains("type") ? r.string(j["type"], p + "/type") : "point";
   if (type == "spot") light.kind = LightKind::Spot;
   else if (type == "directional") light.kind = LightKind::Directional;
   else if (type != "point") r.fail(p + "/type", "expected \"point\", \"spot\" or \"directional\", got \"" + type + "\"");
-  if (light.kind != LightKind::Directional) light.position = r.vec3(r.member(j, p, "position"), p + "/position");
+  if (light.kind != LightKind::Directional) light.position = read_point(r, j, p, scene);
   if (j.contains("color")) light.color = r.color(j["color"], p + "/color");
   light.intensity = static_cast<float>(r.number(r.member(j, p, "intensity"), p + "/intensity", 0.0, 1e9, "a non-negative number"));
   if (j.contains("radius")) light.radius = static_cast<float>(r.number(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number"));
@@ -123,9 +138,15 @@ LightGenerator read_generator(const Reader& r, const json& j, const std::string&
     g.box_max = scene.bounds_max;
   } else {
     const json& box = j["box"];
-    r.only_keys(box, p + "/box", {"min", "max"});
-    g.box_min = r.vec3(r.member(box, p + "/box", "min"), p + "/box/min");
-    g.box_max = r.vec3(r.member(box, p + "/box", "max"), p + "/box/max");
+    r.only_keys(box, p + "/box", {"min", "max", "min_in_bounds", "max_in_bounds"});
+    auto corner = [&](const char* absolute, const char* relative) {
+      if (box.contains(relative)) {
+        return scene.bounds_min + r.vec3(box[relative], p + "/box/" + relative, -10.0, 10.0) * (scene.bounds_max - scene.bounds_min);
+      }
+      return r.vec3(r.member(box, p + "/box", absolute), p + "/box/" + absolute);
+    };
+    g.box_min = corner("min", "min_in_bounds");
+    g.box_max = corner("max", "max_in_bounds");
     if (glm::any(glm::greaterThan(g.box_min, g.box_max))) r.fail(p + "/box", "expected min <= max in every axis");
   }
   if (j.contains("color") && !(j["color"].is_string() && j["color"] == "random")) g.color = r.color(j["color"], p + "/color");
@@ -136,11 +157,11 @@ LightGenerator read_generator(const Reader& r, const json& j, const std::string&
   return g;
 }
 
-NamedView read_view(const Reader& r, const json& j, const std::string& p) {
-  r.only_keys(j, p, {"name", "position", "yaw_degrees", "pitch_degrees"});
+NamedView read_view(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+  r.only_keys(j, p, {"name", "position", "position_in_bounds", "yaw_degrees", "pitch_degrees"});
   NamedView view;
   view.name = r.string(r.member(j, p, "name"), p + "/name");
-  view.position = r.vec3(r.member(j, p, "position"), p + "/position");
+  view.position = read_point(r, j, p, scene);
   view.yaw_degrees = static_cast<float>(j.contains("yaw_degrees") ? r.number(j["yaw_degrees"], p + "/yaw_degrees", -720, 720, "degrees") : 0.0);
   view.pitch_degrees = static_cast<float>(j.contains("pitch_degrees") ? r.number(j["pitch_degrees"], p + "/pitch_degrees", -90, 90, "degrees from -90 to 90") : 0.0);
   return view;
@@ -221,9 +242,6 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   r.only_keys(root, "", {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode"});
   SceneDescription scene;
   scene.name = root.contains("name") ? r.string(root["name"], "/name") : path.stem().string();
-  if (root.contains("ambient")) scene.ambient = r.color(root["ambient"], "/ambient");
-  if (root.contains("background")) scene.background = r.color(root["background"], "/background");
-  if (root.contains("exposure")) scene.exposure = static_cast<float>(r.number(root["exposure"], "/exposure", 1e-6, 1e6, "a positive number"));
   // The mode name is checked against the technique table by the World.
   if (root.contains("default_mode")) scene.default_mode = r.string(root["default_mode"], "/default_mode");
 
@@ -234,7 +252,20 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
     for (std::size_t i = 0; i < models.size(); ++i) {
       const std::string p = "/models/" + std::to_string(i);
       const json& m = models[i];
-      r.only_keys(m, p, {"path", "position", "rotation_degrees", "scale", "fetch"});
+      r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch"});
+      if (m.contains("builtin")) {
+        // The procedural courtyard as a model: its geometry and views; lights come from this file.
+        if (r.string(m["builtin"], p + "/builtin") != kBuiltinSceneName) {
+          r.fail(p + "/builtin", std::string("expected \"") + kBuiltinSceneName + "\"");
+        }
+        const SceneDescription builtin = build_builtin_scene(assets, 0u);
+        scene.instances.insert(scene.instances.end(), builtin.instances.begin(), builtin.instances.end());
+        grow_bounds(scene, builtin.bounds_min, builtin.bounds_max, any_bounds);
+        if (scene.views.empty()) scene.views = builtin.views;
+        scene.exposure = builtin.exposure;
+        scene.background = builtin.background;
+        continue;
+      }
       const fs::path model_path = (path.parent_path() / r.string(r.member(m, p, "path"), p + "/path")).lexically_normal();
       std::error_code ec;
       if (!fs::is_regular_file(model_path, ec)) {
@@ -257,9 +288,13 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
       add_model(scene, imported.at(key), placement, any_bounds);
     }
   }
+  // After the models: the file's settings win over a built-in model's.
+  if (root.contains("ambient")) scene.ambient = r.color(root["ambient"], "/ambient");
+  if (root.contains("background")) scene.background = r.color(root["background"], "/background");
+  if (root.contains("exposure")) scene.exposure = static_cast<float>(r.number(root["exposure"], "/exposure", 1e-6, 1e6, "a positive number"));
   if (root.contains("lights")) {
     const json& lights = r.array(root["lights"], "/lights");
-    for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], "/lights/" + std::to_string(i)));
+    for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], "/lights/" + std::to_string(i), scene));
   }
   if (root.contains("light_generators")) {
     const json& generators = r.array(root["light_generators"], "/light_generators");
@@ -272,8 +307,9 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   if (root.contains("views")) {
     const json& views = r.array(root["views"], "/views");
     if (views.empty() || views.size() > 9) r.fail("/views", "expected 1 to 9 views, got " + std::to_string(views.size()));
-    for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], "/views/" + std::to_string(i)));
-  } else {
+    scene.views.clear();
+    for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], "/views/" + std::to_string(i), scene));
+  } else if (scene.views.empty()) {
     scene.views = framing_views(scene.bounds_min, scene.bounds_max);
   }
   return scene;

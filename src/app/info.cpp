@@ -1,0 +1,99 @@
+#include "app/info.hpp"
+
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "components/light.hpp"
+#include "components/mesh_instance.hpp"
+
+namespace atrium {
+
+SceneInfo gather_info(World& world, const std::string& scene) {
+  SceneInfo info;
+  info.scene = scene;
+  ecs::Registry& registry = world.registry();
+  const auto& assets = registry.resource<assets::AssetManager>();
+  info.entities = registry.alive_count();
+  info.mesh_assets = assets.mesh_asset_count();
+  for (std::size_t a = 0; a < assets.mesh_asset_count(); ++a) {
+    const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    info.meshes += asset.meshes.size();
+    for (const auto& mesh : asset.meshes) info.primitives += mesh.primitives.size();
+    for (const auto& m : asset.materials) {
+      (m.alpha_mode == assets::AlphaMode::Blend ? info.materials_blend
+       : m.alpha_mode == assets::AlphaMode::Mask ? info.materials_mask
+                                                 : info.materials_opaque)++;
+    }
+  }
+  registry.view<MeshInstance>().each([&](const MeshInstance& instance) {
+    ++info.mesh_instances;
+    const auto& asset = assets.mesh_asset(instance.asset);
+    if (instance.mesh >= asset.meshes.size()) return;
+    for (const auto& p : asset.meshes[instance.mesh].primitives) {
+      info.triangles += p.indices.size() / 3;
+      info.vertices += p.vertices.size();
+    }
+  });
+  info.textures = assets.texture_count();
+  for (std::size_t t = 0; t < assets.texture_count(); ++t) {
+    info.texture_bytes += assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)}).image.rgba.size();
+  }
+  registry.view<LightColor>().each([&](ecs::Entity e, const LightColor&) {
+    if (registry.has<DirectionalLight>(e)) ++info.directional_lights;
+    else if (registry.has<SpotCone>(e)) ++info.spot_lights;
+    else ++info.point_lights;
+  });
+  info.bounds_min = world.scene().bounds_min;
+  info.bounds_max = world.scene().bounds_max;
+  info.parse_seconds = world.load_report().timings.parse_seconds;
+  info.decode_seconds = world.load_report().timings.decode_seconds;
+  info.upload_seconds = world.upload_seconds();
+  info.warnings = world.load_report().warnings.size();
+  return info;
+}
+
+std::string format_info_text(const SceneInfo& i) {
+  char buffer[2048];
+  std::snprintf(buffer, sizeof buffer,
+                "scene        %s\n"
+                "entities     %zu (%zu mesh instances, %zu lights, 1 camera)\n"
+                "mesh assets  %zu with %zu meshes and %zu primitives\n"
+                "drawn        %zu triangles, %zu vertices\n"
+                "materials    %zu: %zu opaque, %zu mask, %zu blend\n"
+                "textures     %zu (%.1f MiB decoded)\n"
+                "lights       %zu: %zu point, %zu spot, %zu directional\n"
+                "bounds       (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)\n"
+                "load time    parse %.3f s, decode %.3f s, upload %.3f s\n"
+                "warnings     %zu\n",
+                i.scene.c_str(), i.entities, i.mesh_instances, i.point_lights + i.spot_lights + i.directional_lights,
+                i.mesh_assets, i.meshes, i.primitives, i.triangles, i.vertices,
+                i.materials_opaque + i.materials_mask + i.materials_blend, i.materials_opaque, i.materials_mask,
+                i.materials_blend, i.textures, static_cast<double>(i.texture_bytes) / (1024.0 * 1024.0),
+                i.point_lights + i.spot_lights + i.directional_lights, i.point_lights, i.spot_lights, i.directional_lights,
+                i.bounds_min.x, i.bounds_min.y, i.bounds_min.z, i.bounds_max.x, i.bounds_max.y, i.bounds_max.z,
+                i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings);
+  return buffer;
+}
+
+std::string format_info_json(const SceneInfo& i) {
+  const nlohmann::json j = {
+      {"scene", i.scene},
+      {"entities", i.entities},
+      {"mesh_instances", i.mesh_instances},
+      {"mesh_assets", i.mesh_assets},
+      {"meshes", i.meshes},
+      {"primitives", i.primitives},
+      {"triangles", i.triangles},
+      {"vertices", i.vertices},
+      {"materials", {{"opaque", i.materials_opaque}, {"mask", i.materials_mask}, {"blend", i.materials_blend}}},
+      {"textures", i.textures},
+      {"texture_bytes", i.texture_bytes},
+      {"lights", {{"point", i.point_lights}, {"spot", i.spot_lights}, {"directional", i.directional_lights}}},
+      {"bounds", {{"min", {i.bounds_min.x, i.bounds_min.y, i.bounds_min.z}}, {"max", {i.bounds_max.x, i.bounds_max.y, i.bounds_max.z}}}},
+      {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
+      {"warnings", i.warnings}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace atrium
