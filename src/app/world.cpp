@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 #include <glm/gtx/quaternion.hpp>
 
+#include "app/progress_bar.hpp"
 #include "assets/asset_manager.hpp"
 #include "assets/scene_file.hpp"
 #include "assets/builtin_scene.hpp"
@@ -25,6 +26,10 @@ namespace atrium {
 namespace {
 
 assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetManager& assets, assets::LoadReport& report) {
+  ProgressBar bar(std::filesystem::path(options.scene).filename().string());
+  const assets::ProgressCallback progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
+    bar.update(stage, done, total);
+  };
   if (options.scene == assets::kBuiltinSceneName) {
     // Generating the courtyard and its textures is its "parse" time.
     const auto start = std::chrono::steady_clock::now();
@@ -36,10 +41,10 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
   std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
   try {
     if (extension == ".gltf" || extension == ".glb") {
-      return assets::load_model_scene(options.scene, assets, options.lights.value_or(0), report);
+      return assets::load_model_scene(options.scene, assets, options.lights.value_or(0), report, progress);
     }
     if (extension == ".json") {
-      assets::SceneDescription scene = assets::load_scene_file(options.scene, assets, report);
+      assets::SceneDescription scene = assets::load_scene_file(options.scene, assets, report, progress);
       if (!lighting::find_technique(scene.default_mode)) {
         throw InputError(options.scene + ": /default_mode: unknown mode '" + scene.default_mode + "' (modes: " +
                          lighting::technique_names() + ")");
@@ -109,7 +114,7 @@ void World::start(const WorldOptions& options) {
   registry_.set_resource<ViewState>();
   registry_.set_resource<SceneSettings>(SceneSettings{scene_.ambient, scene_.background, scene_.exposure});
   registry_.set_resource<RendererSettings>();
-  registry_.set_resource<MeshRenderer>();
+  registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
   spawn(registry_, scene_);
 
   set_mode(options.mode.value_or(scene_.default_mode));

@@ -9,6 +9,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <mutex>
 #include <set>
 #include <thread>
 
@@ -67,7 +68,8 @@ std::string first_line(const std::string& text) {
 
 class Importer {
  public:
-  Importer(const fs::path& path, AssetManager& assets) : path_(path), name_(path.string()), assets_(assets) {}
+  Importer(const fs::path& path, AssetManager& assets, const ImportOptions& options)
+      : path_(path), name_(path.string()), assets_(assets), progress_(options.progress), threads_(options.decode_threads) {}
 
   GltfImport run() {
     const auto start = Clock::now();
@@ -558,11 +560,18 @@ class Importer {
       }
     }
     std::atomic<std::size_t> next{0};
+    std::atomic<std::size_t> finished{0};
+    std::mutex progress_mutex;
     auto worker = [&] {
       for (std::size_t j = next++; j < jobs.size(); j = next++) {
+        if (progress_ && j > 0) {
+          std::lock_guard lock(progress_mutex);
+          progress_("decoding images", finished.load(), jobs.size());
+        }
         if (!jobs[j].error.empty()) continue;
         if (!encoded[j].first) {
-          jobs[j].error = "no data";
+          const std::string& uri = model_.images[static_cast<std::size_t>(jobs[j].image)].uri;
+          jobs[j].error = uri.empty() || uri.rfind("data:", 0) == 0 ? "no image data" : "the file is missing or unreadable";
           continue;
         }
         int w = 0, h = 0, channels = 0;
@@ -573,9 +582,10 @@ class Importer {
         }
         jobs[j].decoded = Image{w, h, std::vector<std::uint8_t>(pixels, pixels + static_cast<std::size_t>(w) * h * 4)};
         stbi_image_free(pixels);
+        ++finished;
       }
     };
-    const unsigned threads = std::clamp<unsigned>(std::thread::hardware_concurrency(), 1, 16);
+    const unsigned threads = threads_ ? threads_ : std::clamp<unsigned>(std::thread::hardware_concurrency(), 1, 16);
     std::vector<std::thread> pool;
     for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(worker);
     worker();
@@ -699,6 +709,8 @@ class Importer {
   fs::path path_;
   std::string name_;
   AssetManager& assets_;
+  const ProgressCallback& progress_;
+  unsigned threads_ = 0;
   tinygltf::Model model_;
   std::vector<ByteRange> views_;
   std::vector<std::vector<std::uint8_t>> decoded_;
@@ -716,6 +728,8 @@ const std::vector<std::string>& supported_gltf_extensions() {
   return kSupported;
 }
 
-GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets) { return Importer(path, assets).run(); }
+GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options) {
+  return Importer(path, assets, options).run();
+}
 
 }  // namespace atrium::assets

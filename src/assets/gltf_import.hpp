@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "assets/asset_manager.hpp"
+#include "assets/progress.hpp"
 #include "assets/scene.hpp"
 
 namespace atrium::assets {
@@ -46,7 +47,13 @@ struct GltfImport {
 };
 
 // Throws ImportError("<path>: <problem>") when the file cannot be used.
-[[nodiscard]] GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets);
+struct ImportOptions {
+  ProgressCallback progress;     // hears about image decoding as it happens
+  unsigned decode_threads = 0;   // 0: one per core (at most 16)
+};
+
+[[nodiscard]] GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets,
+                                     const ImportOptions& options = {});
 
 // Extensions whose presence in extensionsRequired is accepted.
 [[nodiscard]] const std::vector<std::string>& supported_gltf_extensions();

@@ -1,6 +1,7 @@
 // GPU copies of the AssetManager's contents: one vertex and one index buffer per
 // mesh asset (primitives are ranges in them), one mipmapped texture per image,
-// and neutral 1x1 defaults for the texture slots a material leaves empty.
+// neutral 1x1 defaults for the texture slots a material leaves empty, sampler
+// objects, and the shader programs (cached by files and defines).
 #pragma once
 
 #include <cstdint>
@@ -9,6 +10,7 @@
 
 #include "assets/asset_manager.hpp"
 #include "gfx/gl_object.hpp"
+#include "gfx/shader_library.hpp"
 
 namespace atrium::assets {
 
@@ -37,6 +39,8 @@ class GpuAssets {
   // The sampler object for `desc` (made by upload for every material slot).
   [[nodiscard]] GLuint sampler(const SamplerDesc& desc) const;
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
+  // Shader programs, cached by files and defines.
+  [[nodiscard]] gfx::ShaderLibrary& shaders() { return shaders_; }
   [[nodiscard]] std::size_t buffer_bytes() const { return buffer_bytes_; }
 
  private:
@@ -46,6 +50,7 @@ class GpuAssets {
   std::vector<gfx::Texture> textures_;
   gfx::Texture white_;
   std::map<SamplerDesc, gfx::Sampler> samplers_;
+  gfx::ShaderLibrary shaders_;
   std::size_t texture_bytes_ = 0;
   std::size_t buffer_bytes_ = 0;
 };

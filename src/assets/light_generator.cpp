@@ -49,12 +49,13 @@ void resize_lights(SceneDescription& scene, std::uint32_t count) {
   if (scene.fill_generator) {
     generator = *scene.fill_generator;
   } else {
-    // Around the scene's bounds (grown by a quarter, so that a single object is
-    // lit from outside too). A light is bright only well inside its radius
-    // (irradiance is 5/256 * (radius / distance)^2), so radii of three diagonals
-    // light everything in the box clearly.
-    const glm::vec3 margin = 0.25f * (scene.bounds_max - scene.bounds_min);
-    const float radius = std::max(3.0f * glm::length(scene.bounds_max - scene.bounds_min), 0.1f);
+    // Around the scene's bounds, grown by a quarter of the diagonal in every axis
+    // so that a single object, even a flat one, is lit from outside too. A light
+    // is bright only well inside its radius (irradiance is 5/256 * (radius /
+    // distance)^2), so radii of three diagonals light everything clearly.
+    const float diagonal = glm::length(scene.bounds_max - scene.bounds_min);
+    const glm::vec3 margin(0.25f * diagonal);
+    const float radius = std::max(3.0f * diagonal, 0.1f);
     generator.box_min = scene.bounds_min - margin;
     generator.box_max = scene.bounds_max + margin;
     generator.intensity_min = generator.intensity_max = radius * radius * 5.0f / 256.0f;

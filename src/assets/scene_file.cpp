@@ -227,7 +227,8 @@ std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
 
 }  // namespace
 
-SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report) {
+SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report,
+                                 const ProgressCallback& progress) {
   const std::string file = path.string();
   std::ifstream in(path);
   if (!in) throw SceneFileError(file + ": cannot open the scene file");
@@ -274,7 +275,7 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
       }
       const std::string key = fs::weakly_canonical(model_path).string();
       if (!imported.contains(key)) {
-        imported.emplace(key, import_gltf(model_path, assets));
+        imported.emplace(key, import_gltf(model_path, assets, {progress}));
         merge_report(report, imported.at(key));
       }
       glm::mat4 placement(1.0f);
@@ -315,8 +316,9 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   return scene;
 }
 
-SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, std::uint32_t extra_lights, LoadReport& report) {
-  const GltfImport model = import_gltf(path, assets);
+SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, std::uint32_t extra_lights, LoadReport& report,
+                                  const ProgressCallback& progress) {
+  const GltfImport model = import_gltf(path, assets, {progress});
   merge_report(report, model);
   SceneDescription scene;
   scene.name = path.stem().string();

@@ -28,11 +28,13 @@ struct LoadReport {
 };
 
 // Throws SceneFileError (bad JSON or values, missing models) or ImportError.
-[[nodiscard]] SceneDescription load_scene_file(const std::filesystem::path& path, AssetManager& assets, LoadReport& report);
+[[nodiscard]] SceneDescription load_scene_file(const std::filesystem::path& path, AssetManager& assets, LoadReport& report,
+                                               const ProgressCallback& progress = {});
 
 // A glTF model as a scene: its instances and KHR_lights_punctual lights, five
 // views framing its bounds, and `extra_lights` generated lights inside them.
 [[nodiscard]] SceneDescription load_model_scene(const std::filesystem::path& path, AssetManager& assets,
-                                                std::uint32_t extra_lights, LoadReport& report);
+                                                std::uint32_t extra_lights, LoadReport& report,
+                                                const ProgressCallback& progress = {});
 
 }  // namespace atrium::assets

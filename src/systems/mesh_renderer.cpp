@@ -29,10 +29,11 @@ void require_complete(GLuint framebuffer, const char* what) {
 
 }  // namespace
 
-MeshRenderer::MeshRenderer()
+MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       empty_vertex_array_(gfx::create_vertex_array()),
-      tonemap_(gfx::ShaderProgram::load({"post/fullscreen.vert", "post/tonemap.frag"})) {
+      gpu_(gpu),
+      tonemap_(gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})) {
   glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -55,7 +56,7 @@ void MeshRenderer::select_technique(const std::string& mode) {
   const lighting::TechniqueInfo* info = lighting::find_technique(mode);
   if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
   technique_.reset();  // release the old technique's targets before the new one allocates
-  technique_ = info->create();
+  technique_ = info->create(gpu_);
   technique_->resize(size_);
   mode_ = mode;
 }

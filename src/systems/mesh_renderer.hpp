@@ -26,7 +26,7 @@ struct FrameStats {
 
 class MeshRenderer {
  public:
-  MeshRenderer();
+  explicit MeshRenderer(assets::GpuAssets& gpu);
 
   // Renders one frame of the registry's world. Throws std::invalid_argument for
   // a mode that is not in the technique table.
@@ -55,7 +55,8 @@ class MeshRenderer {
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
-  gfx::ShaderProgram tonemap_;
+  assets::GpuAssets& gpu_;
+  gfx::ShaderProgram& tonemap_;
   FrameStats stats_;
 };
 

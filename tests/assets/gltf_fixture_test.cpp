@@ -517,5 +517,40 @@ TEST(GltfFixture, MeshoptCompressedBuffersAreDecoded) {
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(q.vertices[i].position, expected[i]) << i;
 }
 
+TEST(GltfFixture, SponzaStandInManyMaterialsShareFewImages) {
+  // Sponza's traits: 25 materials over a handful of images, alpha-masked
+  // foliage and chains, and both 16- and 32-bit index buffers.
+  Fixture f;
+  std::vector<int> textures;
+  for (int i = 0; i < 6; ++i) textures.push_back(f.texture(f.png_image(static_cast<std::uint8_t>(40 * i), 100, 200)));
+  for (int i = 0; i < 25; ++i) {
+    tinygltf::Material m;
+    m.name = "material_" + std::to_string(i);
+    m.pbrMetallicRoughness.baseColorTexture.index = textures[static_cast<std::size_t>(i % 6)];
+    if (i % 5 == 0) {
+      m.alphaMode = "MASK";
+      m.alphaCutoff = 0.5;
+      m.doubleSided = true;
+    }
+    f.model().materials.push_back(m);
+    tinygltf::Primitive p = f.triangle();
+    p.material = i;
+    p.indices = i % 2 ? f.data(std::vector<std::uint16_t>{0, 1, 2}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR)
+                      : f.data(std::vector<std::uint32_t>{0, 1, 2}, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR);
+    f.mesh(p);
+  }
+  AssetManager assets;
+  const GltfImport imported = f.import("sponza-stand-in", assets);
+  const MeshAsset& asset = assets.mesh_asset(imported.asset);
+  EXPECT_EQ(asset.materials.size(), 25u);
+  EXPECT_EQ(assets.texture_count(), 6u) << "each image is decoded and kept once";
+  EXPECT_EQ(imported.images, 6u);
+  std::size_t masked = 0;
+  for (const Material& m : asset.materials) masked += m.alpha_mode == AlphaMode::Mask;
+  EXPECT_EQ(masked, 5u);
+  EXPECT_EQ(imported.instances.size(), 25u);
+  for (const Mesh& mesh : asset.meshes) EXPECT_EQ(mesh.primitives.at(0).indices, (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace atrium::assets

@@ -2,7 +2,8 @@
 
 namespace atrium::lighting {
 
-ForwardTechnique::ForwardTechnique() : program_(gfx::ShaderProgram::load({"forward/mesh.vert", "forward/shade.frag"})) {}
+ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu)
+    : program_(gpu.shaders().get({"forward/mesh.vert", "forward/shade.frag"})) {}
 
 void ForwardTechnique::resize(glm::ivec2 /*size*/) {}
 

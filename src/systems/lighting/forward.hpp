@@ -11,12 +11,12 @@ namespace atrium::lighting {
 
 class ForwardTechnique final : public LightingTechnique {
  public:
-  ForwardTechnique();
+  explicit ForwardTechnique(assets::GpuAssets& gpu);
   void resize(glm::ivec2 size) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 
  private:
-  gfx::ShaderProgram program_;
+  gfx::ShaderProgram& program_;
 };
 
 }  // namespace atrium::lighting

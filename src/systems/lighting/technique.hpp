@@ -49,7 +49,8 @@ class LightingTechnique {
 struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
-  std::unique_ptr<LightingTechnique> (*create)();
+  // Makes the technique; it takes its shader programs from gpu.shaders().
+  std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu);
 };
 
 [[nodiscard]] std::span<const TechniqueInfo> technique_table();

@@ -6,8 +6,8 @@ namespace atrium::lighting {
 namespace {
 
 template <typename T>
-std::unique_ptr<LightingTechnique> make() {
-  return std::make_unique<T>();
+std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu) {
+  return std::make_unique<T>(gpu);
 }
 
 constexpr TechniqueInfo kTechniques[] = {

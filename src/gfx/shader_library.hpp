@@ -1,0 +1,26 @@
+// Shader programs cached by their files and defines: a technique that is
+// switched away from and back, or two passes that share a program, compile once.
+#pragma once
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gfx/shader_program.hpp"
+
+namespace atrium::gfx {
+
+class ShaderLibrary {
+ public:
+  // The program for `files` with `defines`, compiled on first use. The reference
+  // stays valid as long as the library. Throws ShaderError.
+  ShaderProgram& get(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines = {});
+
+  [[nodiscard]] std::size_t size() const { return programs_.size(); }
+
+ private:
+  std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
+};
+
+}  // namespace atrium::gfx
