@@ -1,6 +1,7 @@
 // Light evaluation shared by every technique: what one light (point, spot or
 // directional) adds to a surface seen from the camera, and the terms that do
 // not depend on lights.
+#include "surface.glsl"
 #include "attenuation.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
@@ -24,6 +25,14 @@ vec3 incoming_light(Surface s, Light light, out vec3 l) {
   return light.color_kind.rgb * attenuation;
 }
 
+// Whether a light can contribute at `position`: directional lights always,
+// point and spot lights within their radius (beyond it the falloff is zero).
+bool light_reaches(Light light, vec3 position) {
+  if (uint(light.color_kind.w) == kLightDirectional) return true;
+  vec3 d = light.position_radius.xyz - position;
+  return dot(d, d) < light.position_radius.w * light.position_radius.w;
+}
+
 vec3 shade_light(Surface s, vec3 v, Light light) {
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);
@@ -33,4 +42,12 @@ vec3 shade_light(Surface s, vec3 v, Light light) {
 
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {
   return ambient * s.albedo * s.occlusion + s.emissive;
+}
+
+// Everything that lights `s`: the unlit terms plus every light in the buffer.
+vec3 shade_all_lights(Surface s) {
+  vec3 v = normalize(u_camera_position.xyz - s.position);
+  vec3 color = shade_unlit_terms(s, u_ambient.rgb);
+  for (uint i = 0u; i < u_light_count; ++i) color += shade_light(s, v, u_lights[i]);
+  return color;
 }

@@ -1,6 +1,5 @@
-// Material evaluation: turns a fragment's interpolated vertex data and the
-// material's textures and factors into the inputs of shading. Shared by every
-// pass that rasterises scene geometry.
+// What shading needs to know about a visible point: filled from material
+// textures (material.glsl) or read back from a G-buffer (gbuffer.glsl).
 struct Surface {
   vec3 position;
   vec3 normal;
@@ -11,51 +10,3 @@ struct Surface {
   float occlusion;
   vec3 emissive;
 };
-
-layout(binding = 0) uniform sampler2D u_base_color_texture;
-layout(binding = 1) uniform sampler2D u_metallic_roughness_texture;
-layout(binding = 2) uniform sampler2D u_normal_texture;
-layout(binding = 3) uniform sampler2D u_occlusion_texture;
-layout(binding = 4) uniform sampler2D u_emissive_texture;
-
-uniform vec4 u_base_color_factor;
-uniform float u_metallic_factor;
-uniform float u_roughness_factor;
-uniform vec3 u_emissive_factor;     // already multiplied by emissive strength
-uniform float u_normal_scale;
-uniform float u_occlusion_strength;
-uniform float u_alpha_cutoff;       // < 0 when the material is not alpha-masked
-uniform int u_has_normal_texture;
-uniform int u_double_sided;
-// Per texture slot (base colour, metallic-roughness, normal, occlusion, emissive):
-// the UV set it reads and its KHR_texture_transform matrix.
-uniform mat3 u_uv_transform[5];
-uniform int u_uv_set[5];
-
-vec2 slot_uv(int slot, vec2 uv0, vec2 uv1) {
-  return (u_uv_transform[slot] * vec3(u_uv_set[slot] == 1 ? uv1 : uv0, 1.0)).xy;
-}
-
-Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, bool front_facing) {
-  Surface s;
-  s.position = position;
-  vec4 base = texture(u_base_color_texture, slot_uv(0, uv0, uv1)) * u_base_color_factor;
-  s.albedo = base.rgb;
-  s.alpha = base.a;
-  vec3 n = normalize(normal);
-  if (u_double_sided != 0 && !front_facing) n = -n;
-  if (u_has_normal_texture != 0) {
-    vec3 t = normalize(tangent.xyz - n * dot(n, tangent.xyz));
-    vec3 b = cross(n, t) * tangent.w;
-    vec3 m = texture(u_normal_texture, slot_uv(2, uv0, uv1)).xyz * 2.0 - 1.0;
-    m.xy *= u_normal_scale;
-    n = normalize(mat3(t, b, n) * m);
-  }
-  s.normal = n;
-  vec4 mr = texture(u_metallic_roughness_texture, slot_uv(1, uv0, uv1));
-  s.roughness = clamp(mr.g * u_roughness_factor, 0.0, 1.0);
-  s.metallic = clamp(mr.b * u_metallic_factor, 0.0, 1.0);
-  s.occlusion = mix(1.0, texture(u_occlusion_texture, slot_uv(3, uv0, uv1)).r, u_occlusion_strength);
-  s.emissive = texture(u_emissive_texture, slot_uv(4, uv0, uv1)).rgb * u_emissive_factor;
-  return s;
-}

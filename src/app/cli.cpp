@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -52,6 +53,9 @@ std::string help_text() {
          "  atrium render [SCENE] --out FILE.png [options]\n"
          "                                           render one frame headless to a PNG\n"
          "  atrium info [SCENE] [--json]             what the scene holds and what loading cost\n"
+         "  atrium compare [SCENE] [--size WxH] [--lights N]\n"
+         "                                           every mode at every view against forward (PSNR,\n"
+         "                                           largest difference); exit 1 under 40 dB\n"
          "  atrium --help                            show this text\n"
          "\n"
          "SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json,\n"
@@ -82,6 +86,10 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     ++i;
   } else if (i < args.size() && args[i] == "info") {
     options.command = Command::Info;
+    ++i;
+  } else if (i < args.size() && args[i] == "compare") {
+    options.command = Command::Compare;
+    options.size = {320, 180};
     ++i;
   }
   bool scene_given = false;
@@ -123,6 +131,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   }
   if (options.command == Command::Render && !out_given) throw UsageError("render needs --out FILE.png");
   if (options.command != Command::Render && out_given) throw UsageError("--out is for `atrium render`");
+  if (options.command == Command::Compare && options.mode) throw UsageError("compare renders every mode; --mode does not apply");
   if (options.command != Command::Window && options.frames) throw UsageError("--frames is for the window");
   if (options.mode) {
     try {
@@ -163,11 +172,41 @@ int run_info(const CliOptions& options) {
   return kExitOk;
 }
 
+// Every mode at every view against forward: PSNR and largest channel difference.
+int run_compare(const CliOptions& options) {
+  const auto context = gfx::HeadlessContext::create();
+  World world({options.scene, options.lights, "forward", 1, options.size});
+  std::printf("%-24s %-18s %10s %9s\n", "mode", "view", "PSNR", "max diff");
+  bool all_close = true;
+  for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
+    world.set_view(view);
+    world.set_mode("forward");
+    world.frame(0.0);
+    const assets::Image reference = world.renderer().read_output();
+    const std::string view_name = std::to_string(view) + " " + world.scene().views[static_cast<std::size_t>(view - 1)].name;
+    for (const auto& technique : lighting::technique_table()) {
+      if (technique.name == "forward") continue;
+      world.set_mode(std::string(technique.name));
+      world.frame(0.0);
+      const assets::Image image = world.renderer().read_output();
+      const double psnr = assets::psnr(reference, image);
+      const bool close = psnr >= kMinimumPsnr;
+      all_close = all_close && close;
+      std::printf("%-24s %-18s %7.2f dB %9d%s\n", std::string(technique.name).c_str(), view_name.c_str(),
+                  std::isinf(psnr) ? 999.99 : psnr, assets::max_channel_difference(reference, image), close ? "" : "  < 40 dB");
+    }
+  }
+  std::printf(all_close ? "every mode is within %.0f dB PSNR of forward\n" : "some modes differ from forward by more than %.0f dB PSNR\n",
+              kMinimumPsnr);
+  return all_close ? kExitOk : kExitRuntimeFailure;
+}
+
 int run_command(const CliOptions& options) {
   switch (options.command) {
     case Command::Help: std::fputs(help_text().c_str(), stdout); return kExitOk;
     case Command::Render: return run_render(options);
     case Command::Info: return run_info(options);
+    case Command::Compare: return run_compare(options);
     case Command::Window: return run_window(options);
   }
   return kExitUsage;

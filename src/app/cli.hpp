@@ -17,13 +17,15 @@ inline constexpr int kExitRuntimeFailure = 1;
 inline constexpr int kExitUsage = 2;
 inline constexpr std::uint32_t kMaxLights = 1'000'000;
 inline constexpr int kMaxImageSide = 16384;
+// `atrium compare` fails when any mode's image is further than this from forward's.
+inline constexpr double kMinimumPsnr = 40.0;
 
 class UsageError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
 
-enum class Command { Window, Render, Info, Help };
+enum class Command { Window, Render, Info, Compare, Help };
 
 struct CliOptions {
   Command command = Command::Window;

@@ -49,7 +49,11 @@ void MeshRenderer::resize(glm::ivec2 size) {
   output_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
   require_complete(output_framebuffer_.id(), "output");
-  if (technique_) technique_->resize(size);
+  if (technique_) technique_->resize(targets());
+}
+
+lighting::FrameTargets MeshRenderer::targets() const {
+  return {hdr_framebuffer_.id(), hdr_color_.id(), depth_stencil_.id(), size_};
 }
 
 void MeshRenderer::select_technique(const std::string& mode) {
@@ -57,7 +61,7 @@ void MeshRenderer::select_technique(const std::string& mode) {
   if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
   technique_.reset();  // release the old technique's targets before the new one allocates
   technique_ = info->create(gpu_);
-  technique_->resize(size_);
+  technique_->resize(targets());
   mode_ = mode;
 }
 
@@ -95,8 +99,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
 
   const lighting::FrameContext frame{draws, gpu, lights.count, scene.background};
-  const lighting::FrameTargets targets{hdr_framebuffer_.id(), hdr_color_.id(), depth_stencil_.id(), size_};
-  technique_->execute(frame, targets);
+  technique_->execute(frame, targets());
 
   // Tone map into the 8-bit output.
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());

@@ -44,6 +44,7 @@ class MeshRenderer {
  private:
   void resize(glm::ivec2 size);
   void select_technique(const std::string& mode);
+  [[nodiscard]] lighting::FrameTargets targets() const;
 
   glm::ivec2 size_{0};
   std::string mode_;

@@ -92,16 +92,16 @@ TEST(ShaderLog, NvidiaAndMesaFormatsAreMappedToFiles) {
 }
 
 TEST_F(ShaderFiles, TheEnginesShadersCompile) {
-  EXPECT_NO_THROW((void)ShaderProgram::load({"forward/mesh.vert", "forward/shade.frag"}));
+  EXPECT_NO_THROW((void)ShaderProgram::load({"common/mesh.vert", "forward/shade.frag"}));
   EXPECT_NO_THROW((void)ShaderProgram::load({"post/fullscreen.vert", "post/tonemap.frag"}));
 }
 
 TEST_F(ShaderFiles, TheLibraryCompilesEachProgramOnce) {
   ShaderLibrary library;
   const std::int64_t before = live_gl_objects(GlKind::Program);
-  ShaderProgram& a = library.get({"forward/mesh.vert", "forward/shade.frag"});
-  ShaderProgram& b = library.get({"forward/mesh.vert", "forward/shade.frag"});
-  ShaderProgram& c = library.get({"forward/mesh.vert", "forward/shade.frag"}, {{"VARIANT", "2"}});
+  ShaderProgram& a = library.get({"common/mesh.vert", "forward/shade.frag"});
+  ShaderProgram& b = library.get({"common/mesh.vert", "forward/shade.frag"});
+  ShaderProgram& c = library.get({"common/mesh.vert", "forward/shade.frag"}, {{"VARIANT", "2"}});
   EXPECT_EQ(&a, &b);
   EXPECT_NE(&a, &c);
   EXPECT_EQ(library.size(), 2u);

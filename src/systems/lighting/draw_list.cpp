@@ -4,6 +4,7 @@
 
 #include "components/mesh_instance.hpp"
 #include "components/transform.hpp"
+#include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
 
@@ -84,6 +85,27 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
   glEnable(GL_CULL_FACE);
   glBindVertexArray(0);
   glBindSamplers(0, kMaterialTextureSlots, nullptr);
+}
+
+void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {
+  if (frame.draws.blended.empty()) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  forward_program.use();
+  draw_items(forward_program, frame.gpu, frame.draws.blended);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+void FullscreenTriangle::draw() const {
+  glBindVertexArray(vertex_array_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
 }
 
 }  // namespace atrium::lighting

@@ -11,6 +11,7 @@
 #include "assets/asset_manager.hpp"
 #include "assets/gpu_assets.hpp"
 #include "ecs/registry.hpp"
+#include "gfx/gl_object.hpp"
 #include "gfx/shader_program.hpp"
 
 namespace atrium::lighting {
@@ -40,5 +41,22 @@ struct DrawList {
 // binds the material's textures to units 0-4, and disables back-face culling
 // for double-sided materials. Leaves culling enabled on return.
 void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items);
+
+struct FrameContext;
+struct FrameTargets;
+
+// Draws the frame's blended items over the lit image, back to front, shaded by
+// every light with `forward_program`, depth-tested against the opaque depth.
+void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
+
+// A triangle that covers the viewport, for full-screen passes.
+class FullscreenTriangle {
+ public:
+  FullscreenTriangle() : vertex_array_(gfx::create_vertex_array()) {}
+  void draw() const;
+
+ private:
+  gfx::VertexArray vertex_array_;
+};
 
 }  // namespace atrium::lighting

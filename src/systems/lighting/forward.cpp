@@ -3,9 +3,9 @@
 namespace atrium::lighting {
 
 ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu)
-    : program_(gpu.shaders().get({"forward/mesh.vert", "forward/shade.frag"})) {}
+    : program_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
 
-void ForwardTechnique::resize(glm::ivec2 /*size*/) {}
+void ForwardTechnique::resize(const FrameTargets& /*targets*/) {}
 
 void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
   glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
@@ -21,14 +21,7 @@ void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& ta
   program_.use();
   draw_items(program_, frame.gpu, frame.draws.opaque);
 
-  if (!frame.draws.blended.empty()) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    draw_items(program_, frame.gpu, frame.draws.blended);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-  }
+  draw_transparent(program_, frame, targets);
 }
 
 }  // namespace atrium::lighting

@@ -12,7 +12,7 @@ namespace atrium::lighting {
 class ForwardTechnique final : public LightingTechnique {
  public:
   explicit ForwardTechnique(assets::GpuAssets& gpu);
-  void resize(glm::ivec2 size) override;
+  void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 
  private:

@@ -38,9 +38,9 @@ struct FrameTargets {
 class LightingTechnique {
  public:
   virtual ~LightingTechnique() = default;
-  // Called before the first frame and whenever the output size changes; a
-  // technique (re)allocates only the targets of its own here.
-  virtual void resize(glm::ivec2 size) = 0;
+  // Called before the first frame and whenever the renderer's targets change
+  // (their size); a technique (re)allocates only targets of its own here.
+  virtual void resize(const FrameTargets& targets) = 0;
   virtual void execute(const FrameContext& frame, const FrameTargets& targets) = 0;
   // Technique-specific controls for the overlay; most techniques have none.
   virtual void draw_ui() {}

@@ -1,4 +1,5 @@
 // The technique table: one row per lighting mode, in the order `t` cycles them.
+#include "systems/lighting/deferred.hpp"
 #include "systems/lighting/forward.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -12,6 +13,11 @@ std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu) {
 
 constexpr TechniqueInfo kTechniques[] = {
     {"forward", "one geometry pass; every fragment loops over every light (the baseline)", &make<ForwardTechnique>},
+    {"deferred", "G-buffer, then one full-screen pass over every light", [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> {
+       return std::make_unique<DeferredTechnique>(gpu, false);
+     }},
+    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel",
+     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
 };
 
 }  // namespace

@@ -1,6 +1,7 @@
 #version 450 core
-// Forward geometry: transforms a mesh's vertices to clip space and hands world
-// position, normal, tangent and UVs to the shading pass.
+// Scene geometry for every pass that rasterises meshes (forward shading, the
+// G-buffer pass, depth pre-passes): clip-space position plus world position,
+// normal, tangent and both UV sets for material evaluation.
 #include "common/frame.glsl"
 
 layout(location = 0) in vec3 a_position;

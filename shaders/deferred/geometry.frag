@@ -1,0 +1,20 @@
+#version 450 core
+// Deferred geometry pass: evaluates each visible fragment's material and writes
+// it to the G-buffer (alpha-masked fragments below the cutoff are discarded).
+// Opaque and masked geometry only; blended geometry is drawn forward later.
+#include "common/frame.glsl"
+#include "common/material.glsl"
+#define GBUFFER_WRITE
+#include "common/gbuffer.glsl"
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv0;
+in vec2 v_uv1;
+
+void main() {
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, gl_FrontFacing);
+  if (s.alpha < u_alpha_cutoff) discard;
+  write_gbuffer(s);
+}

@@ -1,0 +1,28 @@
+#include "systems/lighting/deferred.hpp"
+
+namespace atrium::lighting {
+
+DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, bool cull_by_radius)
+    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
+      lighting_(gpu.shaders().get({"post/fullscreen.vert", "deferred/lighting.frag"},
+                                  cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}}
+                                                 : std::vector<gfx::ShaderDefine>{})),
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+
+void DeferredTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
+
+void DeferredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+  gbuffer_.draw_geometry(geometry_, frame);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  lighting_.use();
+  gbuffer_.bind_textures();
+  fullscreen_.draw();
+
+  draw_transparent(forward_, frame, targets);
+}
+
+}  // namespace atrium::lighting

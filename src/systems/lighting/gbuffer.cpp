@@ -1,0 +1,55 @@
+#include "systems/lighting/gbuffer.hpp"
+
+#include <stdexcept>
+
+namespace atrium::lighting {
+
+void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
+  size_ = size;
+  framebuffer_ = gfx::create_framebuffer();
+  std::array<GLenum, kTargets> attachments{};
+  for (std::size_t i = 0; i < kTargets; ++i) {
+    textures_[i] = gfx::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(textures_[i].id(), 1, kLayout[i].format, size.x, size.y);
+    glTextureParameteri(textures_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(textures_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    glNamedFramebufferTexture(framebuffer_.id(), attachments[i], textures_[i].id(), 0);
+  }
+  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
+  glNamedFramebufferDrawBuffers(framebuffer_.id(), static_cast<GLsizei>(kTargets), attachments.data());
+  if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error("the G-buffer framebuffer is incomplete");
+  }
+}
+
+void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glViewport(0, 0, size_.x, size_.y);
+  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (GLint i = 0; i < static_cast<GLint>(kTargets); ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+  glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  // The albedo target is sRGB: GL encodes the linear values written to it.
+  glEnable(GL_FRAMEBUFFER_SRGB);
+  program.use();
+  draw_items(program, frame.gpu, frame.draws.opaque);
+  glDisable(GL_FRAMEBUFFER_SRGB);
+}
+
+void GBuffer::bind_textures() const {
+  std::array<GLuint, kTargets> names{};
+  for (std::size_t i = 0; i < kTargets; ++i) names[i] = textures_[i].id();
+  glBindTextures(0, static_cast<GLsizei>(kTargets), names.data());
+}
+
+std::size_t GBuffer::bytes_per_pixel() {
+  std::size_t bytes = 4;  // DEPTH24_STENCIL8
+  for (const Target& target : kLayout) bytes += target.bytes_per_pixel;
+  return bytes;
+}
+
+}  // namespace atrium::lighting
