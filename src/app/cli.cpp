@@ -45,8 +45,9 @@ glm::ivec2 parse_size(std::string_view text) {
 std::string help_text() {
   std::string modes;
   for (const auto& info : lighting::technique_table()) {
-    modes += "  " + std::string(info.name) + std::string(std::max<std::size_t>(2, 22 - info.name.size()), ' ') +
-             std::string(info.description) + "\n";
+    constexpr std::size_t kColumn = 26;
+    const std::size_t padding = info.name.size() + 2 < kColumn ? kColumn - info.name.size() : 2;
+    modes += "  " + std::string(info.name) + std::string(padding, ' ') + std::string(info.description) + "\n";
   }
   return "Usage:\n"
          "  atrium [SCENE] [options]                 open the demo window\n"

@@ -98,7 +98,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
 
-  const lighting::FrameContext frame{draws, gpu, lights.count, scene.background};
+  const lighting::FrameContext frame{draws, gpu, lights.staging, scene.background};
   technique_->execute(frame, targets());
 
   // Tone map into the 8-bit output.

@@ -14,6 +14,7 @@
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl.hpp"
+#include "systems/light_buffer.hpp"
 #include "systems/lighting/draw_list.hpp"
 
 namespace atrium::lighting {
@@ -23,7 +24,7 @@ namespace atrium::lighting {
 struct FrameContext {
   const DrawList& draws;
   const assets::GpuAssets& gpu;
-  std::uint32_t light_count = 0;
+  std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};
 };
 

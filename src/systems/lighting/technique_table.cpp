@@ -1,6 +1,7 @@
 // The technique table: one row per lighting mode, in the order `t` cycles them.
 #include "systems/lighting/deferred.hpp"
 #include "systems/lighting/forward.hpp"
+#include "systems/lighting/light_volumes.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
@@ -18,6 +19,10 @@ constexpr TechniqueInfo kTechniques[] = {
      }},
     {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel",
      [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
+    {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius",
+     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, false); }},
+    {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil",
+     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, true); }},
 };
 
 }  // namespace

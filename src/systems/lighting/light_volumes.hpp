@@ -1,0 +1,44 @@
+// Light volumes (modes `light-volumes` and `light-volumes-instanced`): after the
+// G-buffer, a base pass writes ambient, emission and background; directional
+// lights are one full-screen pass; every point and spot light draws a sphere of
+// its radius and shades only the pixels inside it, added into the HDR target.
+// `light-volumes` finds those pixels exactly with a stencil pass per light
+// (z-fail counting, so it works with the camera inside the sphere; depth clamp
+// keeps spheres that cross the near or far plane whole). `light-volumes-instanced`
+// draws all spheres in one instanced draw of back faces with a GEQUAL depth test
+// and no stencil, so the benchmark shows what the stencil pass buys.
+#pragma once
+
+#include "gfx/gl_object.hpp"
+#include "systems/lighting/gbuffer.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium::lighting {
+
+class LightVolumeTechnique final : public LightingTechnique {
+ public:
+  LightVolumeTechnique(assets::GpuAssets& gpu, bool instanced);
+  void resize(const FrameTargets& targets) override;
+  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+
+ private:
+  void draw_volumes_with_stencil(const FrameContext& frame);
+  void draw_volumes_instanced(const FrameContext& frame);
+
+  bool instanced_;
+  gfx::ShaderProgram& geometry_;
+  gfx::ShaderProgram& unlit_;
+  gfx::ShaderProgram& directional_;
+  gfx::ShaderProgram& stencil_;
+  gfx::ShaderProgram& lighting_;
+  gfx::ShaderProgram& forward_;
+  GBuffer gbuffer_;
+  FullscreenTriangle fullscreen_;
+  gfx::Buffer sphere_vertices_;
+  gfx::Buffer sphere_indices_;
+  gfx::VertexArray sphere_;
+  GLsizei sphere_index_count_ = 0;
+  float circumscribe_ = 1.0f;  // scales the unit mesh so its faces lie outside the unit sphere
+};
+
+}  // namespace atrium::lighting
