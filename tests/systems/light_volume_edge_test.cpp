@@ -1,6 +1,7 @@
 // Cases where volume- and radius-based techniques classically go wrong, each
 // rendered by every mode and compared with forward: the camera inside a light's
-// sphere, a sphere crossing the near plane, and one crossing the far plane.
+// sphere, a sphere crossing the near plane, one crossing the far plane, spot and
+// directional lights, and alpha-blended geometry in front of the lit scene.
 #include <memory>
 
 #include "app/world.hpp"
@@ -17,8 +18,9 @@ constexpr glm::ivec2 kSize{160, 90};
 
 struct EdgeCase {
   const char* name;
-  assets::SceneLight light;
-  float far_plane;
+  std::vector<assets::SceneLight> lights;
+  float far_plane = 200.0f;
+  bool blended_panes = false;
 };
 
 // A floor and a back wall, seen from (0, 0.5, 5) looking along -Z.
@@ -34,9 +36,28 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode) {
   assets::shapes::append(geometry, assets::shapes::grid(glm::vec3(-10, 0, -10), glm::vec3(20, 0, 0), glm::vec3(0, 6, 0), 20, 6, 1.0f),
                          glm::mat4(1.0f));
   room.meshes.push_back({"room", {geometry}});
+  // Two overlapping tinted panes; drawn after lighting, back to front.
+  assets::Material glass = material;
+  glass.alpha_mode = assets::AlphaMode::Blend;
+  glass.double_sided = true;
+  glass.base_color_factor = glm::vec4(0.2f, 0.5f, 1.0f, 0.5f);
+  room.materials.push_back(glass);
+  glass.base_color_factor = glm::vec4(1.0f, 0.4f, 0.2f, 0.4f);
+  room.materials.push_back(glass);
+  for (std::uint32_t pane = 0; pane < 2; ++pane) {
+    assets::Primitive quad = assets::shapes::grid(glm::vec3(-1.0f + 0.8f * static_cast<float>(pane), 0.0f, 1.5f - static_cast<float>(pane)),
+                                                  glm::vec3(1.5f, 0, 0), glm::vec3(0, 1.2f, 0), 1, 1, 1.0f);
+    quad.material = 1 + pane;
+    room.meshes.push_back({"pane", {quad}});
+  }
   assets::SceneDescription scene;
-  scene.instances.push_back({manager.add_mesh_asset(std::move(room)), 0, Transform{}});
-  scene.lights.push_back(c.light);
+  const assets::MeshAssetHandle handle = manager.add_mesh_asset(std::move(room));
+  scene.instances.push_back({handle, 0, Transform{}});
+  if (c.blended_panes) {
+    scene.instances.push_back({handle, 1, Transform{}});
+    scene.instances.push_back({handle, 2, Transform{}});
+  }
+  scene.lights = c.lights;
   scene.views.push_back({"eye", glm::vec3(0.0f, 0.5f, 5.0f), 0.0f, -8.0f});
   auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize});
   world->registry().view<Camera>().each([&](Camera& camera) { camera.far_plane = c.far_plane; });
@@ -49,13 +70,35 @@ assets::Image render(const EdgeCase& c, const std::string& mode) {
   return world->renderer().read_output();
 }
 
+assets::SceneLight point(glm::vec3 position, glm::vec3 color, float intensity, float radius) {
+  return {position, color, intensity, radius};
+}
+
+assets::SceneLight spot() {
+  assets::SceneLight light{glm::vec3(-1.0f, 3.0f, 1.0f), glm::vec3(1.0f, 0.8f, 0.6f), 6.0f, 8.0f};
+  light.kind = assets::LightKind::Spot;
+  light.direction = glm::normalize(glm::vec3(0.3f, -1.0f, -0.4f));
+  light.inner_cone = 0.25f;
+  light.outer_cone = 0.5f;
+  return light;
+}
+
+assets::SceneLight sun() {
+  assets::SceneLight light{glm::vec3(0.0f), glm::vec3(0.6f, 0.7f, 1.0f), 0.4f, std::nullopt};
+  light.kind = assets::LightKind::Directional;
+  light.direction = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.6f));
+  return light;
+}
+
 const EdgeCase kCases[] = {
-    {"camera_inside", {glm::vec3(0.3f, 0.8f, 4.5f), glm::vec3(1.0f, 0.9f, 0.8f), 0.6f, 6.0f}, 200.0f},
+    {"camera_inside", {point(glm::vec3(0.3f, 0.8f, 4.5f), glm::vec3(1.0f, 0.9f, 0.8f), 0.6f, 6.0f)}},
     // Centre 1.02 m ahead, radius 1: the sphere reaches 2 cm in front of the
     // camera, through the near plane (5 cm), with the camera just outside.
-    {"crosses_near_plane", {glm::vec3(0.0f, 0.5f, 3.98f), glm::vec3(0.9f, 1.0f, 0.8f), 0.15f, 1.0f}, 200.0f},
+    {"crosses_near_plane", {point(glm::vec3(0.0f, 0.5f, 3.98f), glm::vec3(0.9f, 1.0f, 0.8f), 0.15f, 1.0f)}},
     // Centre 4.5 m ahead, radius 2, far plane at 6 m.
-    {"crosses_far_plane", {glm::vec3(0.0f, 0.4f, 0.5f), glm::vec3(0.8f, 0.9f, 1.0f), 1.5f, 2.0f}, 6.0f},
+    {"crosses_far_plane", {point(glm::vec3(0.0f, 0.4f, 0.5f), glm::vec3(0.8f, 0.9f, 1.0f), 1.5f, 2.0f)}, 6.0f},
+    {"spot_and_directional", {spot(), sun(), point(glm::vec3(2.0f, 1.0f, 0.0f), glm::vec3(0.4f, 1.0f, 0.4f), 0.5f, 4.0f)}},
+    {"blended_panes", {point(glm::vec3(0.0f, 1.5f, 2.5f), glm::vec3(1.0f), 1.0f, 6.0f), sun()}, 200.0f, true},
 };
 
 class VolumeEdgeCase : public testing::GlTest, public ::testing::WithParamInterface<std::tuple<std::string, int>> {};
@@ -83,12 +126,22 @@ std::vector<std::string> non_forward_modes() {
   return modes;
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase, ::testing::Combine(::testing::ValuesIn(non_forward_modes()), ::testing::Values(0, 1, 2)),
+INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase, ::testing::Combine(::testing::ValuesIn(non_forward_modes()), ::testing::Values(0, 1, 2, 3, 4)),
                          [](const auto& info) {
                            std::string name = std::get<0>(info.param) + "_" + kCases[std::get<1>(info.param)].name;
                            for (char& ch : name) if (ch == '-') ch = '_';
                            return name;
                          });
+
+using BlendedPanes = testing::GlTest;
+
+TEST_F(BlendedPanes, AreVisibleOverTheLitScene) {
+  EdgeCase with = kCases[4];
+  EdgeCase without = with;
+  without.blended_panes = false;
+  // The panes change the picture where they are: this is not a no-op test.
+  EXPECT_LT(assets::psnr(render(with, "forward"), render(without, "forward")), 35.0);
+}
 
 }  // namespace
 }  // namespace atrium
