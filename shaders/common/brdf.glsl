@@ -1,6 +1,17 @@
-// Cook-Torrance BRDF with glTF's metallic-roughness inputs: GGX normal
-// distribution, height-correlated Smith visibility, Schlick Fresnel and a
-// Lambert diffuse lobe weighted by what the specular lobe does not reflect.
+// Surface response to one light, for the three shading models chosen with
+// --shading (compiled in through SHADING_MODEL; identical in every technique):
+//   0 pbr:          Cook-Torrance with glTF's metallic-roughness inputs: GGX
+//                   distribution, height-correlated Smith visibility, Schlick
+//                   Fresnel, Lambert diffuse weighted by what is not reflected.
+//   1 blinn-phong:  diffuse max(N.L, 0) + specular max(N.H, 0)^shininess
+//   2 phong:        diffuse max(N.L, 0) + specular max(R.V, 0)^shininess, R = reflect(-L, N)
+// The Phong models take the same material: diffuse colour albedo * (1 - metallic),
+// specular colour mix(0.04, albedo, metallic), shininess 2 / roughness^4 - 2; the
+// lobes carry the usual energy normalisation (1/pi, (n + 2) / 2pi or (n + 8) / 8pi)
+// so that the three models light a scene equally bright.
+#ifndef SHADING_MODEL
+#define SHADING_MODEL 0
+#endif
 const float kPi = 3.14159265358979;
 
 float distribution_ggx(float n_dot_h, float alpha) {
@@ -21,6 +32,7 @@ vec3 fresnel_schlick(float cos_theta, vec3 f0) {
 }
 
 // Outgoing radiance towards V for unit incoming radiance from L, times N.L.
+// Cook-Torrance (shading model `pbr`).
 vec3 brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
   float n_dot_l = max(dot(n, l), 0.0);
   if (n_dot_l <= 0.0) return vec3(0.0);
@@ -34,4 +46,27 @@ vec3 brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, flo
   vec3 specular = distribution_ggx(n_dot_h, alpha) * visibility_smith_ggx_correlated(n_dot_v, n_dot_l, alpha) * f;
   vec3 diffuse = (1.0 - f) * (1.0 - metallic) * albedo / kPi;
   return (diffuse + specular) * n_dot_l;
+}
+
+vec3 brdf_phong_family(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
+  float n_dot_l = max(dot(n, l), 0.0);
+  if (n_dot_l <= 0.0) return vec3(0.0);
+  float alpha = max(roughness * roughness, 2e-3);
+  float shininess = clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 8192.0);
+  vec3 diffuse = albedo * (1.0 - metallic) / kPi;
+  vec3 specular_color = mix(vec3(0.04), albedo, metallic);
+#if SHADING_MODEL == 1
+  float lobe = pow(max(dot(n, normalize(v + l)), 0.0), shininess) * (shininess + 8.0) / (8.0 * kPi);
+#else
+  float lobe = pow(max(dot(reflect(-l, n), v), 0.0), shininess) * (shininess + 2.0) / (2.0 * kPi);
+#endif
+  return (diffuse + specular_color * lobe) * n_dot_l;
+}
+
+vec3 surface_response(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
+#if SHADING_MODEL == 0
+  return brdf_cook_torrance(n, v, l, albedo, metallic, roughness);
+#else
+  return brdf_phong_family(n, v, l, albedo, metallic, roughness);
+#endif
 }

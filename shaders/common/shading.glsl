@@ -37,7 +37,7 @@ vec3 shade_light(Surface s, vec3 v, Light light) {
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);
   if (all(lessThanEqual(radiance, vec3(0.0)))) return vec3(0.0);
-  return brdf_cook_torrance(s.normal, v, l, s.albedo, s.metallic, s.roughness) * radiance;
+  return surface_response(s.normal, v, l, s.albedo, s.metallic, s.roughness) * radiance;
 }
 
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {

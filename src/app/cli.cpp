@@ -12,6 +12,7 @@
 #include "assets/image.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
+#include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
@@ -54,7 +55,7 @@ std::string help_text() {
          "  atrium render [SCENE] --out FILE.png [options]\n"
          "                                           render one frame headless to a PNG\n"
          "  atrium info [SCENE] [--json]             what the scene holds and what loading cost\n"
-         "  atrium compare [SCENE] [--size WxH] [--lights N]\n"
+         "  atrium compare [SCENE] [--size WxH] [--lights N] [--shading S]\n"
          "                                           every mode at every view against forward (PSNR,\n"
          "                                           largest difference); exit 1 under 40 dB\n"
          "  atrium --help                            show this text\n"
@@ -64,6 +65,7 @@ std::string help_text() {
          "\n"
          "Options:\n"
          "  --mode M        lighting technique (default: the scene's, 'forward')\n"
+         "  --shading S     shading model: pbr (default), blinn-phong or phong\n"
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
@@ -107,6 +109,11 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     };
     if (arg == "--mode") {
       options.mode = std::string(value());
+    } else if (arg == "--shading") {
+      options.shading = std::string(value());
+      if (lighting::shading_model_index(options.shading) < 0) {
+        throw UsageError("unknown shading model '" + options.shading + "' (models: " + lighting::shading_model_names() + ")");
+      }
     } else if (arg == "--lights") {
       options.lights = parse_number<std::uint32_t>("--lights", value(), 0, kMaxLights);
     } else if (arg == "--view") {
@@ -152,7 +159,7 @@ int run_render(const CliOptions& options) {
     throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");
   }
   const auto context = gfx::HeadlessContext::create();
-  World world({options.scene, options.lights, options.mode, options.view, options.size});
+  World world({options.scene, options.lights, options.mode, options.view, options.size, options.shading});
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
@@ -176,7 +183,7 @@ int run_info(const CliOptions& options) {
 // Every mode at every view against forward: PSNR and largest channel difference.
 int run_compare(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
-  World world({options.scene, options.lights, "forward", 1, options.size});
+  World world({options.scene, options.lights, "forward", 1, options.size, options.shading});
   std::printf("%-24s %-18s %10s %9s\n", "mode", "view", "PSNR", "max diff");
   bool all_close = true;
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {

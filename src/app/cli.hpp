@@ -31,6 +31,7 @@ struct CliOptions {
   Command command = Command::Window;
   std::string scene = "atrium";
   std::optional<std::string> mode;
+  std::string shading = "pbr";
   std::optional<std::uint32_t> lights;
   int view = 1;
   glm::ivec2 size{1280, 720};

@@ -118,6 +118,7 @@ void World::start(const WorldOptions& options) {
   spawn(registry_, scene_);
 
   set_mode(options.mode.value_or(scene_.default_mode));
+  registry_.resource<RendererSettings>().shading = options.shading;
   set_view(options.view);
 
   register_camera(scheduler_);

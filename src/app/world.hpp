@@ -29,6 +29,7 @@ struct WorldOptions {
   std::optional<std::string> mode;      // the scene's default mode when absent
   int view = 1;                         // 1-based index into the scene's views
   glm::ivec2 size{1280, 720};
+  std::string shading = "pbr";          // a name from systems/lighting/shading_model.hpp
 };
 
 class World {

@@ -29,9 +29,11 @@ struct SceneSettings {
   float exposure = 1.0f;
 };
 
-// What the MeshRenderer draws with: a mode name from the technique table.
+// What the MeshRenderer draws with: a mode name from the technique table and a
+// shading model name from systems/lighting/shading_model.hpp.
 struct RendererSettings {
   std::string mode = "forward";
+  std::string shading = "pbr";  // pbr, blinn-phong or phong
   bool present_to_window = false;  // blit the final image to the default framebuffer
 };
 

@@ -19,8 +19,13 @@ class ShaderLibrary {
 
   [[nodiscard]] std::size_t size() const { return programs_.size(); }
 
+  // Defines added to every program fetched from now on (the shading model);
+  // programs made with other globals stay cached under their own key.
+  void set_global_defines(std::vector<ShaderDefine> defines) { globals_ = std::move(defines); }
+
  private:
   std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
+  std::vector<ShaderDefine> globals_;
 };
 
 }  // namespace atrium::gfx

@@ -5,6 +5,7 @@
 #include "components/frame_resources.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/frame_uniforms.hpp"
+#include "systems/lighting/shading_model.hpp"
 
 namespace atrium {
 namespace {
@@ -70,6 +71,13 @@ void MeshRenderer::render(ecs::Registry& registry) {
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
   if (size != size_) resize(size);
   const auto& settings = registry.resource<RendererSettings>();
+  if (settings.shading != shading_) {
+    const int model = lighting::shading_model_index(settings.shading);
+    if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
+    gpu_.shaders().set_global_defines({{"SHADING_MODEL", std::to_string(model)}});
+    shading_ = settings.shading;
+    technique_.reset();  // its programs were compiled for the old model
+  }
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
 
   const auto& view = registry.resource<ViewState>();

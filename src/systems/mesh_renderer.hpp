@@ -48,6 +48,7 @@ class MeshRenderer {
 
   glm::ivec2 size_{0};
   std::string mode_;
+  std::string shading_;
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;

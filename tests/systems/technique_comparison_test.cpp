@@ -5,6 +5,7 @@
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "components/frame_resources.hpp"
 #include "gfx/gl_object.hpp"
 #include "support/gl_test.hpp"
 #include "systems/lighting/technique.hpp"
@@ -46,6 +47,25 @@ INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward, ::testing::ValuesIn(non
   for (char& c : name) if (c == '-') c = '_';
   return name;
 });
+
+using ShadingModels = testing::GlTest;
+
+TEST_F(ShadingModels, GiveDifferentPicturesAndSwitchAtRunTime) {
+  World world({"atrium", std::nullopt, "deferred", 3, kSize});
+  std::vector<assets::Image> images;
+  for (const char* model : {"pbr", "blinn-phong", "phong", "pbr"}) {
+    world.registry().resource<RendererSettings>().shading = model;
+    world.frame(0.0);
+    images.push_back(world.renderer().read_output());
+  }
+  // The models are normalised to light a scene equally bright, so they differ
+  // mostly in highlights: clearly, but not by much on average.
+  for (auto [a, b] : {std::pair{0, 1}, std::pair{0, 2}, std::pair{1, 2}}) {
+    EXPECT_LT(assets::psnr(images[static_cast<std::size_t>(a)], images[static_cast<std::size_t>(b)]), 45.0) << a << " " << b;
+    EXPECT_GE(assets::max_channel_difference(images[static_cast<std::size_t>(a)], images[static_cast<std::size_t>(b)]), 16) << a << " " << b;
+  }
+  EXPECT_TRUE(std::isinf(assets::psnr(images[0], images[3]))) << "switching back gives the same picture";
+}
 
 using ModeSwitching = testing::GlTest;
 
