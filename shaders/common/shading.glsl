@@ -33,7 +33,16 @@ bool light_reaches(Light light, vec3 position) {
   return dot(d, d) < light.position_radius.w * light.position_radius.w;
 }
 
+// The heatmap debug view compiles every lighting shader with COUNT_LIGHTS:
+// each evaluation of a light for a fragment adds one to the fragment's pixel.
+#ifdef COUNT_LIGHTS
+layout(r32ui, binding = 0) uniform coherent uimage2D u_light_counts;
+#endif
+
 vec3 shade_light(Surface s, vec3 v, Light light) {
+#ifdef COUNT_LIGHTS
+  imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u);
+#endif
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);
   if (all(lessThanEqual(radiance, vec3(0.0)))) return vec3(0.0);

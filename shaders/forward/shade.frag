@@ -7,6 +7,12 @@
 #include "common/material.glsl"
 #include "common/shading.glsl"
 
+// Counting has side effects, which make GL run the shader before the depth and
+// stencil tests; count only what passes them, as a GPU's early tests would.
+#ifdef COUNT_LIGHTS
+layout(early_fragment_tests) in;
+#endif
+
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;

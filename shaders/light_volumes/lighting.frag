@@ -12,6 +12,13 @@
 flat in uint v_light;
 #endif
 
+// Counting has side effects, which make GL run the shader before the depth and
+// stencil tests; count only what passes them, as a GPU's early tests would.
+#ifdef COUNT_LIGHTS
+layout(early_fragment_tests) in;
+#endif
+
+
 layout(location = 0) out vec4 out_color;
 
 void main() {

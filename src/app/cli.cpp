@@ -9,9 +9,11 @@
 
 #include "app/info.hpp"
 #include "app/world.hpp"
+#include "components/frame_resources.hpp"
 #include "assets/image.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
+#include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -66,6 +68,9 @@ std::string help_text() {
          "Options:\n"
          "  --mode M        lighting technique (default: the scene's, 'forward')\n"
          "  --shading S     shading model: pbr (default), blinn-phong or phong\n"
+         "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
+         "                  emissive, depth, light-volumes (outlines) or heatmap (lights\n"
+         "                  evaluated per pixel in the current mode)\n"
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
@@ -109,6 +114,11 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     };
     if (arg == "--mode") {
       options.mode = std::string(value());
+    } else if (arg == "--debug-view") {
+      options.debug_view = std::string(value());
+      if (lighting::debug_view_index(options.debug_view) < 0) {
+        throw UsageError("unknown debug view '" + options.debug_view + "' (views: " + lighting::debug_view_names() + ")");
+      }
     } else if (arg == "--shading") {
       options.shading = std::string(value());
       if (lighting::shading_model_index(options.shading) < 0) {
@@ -140,6 +150,9 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   if (options.command == Command::Render && !out_given) throw UsageError("render needs --out FILE.png");
   if (options.command != Command::Render && out_given) throw UsageError("--out is for `atrium render`");
   if (options.command == Command::Compare && options.mode) throw UsageError("compare renders every mode; --mode does not apply");
+  if (!options.debug_view.empty() && options.command != Command::Render && options.command != Command::Window) {
+    throw UsageError("--debug-view is for `atrium render` and the window");
+  }
   if (options.command != Command::Window && options.frames) throw UsageError("--frames is for the window");
   if (options.mode) {
     try {
@@ -160,6 +173,7 @@ int run_render(const CliOptions& options) {
   }
   const auto context = gfx::HeadlessContext::create();
   World world({options.scene, options.lights, options.mode, options.view, options.size, options.shading});
+  world.registry().resource<RendererSettings>().debug_view = options.debug_view;
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();

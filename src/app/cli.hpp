@@ -32,6 +32,7 @@ struct CliOptions {
   std::string scene = "atrium";
   std::optional<std::string> mode;
   std::string shading = "pbr";
+  std::string debug_view;  // empty: the lit image
   std::optional<std::uint32_t> lights;
   int view = 1;
   glm::ivec2 size{1280, 720};

@@ -112,7 +112,8 @@ void World::start(const WorldOptions& options) {
 
   registry_.set_resource<Viewport>(Viewport{options.size});
   registry_.set_resource<ViewState>();
-  registry_.set_resource<SceneSettings>(SceneSettings{scene_.ambient, scene_.background, scene_.exposure});
+  registry_.set_resource<SceneSettings>(
+      SceneSettings{scene_.bounds_min, scene_.bounds_max, scene_.ambient, scene_.background, scene_.exposure});
   registry_.set_resource<RendererSettings>();
   registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
   spawn(registry_, scene_);

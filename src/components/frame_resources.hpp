@@ -24,6 +24,8 @@ struct ViewState {
 
 // Scene-wide lighting settings.
 struct SceneSettings {
+  glm::vec3 bounds_min{0.0f};
+  glm::vec3 bounds_max{0.0f};
   glm::vec3 ambient{0.03f};
   glm::vec3 background{0.0f};
   float exposure = 1.0f;
@@ -34,6 +36,7 @@ struct SceneSettings {
 struct RendererSettings {
   std::string mode = "forward";
   std::string shading = "pbr";  // pbr, blinn-phong or phong
+  std::string debug_view;       // empty, or a name from systems/lighting/debug_views.hpp
   bool present_to_window = false;  // blit the final image to the default framebuffer
 };
 

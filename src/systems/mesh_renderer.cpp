@@ -4,6 +4,7 @@
 
 #include "components/frame_resources.hpp"
 #include "systems/light_buffer.hpp"
+#include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/frame_uniforms.hpp"
 #include "systems/lighting/shading_model.hpp"
 
@@ -38,6 +39,8 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
   glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
+MeshRenderer::~MeshRenderer() = default;
+
 void MeshRenderer::resize(glm::ivec2 size) {
   size_ = size;
   hdr_color_ = make_target(GL_RGBA16F, size);
@@ -51,6 +54,7 @@ void MeshRenderer::resize(glm::ivec2 size) {
   glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
   require_complete(output_framebuffer_.id(), "output");
   if (technique_) technique_->resize(targets());
+  if (debug_views_) debug_views_->resize(targets());
 }
 
 lighting::FrameTargets MeshRenderer::targets() const {
@@ -71,12 +75,18 @@ void MeshRenderer::render(ecs::Registry& registry) {
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
   if (size != size_) resize(size);
   const auto& settings = registry.resource<RendererSettings>();
-  if (settings.shading != shading_) {
+  const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
+  if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
+  const bool counting = debug_view == lighting::kHeatmapView;
+  if (settings.shading != shading_ || counting != counting_) {
     const int model = lighting::shading_model_index(settings.shading);
     if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
-    gpu_.shaders().set_global_defines({{"SHADING_MODEL", std::to_string(model)}});
+    std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
+    if (counting) globals.push_back({"COUNT_LIGHTS"});
+    gpu_.shaders().set_global_defines(std::move(globals));
     shading_ = settings.shading;
-    technique_.reset();  // its programs were compiled for the old model
+    counting_ = counting;
+    technique_.reset();  // its programs were compiled with the old globals
   }
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
 
@@ -107,6 +117,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
 
   const lighting::FrameContext frame{draws, gpu, lights.staging, scene.background};
+  if (debug_view >= 0 && !debug_views_) {
+    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_);
+    debug_views_->resize(targets());
+  }
+  if (counting) debug_views_->begin_counting();
   technique_->execute(frame, targets());
 
   // Tone map into the 8-bit output.
@@ -121,6 +136,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindVertexArray(empty_vertex_array_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+
+  if (debug_view >= 0) {
+    debug_views_->draw(debug_view, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
+    if (counting) stats_.light_evaluations_per_pixel = debug_views_->average_light_evaluations();
+  }
 
   if (settings.present_to_window) {
     glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,

@@ -16,17 +16,23 @@
 #include "gfx/shader_program.hpp"
 #include "systems/lighting/technique.hpp"
 
+namespace atrium::lighting {
+class DebugViews;
+}
+
 namespace atrium {
 
 struct FrameStats {
   std::size_t draw_calls = 0;
   std::size_t triangles = 0;
   std::uint32_t lights = 0;
+  double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
 };
 
 class MeshRenderer {
  public:
   explicit MeshRenderer(assets::GpuAssets& gpu);
+  ~MeshRenderer();
 
   // Renders one frame of the registry's world. Throws std::invalid_argument for
   // a mode that is not in the technique table.
@@ -49,6 +55,8 @@ class MeshRenderer {
   glm::ivec2 size_{0};
   std::string mode_;
   std::string shading_;
+  bool counting_ = false;
+  std::unique_ptr<lighting::DebugViews> debug_views_;
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;

@@ -1,0 +1,44 @@
+#version 450 core
+// Debug views of the G-buffer and depth: reads one target and writes it as a
+// displayable colour straight to the output (no tone mapping). DEBUG_VIEW picks
+// the target: 0 position, 1 normal, 2 albedo, 3 metallic-roughness, 4 emissive,
+// 5 depth.
+#include "common/frame.glsl"
+#include "common/surface.glsl"
+#include "common/gbuffer.glsl"
+#include "common/tonemap.glsl"
+
+layout(binding = 5) uniform sampler2D u_depth;
+uniform vec3 u_bounds_min;
+uniform vec3 u_bounds_max;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  Surface s;
+  bool covered = read_gbuffer(pixel, s);
+  vec3 color = vec3(0.0);
+#if DEBUG_VIEW == 5
+  // Linear view depth, near white, far black, on a log scale.
+  float d = texelFetch(u_depth, pixel, 0).r;
+  float z_ndc = d * 2.0 - 1.0;
+  float view_z = 2.0 * u_near * u_far / (u_far + u_near - z_ndc * (u_far - u_near));
+  color = vec3(d < 1.0 ? 1.0 - log2(view_z / u_near) / log2(u_far / u_near) : 0.0);
+#else
+  if (covered) {
+#if DEBUG_VIEW == 0
+    color = clamp((s.position - u_bounds_min) / max(u_bounds_max - u_bounds_min, vec3(1e-6)), 0.0, 1.0);
+#elif DEBUG_VIEW == 1
+    color = s.normal * 0.5 + 0.5;
+#elif DEBUG_VIEW == 2
+    color = linear_to_srgb(s.albedo);
+#elif DEBUG_VIEW == 3
+    color = vec3(s.metallic, s.roughness, 0.0);
+#elif DEBUG_VIEW == 4
+    color = linear_to_srgb(tonemap_aces(s.emissive));
+#endif
+  }
+#endif
+  out_color = vec4(color, 1.0);
+}

@@ -1,0 +1,78 @@
+#include "systems/lighting/debug_views.hpp"
+
+#include <numeric>
+#include <vector>
+
+namespace atrium::lighting {
+
+int debug_view_index(std::string_view name) {
+  for (std::size_t i = 0; i < kDebugViews.size(); ++i) {
+    if (kDebugViews[i] == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+std::string debug_view_names() {
+  std::string names;
+  for (const auto name : kDebugViews) names += (names.empty() ? "" : ", ") + std::string(name);
+  return names;
+}
+
+DebugViews::DebugViews(assets::GpuAssets& gpu) : gpu_(gpu) {}
+
+void DebugViews::resize(const FrameTargets& targets) {
+  size_ = targets.size;
+  gbuffer_.resize(targets.size, targets.depth_stencil);
+  counts_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(counts_.id(), 1, GL_R32UI, targets.size.x, targets.size.y);
+}
+
+void DebugViews::begin_counting() {
+  const GLuint zero = 0;
+  glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+}
+
+void DebugViews::draw(int view, const FrameContext& frame, const FrameTargets& targets, GLuint output_framebuffer,
+                      glm::vec3 bounds_min, glm::vec3 bounds_max) {
+  if (view == kHeatmapView) {
+    glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    gfx::ShaderProgram& heatmap = gpu_.shaders().get({"post/fullscreen.vert", "debug/heatmap.frag"});
+    // Red at twice the light count: forward's overdraw can exceed one pass over all lights.
+    heatmap.set("u_scale_max", 2.0f * static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
+    glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
+    glViewport(0, 0, size_.x, size_.y);
+    heatmap.use();
+    fullscreen_.draw();
+    return;
+  }
+  gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
+  glViewport(0, 0, size_.x, size_.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  gbuffer_.bind_textures();
+  if (view == kOutlineView) {
+    gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}).use();
+    fullscreen_.draw();
+    return;
+  }
+  gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
+  show.set("u_bounds_min", bounds_min);
+  show.set("u_bounds_max", bounds_max);
+  glBindTextureUnit(5, targets.depth_stencil);
+  show.use();
+  fullscreen_.draw();
+}
+
+double DebugViews::average_light_evaluations() const {
+  std::vector<GLuint> counts(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
+  if (counts.empty()) return 0.0;
+  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glGetTextureImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(counts.size() * sizeof(GLuint)),
+                    counts.data());
+  return static_cast<double>(std::accumulate(counts.begin(), counts.end(), std::uint64_t{0})) / static_cast<double>(counts.size());
+}
+
+}  // namespace atrium::lighting
