@@ -181,6 +181,9 @@ int run_render(const CliOptions& options) {
               options.out.c_str(), options.size.x, options.size.y, world.mode().c_str(), world.view(),
               world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(), stats.lights,
               stats.triangles, stats.draw_calls, context->info().renderer.c_str());
+  if (options.debug_view == "heatmap") {
+    std::printf("light evaluations per pixel: %.2f on average\n", stats.light_evaluations_per_pixel);
+  }
   return kExitOk;
 }
 
