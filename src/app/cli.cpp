@@ -1,6 +1,8 @@
 #include "app/cli.hpp"
 
 #include <charconv>
+#include <cstdlib>
+#include <fstream>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -8,6 +10,7 @@
 #include <vector>
 
 #include "app/info.hpp"
+#include "app/progress_bar.hpp"
 #include "app/world.hpp"
 #include "components/frame_resources.hpp"
 #include "assets/image.hpp"
@@ -43,6 +46,74 @@ glm::ivec2 parse_size(std::string_view text) {
   }
 }
 
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string_view item = text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    if (!item.empty()) items.emplace_back(item);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
+// The options only `atrium bench` has, or whose meaning differs there
+// (--lights takes a list). Returns false for an option that is not one.
+template <typename Value>
+bool parse_bench_option(std::string_view arg, Value&& value, CliOptions& options) {
+  BenchOptions& bench = options.bench;
+  if (arg == "--modes") {
+    const std::string_view text = value();
+    bench.modes.clear();
+    if (text != "all") {
+      for (const std::string& mode : split_list(text)) {
+        if (!lighting::find_technique(mode)) {
+          throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
+        }
+        bench.modes.push_back(mode);
+      }
+      if (bench.modes.empty()) throw UsageError("--modes expects all or a comma-separated list of modes");
+    }
+  } else if (arg == "--lights") {
+    bench.light_counts.clear();
+    for (const std::string& count : split_list(value())) {
+      bench.light_counts.push_back(parse_number<std::uint32_t>("--lights", count, 0, kMaxLights));
+    }
+    if (bench.light_counts.empty()) throw UsageError("--lights expects a comma-separated list of light counts");
+  } else if (arg == "--views") {
+    const std::string_view text = value();
+    bench.views.clear();
+    if (text != "all") {
+      for (const std::string& view : split_list(text)) bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
+    }
+  } else if (arg == "--frames") {
+    bench.frames = parse_number<int>("--frames", value(), 1, 100000);
+  } else if (arg == "--warmup") {
+    bench.warmup = parse_number<int>("--warmup", value(), 0, 100000);
+  } else if (arg == "--light-radius") {
+    const std::string text(value());
+    char* end = nullptr;
+    const float radius = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
+      throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
+    }
+    bench.light_radius = radius;
+  } else if (arg == "--constant-density") {
+    bench.constant_density = true;
+  } else if (arg == "--csv") {
+    options.csv = std::string(value());
+  } else if (arg == "--md") {
+    options.md = std::string(value());
+  } else if (arg == "--plot") {
+    options.plot = std::string(value());
+  } else {
+    return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string help_text() {
@@ -60,6 +131,12 @@ std::string help_text() {
          "  atrium compare [SCENE] [--size WxH] [--lights N] [--shading S]\n"
          "                                           every mode at every view against forward (PSNR,\n"
          "                                           largest difference); exit 1 under 40 dB\n"
+         "  atrium bench [SCENE] [--modes all|LIST] [--lights LIST] [--views all|LIST] [--size WxH]\n"
+         "               [--frames N] [--warmup N] [--light-radius R] [--constant-density]\n"
+         "               [--csv FILE] [--md FILE] [--plot FILE.png]\n"
+         "                                           frame and pass times over modes, light counts\n"
+         "                                           and views (default: all modes, 10,50,110,1024\n"
+         "                                           lights, all views, 320x180, 30 frames, 5 warm-up)\n"
          "  atrium --help                            show this text\n"
          "\n"
          "SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json,\n"
@@ -95,6 +172,10 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   } else if (i < args.size() && args[i] == "info") {
     options.command = Command::Info;
     ++i;
+  } else if (i < args.size() && args[i] == "bench") {
+    options.command = Command::Bench;
+    options.size = {320, 180};
+    ++i;
   } else if (i < args.size() && args[i] == "compare") {
     options.command = Command::Compare;
     options.size = {320, 180};
@@ -112,6 +193,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
       if (i + 1 >= args.size()) throw UsageError(std::string(arg) + " needs a value");
       return args[++i];
     };
+    if (options.command == Command::Bench && parse_bench_option(arg, value, options)) continue;
     if (arg == "--mode") {
       options.mode = std::string(value());
     } else if (arg == "--debug-view") {
@@ -226,12 +308,55 @@ int run_compare(const CliOptions& options) {
   return all_close ? kExitOk : kExitRuntimeFailure;
 }
 
+void write_text(const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  out << text;
+  if (!out) throw InputError(path + ": cannot write the file");
+}
+
+// tools/plot_bench.py beside the sources, run with Debian's python3 (which has matplotlib).
+void plot(const std::string& csv, const std::string& png) {
+  const char* tools = std::getenv("ATRIUM_TOOLS_DIR");
+  const std::string script = std::string(tools && *tools ? tools : ATRIUM_TOOLS_DIR) + "/plot_bench.py";
+  const std::string python = std::filesystem::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  auto quote = [](const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+  };
+  const int status = std::system((python + " " + quote(script) + " " + quote(csv) + " " + quote(png)).c_str());
+  if (status != 0) throw std::runtime_error("plotting with " + script + " failed (is python3-matplotlib installed?)");
+}
+
+int run_bench_command(const CliOptions& options) {
+  const auto context = gfx::HeadlessContext::create();
+  BenchOptions bench = options.bench;
+  bench.scene = options.scene;
+  bench.size = options.size;
+  bench.shading = options.shading;
+  for (const std::string& mode : bench.modes) require_known_mode(mode);
+  ProgressBar bar("bench");
+  const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });
+  const std::string md = bench_markdown(result);
+  std::fputs(md.c_str(), stdout);
+  if (!options.md.empty()) write_text(options.md, md);
+  std::string csv_path = options.csv;
+  if (!options.plot.empty() && csv_path.empty()) csv_path = options.plot + ".csv";
+  if (!csv_path.empty()) write_text(csv_path, bench_csv(result));
+  if (!options.plot.empty()) {
+    plot(csv_path, options.plot);
+    if (options.csv.empty()) std::filesystem::remove(csv_path);
+  }
+  return kExitOk;
+}
+
 int run_command(const CliOptions& options) {
   switch (options.command) {
     case Command::Help: std::fputs(help_text().c_str(), stdout); return kExitOk;
     case Command::Render: return run_render(options);
     case Command::Info: return run_info(options);
     case Command::Compare: return run_compare(options);
+    case Command::Bench: return run_bench_command(options);
     case Command::Window: return run_window(options);
   }
   return kExitUsage;

@@ -10,6 +10,8 @@
 
 #include <glm/glm.hpp>
 
+#include "app/bench.hpp"
+
 namespace atrium {
 
 inline constexpr int kExitOk = 0;
@@ -25,7 +27,7 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Command { Window, Render, Info, Compare, Help };
+enum class Command { Window, Render, Info, Compare, Bench, Help };
 
 struct CliOptions {
   Command command = Command::Window;
@@ -39,6 +41,8 @@ struct CliOptions {
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
   bool json = false;                    // info: print JSON
+  BenchOptions bench;                   // bench: the sweep
+  std::string csv, md, plot;            // bench: output files
 };
 
 // Throws UsageError with a one-line message naming the bad argument.

@@ -96,6 +96,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& assets = registry.resource<assets::AssetManager>();
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
+  timer_.begin_frame();
   const lighting::DrawList draws = lighting::build_draw_list(registry, assets, gpu, view.view);
   stats_ = {draws.opaque.size() + draws.blended.size(), draws.triangles, lights.count};
 
@@ -116,7 +117,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
 
-  const lighting::FrameContext frame{draws, gpu, lights.staging, scene.background};
+  const lighting::FrameContext frame{draws, gpu, lights.staging, scene.background, timer_};
   if (debug_view >= 0 && !debug_views_) {
     debug_views_ = std::make_unique<lighting::DebugViews>(gpu_);
     debug_views_->resize(targets());
@@ -125,22 +126,28 @@ void MeshRenderer::render(ecs::Registry& registry) {
   technique_->execute(frame, targets());
 
   // Tone map into the 8-bit output.
-  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
-  glViewport(0, 0, size_.x, size_.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  glDisable(GL_STENCIL_TEST);
-  glDisable(GL_CULL_FACE);
-  tonemap_.use();
-  glBindTextureUnit(0, hdr_color_.id());
-  glBindVertexArray(empty_vertex_array_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  {
+    const auto pass = timer_.scope("tonemap");
+    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
+    glViewport(0, 0, size_.x, size_.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glDisable(GL_CULL_FACE);
+    tonemap_.use();
+    glBindTextureUnit(0, hdr_color_.id());
+    glBindVertexArray(empty_vertex_array_.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+  }
 
+  // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
     debug_views_->draw(debug_view, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
     if (counting) stats_.light_evaluations_per_pixel = debug_views_->average_light_evaluations();
   }
+
+  timer_.end_frame();
 
   if (settings.present_to_window) {
     glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,

@@ -13,6 +13,7 @@
 #include "assets/image.hpp"
 #include "ecs/scheduler.hpp"
 #include "gfx/gl_object.hpp"
+#include "gfx/pass_timer.hpp"
 #include "gfx/shader_program.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -46,6 +47,8 @@ class MeshRenderer {
   [[nodiscard]] const std::string& mode() const { return mode_; }
   [[nodiscard]] const FrameStats& stats() const { return stats_; }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
+  // Per-pass times of the latest frame whose timings are complete.
+  [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
 
  private:
   void resize(glm::ivec2 size);
@@ -68,6 +71,7 @@ class MeshRenderer {
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram& tonemap_;
   FrameStats stats_;
+  gfx::PassTimer timer_;
 };
 
 // Adds the MeshRenderer to the Render phase. The world must hold the resources

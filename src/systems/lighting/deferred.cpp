@@ -13,14 +13,16 @@ void DeferredTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(ta
 
 void DeferredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
   gbuffer_.draw_geometry(geometry_, frame);
-
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-  glViewport(0, 0, targets.size.x, targets.size.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  lighting_.use();
-  gbuffer_.bind_textures();
-  fullscreen_.draw();
+  {
+    const auto pass = frame.timer.scope("lighting");
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glViewport(0, 0, targets.size.x, targets.size.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    lighting_.use();
+    gbuffer_.bind_textures();
+    fullscreen_.draw();
+  }
 
   draw_transparent(forward_, frame, targets);
 }

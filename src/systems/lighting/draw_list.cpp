@@ -89,6 +89,7 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
 
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {
   if (frame.draws.blended.empty()) return;
+  const auto pass = frame.timer.scope("transparency");
   glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   glEnable(GL_DEPTH_TEST);

@@ -8,6 +8,8 @@ ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu)
 void ForwardTechnique::resize(const FrameTargets& /*targets*/) {}
 
 void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+  {
+  const auto pass = frame.timer.scope("shading");
   glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
@@ -20,6 +22,7 @@ void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& ta
   glDisable(GL_BLEND);
   program_.use();
   draw_items(program_, frame.gpu, frame.draws.opaque);
+  }
 
   draw_transparent(program_, frame, targets);
 }

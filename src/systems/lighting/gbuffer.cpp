@@ -24,6 +24,7 @@ void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
 }
 
 void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame) {
+  const auto pass = frame.timer.scope("geometry");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, size_.x, size_.y);
   const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};

@@ -87,23 +87,30 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   gbuffer_.bind_textures();
-  unlit_.use();
-  fullscreen_.draw();
-
+  {
+    const auto pass = frame.timer.scope("base");
+    unlit_.use();
+    fullscreen_.draw();
+  }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   const bool any_directional = std::any_of(frame.lights.begin(), frame.lights.end(), [](const GpuLight& light) {
     return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
   });
   if (any_directional) {
+    const auto pass = frame.timer.scope("directional");
     directional_.use();
     fullscreen_.draw();
   }
-  glEnable(GL_DEPTH_CLAMP);
-  glBindVertexArray(sphere_.id());
-  if (instanced_) draw_volumes_instanced(frame);
-  else draw_volumes_with_stencil(frame);
-  glBindVertexArray(0);
+  {
+    // Stencil and lighting alternate per light, so they are timed together.
+    const auto pass = frame.timer.scope(instanced_ ? "volumes" : "volumes (stencil + lighting)");
+    glEnable(GL_DEPTH_CLAMP);
+    glBindVertexArray(sphere_.id());
+    if (instanced_) draw_volumes_instanced(frame);
+    else draw_volumes_with_stencil(frame);
+    glBindVertexArray(0);
+  }
   glDisable(GL_DEPTH_CLAMP);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);

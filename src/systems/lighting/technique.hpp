@@ -14,6 +14,7 @@
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl.hpp"
+#include "gfx/pass_timer.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/draw_list.hpp"
 
@@ -26,6 +27,7 @@ struct FrameContext {
   const assets::GpuAssets& gpu;
   std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};
+  gfx::PassTimer& timer;             // wrap each pass: auto pass = frame.timer.scope("lighting");
 };
 
 // The frame's named targets, owned by the MeshRenderer.

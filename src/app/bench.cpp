@@ -1,0 +1,217 @@
+#include "app/bench.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <sstream>
+
+#include "app/world.hpp"
+#include "components/frame_resources.hpp"
+#include "components/light.hpp"
+#include "gfx/gl.hpp"
+#include "systems/lighting/light_falloff.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium {
+namespace {
+
+double percentile(std::vector<double> values, double p) {
+  if (values.empty()) return 0.0;
+  std::sort(values.begin(), values.end());
+  const double position = p * static_cast<double>(values.size() - 1);
+  const auto low = static_cast<std::size_t>(std::floor(position));
+  const auto high = std::min(low + 1, values.size() - 1);
+  return values[low] + (values[high] - values[low]) * (position - static_cast<double>(low));
+}
+
+// --light-radius and --constant-density: every light gets the same radius, and
+// an intensity whose derived radius is that radius, so brightness stays sane.
+void apply_radius(World& world, const BenchOptions& options, std::uint32_t lights) {
+  if (!options.light_radius && !options.constant_density) return;
+  float radius = options.light_radius.value_or(4.0f);
+  if (options.constant_density) radius *= std::cbrt(1024.0f / static_cast<float>(std::max(lights, 1u)));
+  ecs::Registry& registry = world.registry();
+  registry.view<LightColor>().each([&](ecs::Entity e, LightColor& light) {
+    if (registry.has<DirectionalLight>(e)) return;
+    const float brightest = std::max({light.color.r, light.color.g, light.color.b, 1e-6f});
+    light.intensity = radius * radius * lighting::kRadiusThreshold / brightest;
+    registry.add<LightRadius>(e, radius);
+  });
+}
+
+// Light evaluations per pixel that `mode` performs, from the heatmap counters.
+double count_evaluations(World& world, const std::string& mode) {
+  auto& settings = world.registry().resource<RendererSettings>();
+  const std::string previous = world.mode();
+  world.set_mode(mode);
+  settings.debug_view = "heatmap";
+  world.frame(0.0);
+  const double count = world.renderer().stats().light_evaluations_per_pixel;
+  settings.debug_view.clear();
+  world.set_mode(previous);
+  return count;
+}
+
+}  // namespace
+
+BenchResult run_bench(const BenchOptions& options, const std::function<void(std::size_t, std::size_t)>& progress) {
+  BenchResult result;
+  result.options = options;
+  std::vector<std::string> modes = options.modes;
+  if (modes.empty()) {
+    for (const auto& info : lighting::technique_table()) modes.emplace_back(info.name);
+  }
+  const std::size_t total = options.light_counts.size() * modes.size() * std::max<std::size_t>(options.views.size(), 1);
+  std::size_t done = 0;
+  for (const std::uint32_t lights : options.light_counts) {
+    World world({options.scene, lights, "forward", 1, options.size, options.shading});
+    apply_radius(world, options, lights);
+    std::vector<int> views = options.views;
+    if (views.empty()) {
+      for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
+    }
+    for (const int view : views) {
+      world.set_view(view);
+      // deferred-radius evaluates exactly the lights whose radius covers a pixel.
+      const double reaching = count_evaluations(world, "deferred-radius");
+      for (const std::string& mode : modes) {
+        world.set_mode(mode);
+        std::vector<double> frame_ms;
+        std::map<std::string, std::vector<double>> pass_ms;
+        std::vector<std::string> pass_order;
+        for (int f = 0; f < options.warmup + options.frames; ++f) {
+          glFinish();
+          const auto start = std::chrono::steady_clock::now();
+          world.frame(1.0 / 60.0);
+          glFinish();
+          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+          if (f < options.warmup) continue;
+          frame_ms.push_back(ms);
+          for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
+            if (!pass_ms.contains(pass.name)) pass_order.push_back(pass.name);
+            pass_ms[pass.name].push_back(pass.milliseconds);
+          }
+        }
+        BenchRow row;
+        row.mode = mode;
+        row.lights = lights;
+        row.view = view;
+        row.view_name = world.scene().views[static_cast<std::size_t>(view - 1)].name;
+        row.median_ms = percentile(frame_ms, 0.5);
+        row.p5_ms = percentile(frame_ms, 0.05);
+        row.p95_ms = percentile(frame_ms, 0.95);
+        for (const std::string& name : pass_order) row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5)});
+        row.evaluated_per_pixel = count_evaluations(world, mode);
+        row.reaching_per_pixel = reaching;
+        result.rows.push_back(row);
+        if (progress) progress(++done, total);
+      }
+    }
+    if (result.renderer.empty()) {
+      const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+      result.renderer = renderer ? renderer : "?";
+      result.timing_method = world.renderer().timer().method_name();
+    }
+  }
+  return result;
+}
+
+namespace {
+
+// Median over views of each (lights, mode) frame time.
+std::map<std::pair<std::uint32_t, std::string>, double> median_over_views(const BenchResult& result) {
+  std::map<std::pair<std::uint32_t, std::string>, std::vector<double>> times;
+  for (const BenchRow& row : result.rows) times[{row.lights, row.mode}].push_back(row.median_ms);
+  std::map<std::pair<std::uint32_t, std::string>, double> medians;
+  for (const auto& [key, values] : times) medians[key] = percentile(values, 0.5);
+  return medians;
+}
+
+std::vector<std::string> modes_in_order(const BenchResult& result) {
+  std::vector<std::string> modes;
+  for (const BenchRow& row : result.rows) {
+    if (std::find(modes.begin(), modes.end(), row.mode) == modes.end()) modes.push_back(row.mode);
+  }
+  return modes;
+}
+
+std::string fixed(double value, int decimals) {
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(decimals);
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+std::string bench_markdown(const BenchResult& result) {
+  const auto& o = result.options;
+  const auto medians = median_over_views(result);
+  const auto modes = modes_in_order(result);
+  std::ostringstream md;
+  md << "Scene `" << o.scene << "`, " << o.size.x << "x" << o.size.y << ", " << o.frames << " frames after " << o.warmup
+     << " warm-up, shading " << o.shading;
+  if (o.light_radius) md << ", light radius " << fixed(*o.light_radius, 2) << " m";
+  if (o.constant_density) md << ", constant density";
+  md << ".\nRenderer: " << result.renderer << "; pass timing: " << result.timing_method
+     << ". Frames per second from the median frame time (median over views).\n\n";
+  md << "| lights |";
+  for (const auto& mode : modes) md << " " << mode << " |";
+  md << "\n|---:|";
+  for (std::size_t i = 0; i < modes.size(); ++i) md << "---:|";
+  md << "\n";
+  std::vector<std::uint32_t> counts;
+  for (const BenchRow& row : result.rows) {
+    if (std::find(counts.begin(), counts.end(), row.lights) == counts.end()) counts.push_back(row.lights);
+  }
+  for (const std::uint32_t lights : counts) {
+    md << "| " << lights << " |";
+    for (const auto& mode : modes) md << " " << fixed(1000.0 / medians.at({lights, mode}), 1) << " fps |";
+    md << "\n";
+  }
+  if (std::find(modes.begin(), modes.end(), "forward") != modes.end()) {
+    md << "\nSpeed-up over forward (frame time of forward / frame time of the mode):\n\n| lights |";
+    for (const auto& mode : modes) md << " " << mode << " |";
+    md << "\n|---:|";
+    for (std::size_t i = 0; i < modes.size(); ++i) md << "---:|";
+    md << "\n";
+    for (const std::uint32_t lights : counts) {
+      md << "| " << lights << " |";
+      for (const auto& mode : modes) md << " " << fixed(medians.at({lights, "forward"}) / medians.at({lights, mode}), 2) << "x |";
+      md << "\n";
+    }
+  }
+  md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image):\n\n"
+        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency |\n"
+        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|\n";
+  for (const BenchRow& row : result.rows) {
+    std::string passes;
+    for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
+    md << "| " << row.mode << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
+       << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
+       << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
+       << fixed(row.efficiency(), 3) << " |\n";
+  }
+  return md.str();
+}
+
+std::string bench_csv(const BenchResult& result) {
+  std::ostringstream csv;
+  csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer\n";
+  for (const BenchRow& row : result.rows) {
+    std::string passes;
+    for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
+    csv << row.mode << "," << row.lights << "," << row.view << "," << row.view_name << "," << result.options.size.x << ","
+        << result.options.size.y << "," << result.options.frames << "," << fixed(row.median_ms, 4) << "," << fixed(row.p5_ms, 4)
+        << "," << fixed(row.p95_ms, 4) << "," << fixed(row.fps(), 3) << "," << fixed(row.evaluated_per_pixel, 4) << ","
+        << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
+        << result.timing_method << "\",\"" << result.renderer << "\"\n";
+  }
+  return csv.str();
+}
+
+}  // namespace atrium

@@ -1,0 +1,59 @@
+// `atrium bench`: frame times and per-pass times over modes, light counts and
+// views, with the light evaluations each mode performs per pixel against the
+// ones that actually reach the pixel, written as a reference-shaped markdown
+// table, CSV and a plot.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfx/pass_timer.hpp"
+
+namespace atrium {
+
+struct BenchOptions {
+  std::string scene = "atrium";
+  std::vector<std::string> modes;            // empty: every mode in the table
+  std::vector<std::uint32_t> light_counts{10, 50, 110, 1024};
+  std::vector<int> views;                    // empty: every stored view
+  glm::ivec2 size{320, 180};
+  int frames = 30;
+  int warmup = 5;
+  std::optional<float> light_radius;         // every light gets this radius
+  bool constant_density = false;             // radii shrink as cbrt(1024 / lights)
+  std::string shading = "pbr";
+};
+
+struct BenchRow {
+  std::string mode;
+  std::uint32_t lights = 0;
+  int view = 1;
+  std::string view_name;
+  double median_ms = 0, p5_ms = 0, p95_ms = 0;
+  std::vector<gfx::PassTime> pass_medians;
+  double evaluated_per_pixel = 0;  // light evaluations the mode performed
+  double reaching_per_pixel = 0;   // lights whose radius covers the pixel
+  [[nodiscard]] double fps() const { return median_ms > 0 ? 1000.0 / median_ms : 0.0; }
+  // 1.0: the mode evaluates only lights that reach; lower: wasted evaluations.
+  [[nodiscard]] double efficiency() const { return evaluated_per_pixel > 0 ? reaching_per_pixel / evaluated_per_pixel : 1.0; }
+};
+
+struct BenchResult {
+  std::vector<BenchRow> rows;
+  std::string renderer;
+  std::string timing_method;
+  BenchOptions options;
+};
+
+// Needs a current GL context. Reports progress to `progress` (may be empty).
+[[nodiscard]] BenchResult run_bench(const BenchOptions& options,
+                                    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+
+[[nodiscard]] std::string bench_markdown(const BenchResult& result);
+[[nodiscard]] std::string bench_csv(const BenchResult& result);
+
+}  // namespace atrium

@@ -1,0 +1,100 @@
+#include "gfx/pass_timer.hpp"
+
+#include <string_view>
+
+namespace atrium::gfx {
+namespace {
+TimingMethod detect() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string_view name = renderer ? renderer : "";
+  const bool software = name.find("llvmpipe") != std::string_view::npos || name.find("softpipe") != std::string_view::npos ||
+                        name.find("lavapipe") != std::string_view::npos;
+  return software ? TimingMethod::CpuFinish : TimingMethod::GpuQueries;
+}
+}  // namespace
+
+PassTimer::PassTimer() : PassTimer(detect()) {}
+PassTimer::PassTimer(TimingMethod method) : method_(method) {}
+
+const char* PassTimer::method_name() const {
+  return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer)";
+}
+
+double PassTimer::latest_total() const {
+  double total = 0.0;
+  for (const PassTime& pass : latest_) total += pass.milliseconds;
+  return total;
+}
+
+void PassTimer::begin_frame() {
+  if (method_ == TimingMethod::CpuFinish) {
+    current_.clear();
+    return;
+  }
+  collect();
+  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  if (frame.pending) {
+    // Still not available after kFramesInFlight frames: wait rather than lose it.
+    for (std::size_t i = 0; i < frame.used; ++i) {
+      GLuint64 ignored = 0;
+      glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &ignored);
+    }
+    collect();
+  }
+  frame.used = 0;
+}
+
+void PassTimer::end_frame() {
+  if (method_ == TimingMethod::CpuFinish) {
+    latest_ = current_;
+    return;
+  }
+  frames_[frame_ % kFramesInFlight].pending = frames_[frame_ % kFramesInFlight].used > 0;
+  ++frame_;
+}
+
+void PassTimer::begin_pass(const std::string& name) {
+  if (method_ == TimingMethod::CpuFinish) {
+    glFinish();  // the previous work must not be charged to this pass
+    current_.push_back({name, 0.0});
+    pass_start_ = std::chrono::steady_clock::now();
+    return;
+  }
+  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  if (frame.used == frame.passes.size()) frame.passes.push_back({name, create_query(GL_TIME_ELAPSED)});
+  QueryPass& pass = frame.passes[frame.used++];
+  pass.name = name;
+  glBeginQuery(GL_TIME_ELAPSED, pass.query.id());
+}
+
+void PassTimer::end_pass() {
+  if (method_ == TimingMethod::CpuFinish) {
+    glFinish();
+    current_.back().milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass_start_).count();
+    return;
+  }
+  glEndQuery(GL_TIME_ELAPSED);
+}
+
+// Reads back the oldest pending frame whose queries are all available.
+void PassTimer::collect() {
+  for (std::size_t age = kFramesInFlight; age > 0; --age) {
+    if (frame_ < age) continue;
+    FrameQueries& frame = frames_[(frame_ - age) % kFramesInFlight];
+    if (!frame.pending) continue;
+    GLint available = GL_FALSE;
+    glGetQueryObjectiv(frame.passes[frame.used - 1].query.id(), GL_QUERY_RESULT_AVAILABLE, &available);
+    if (!available) return;
+    std::vector<PassTime> times;
+    for (std::size_t i = 0; i < frame.used; ++i) {
+      GLuint64 nanoseconds = 0;
+      glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &nanoseconds);
+      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6});
+    }
+    latest_ = std::move(times);
+    frame.pending = false;
+  }
+}
+
+}  // namespace atrium::gfx

@@ -1,0 +1,79 @@
+// Per-pass timings. On real GPUs each pass is bracketed by GL_TIME_ELAPSED
+// queries that are read back a few frames later, so timing never stalls the
+// pipeline. Mesa's software rasterisers return wrong query values (measured
+// 30-300x too small on llvmpipe), so there each pass ends with glFinish and is
+// timed with a steady clock; method() says which is in use.
+#pragma once
+
+#include <array>
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "gfx/gl_object.hpp"
+
+namespace atrium::gfx {
+
+enum class TimingMethod { GpuQueries, CpuFinish };
+
+struct PassTime {
+  std::string name;
+  double milliseconds = 0.0;
+};
+
+class PassTimer {
+ public:
+  // Chooses the method from the current context's renderer string.
+  PassTimer();
+  explicit PassTimer(TimingMethod method);
+
+  [[nodiscard]] TimingMethod method() const { return method_; }
+  [[nodiscard]] const char* method_name() const;
+
+  void begin_frame();
+  void end_frame();
+  void begin_pass(const std::string& name);
+  void end_pass();
+
+  // The most recent frame whose timings are complete (with queries, a few
+  // frames old), in pass order; empty until one is.
+  [[nodiscard]] const std::vector<PassTime>& latest() const { return latest_; }
+  // That frame's total (sum of its passes).
+  [[nodiscard]] double latest_total() const;
+
+  // RAII helper: times a pass for the enclosing scope.
+  class Scope {
+   public:
+    Scope(PassTimer& timer, const std::string& name) : timer_(timer) { timer_.begin_pass(name); }
+    ~Scope() { timer_.end_pass(); }
+    Scope(const Scope&) = delete;
+    Scope& operator=(const Scope&) = delete;
+
+   private:
+    PassTimer& timer_;
+  };
+  [[nodiscard]] Scope scope(const std::string& name) { return Scope(*this, name); }
+
+ private:
+  static constexpr std::size_t kFramesInFlight = 4;
+  struct QueryPass {
+    std::string name;
+    Query query;
+  };
+  struct FrameQueries {
+    std::vector<QueryPass> passes;
+    std::size_t used = 0;
+    bool pending = false;
+  };
+
+  void collect();
+
+  TimingMethod method_;
+  std::array<FrameQueries, kFramesInFlight> frames_;
+  std::size_t frame_ = 0;
+  std::vector<PassTime> current_;  // CpuFinish: the frame being timed
+  std::chrono::steady_clock::time_point pass_start_;
+  std::vector<PassTime> latest_;
+};
+
+}  // namespace atrium::gfx

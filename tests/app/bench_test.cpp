@@ -1,0 +1,118 @@
+// atrium bench: a tiny sweep through the real command writes well-formed CSV,
+// markdown and PNG; and the efficiency counters are exact on a hand-built
+// scene where the answer is known.
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "app/bench.hpp"
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "assets/mesh_builder.hpp"
+#include "components/frame_resources.hpp"
+#include "support/gl_test.hpp"
+
+namespace atrium {
+namespace {
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+// Splits one CSV line, honouring double quotes.
+std::vector<std::string> csv_fields(const std::string& line) {
+  std::vector<std::string> fields(1);
+  bool quoted = false;
+  for (char c : line) {
+    if (c == '"') quoted = !quoted;
+    else if (c == ',' && !quoted) fields.emplace_back();
+    else fields.back() += c;
+  }
+  return fields;
+}
+
+TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string command = std::string(ATRIUM_BINARY) +
+                              " bench --modes forward,deferred-radius --lights 3,6 --views 1,2 --size 32x18 --frames 2 --warmup 1"
+                              " --csv " + (folder / "b.csv").string() + " --md " + (folder / "b.md").string() +
+                              " --plot " + (folder / "b.png").string() + " > " + (folder / "stdout.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+
+  std::istringstream csv(read_text(folder / "b.csv"));
+  std::string line;
+  std::getline(csv, line);
+  const std::vector<std::string> header = csv_fields(line);
+  ASSERT_EQ(header.size(), 17u);
+  EXPECT_EQ(header[0], "mode");
+  EXPECT_EQ(header[7], "median_ms");
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = csv_fields(line);
+    ASSERT_EQ(f.size(), header.size()) << line;
+    EXPECT_TRUE(f[0] == "forward" || f[0] == "deferred-radius");
+    EXPECT_GT(std::stod(f[7]), 0.0);
+    EXPECT_LE(std::stod(f[8]), std::stod(f[7])) << "p5 <= median";
+    EXPECT_GE(std::stod(f[9]), std::stod(f[7])) << "p95 >= median";
+    EXPECT_NE(f[14].find("tonemap="), std::string::npos) << "per-pass medians";
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2 * 2 * 2);
+
+  const std::string md = read_text(folder / "b.md");
+  EXPECT_NE(md.find("| lights | forward | deferred-radius |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| 3 |"), std::string::npos);
+  EXPECT_NE(md.find("| 6 |"), std::string::npos);
+  EXPECT_NE(md.find("Speed-up over forward"), std::string::npos);
+  EXPECT_EQ(read_text(folder / "stdout.txt"), md) << "the table printed is the one written";
+
+  const assets::Image plot = assets::read_png(folder / "b.png");
+  EXPECT_GT(plot.width, 300);
+  EXPECT_GT(plot.height, 200);
+  fs::remove_all(folder);
+}
+
+using EfficiencyCounters = testing::GlTest;
+
+// A plane that fills the whole view from above, two lights whose radius covers
+// all of it and four whose radius reaches none of it.
+TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
+  assets::AssetManager manager;
+  assets::MeshAsset plane;
+  assets::Material material;
+  material.metallic_factor = 0.0f;
+  plane.materials.push_back(material);
+  plane.meshes.push_back({"plane", {assets::shapes::grid(glm::vec3(-50, 0, 50), glm::vec3(100, 0, 0), glm::vec3(0, 0, -100), 4, 4, 1.0f)}});
+  assets::SceneDescription scene;
+  scene.instances.push_back({manager.add_mesh_asset(std::move(plane)), 0, Transform{}});
+  scene.lights.push_back({glm::vec3(0, 1, 0), glm::vec3(1.0f), 1.0f, 100.0f});
+  scene.lights.push_back({glm::vec3(2, 2, 0), glm::vec3(1.0f), 1.0f, 100.0f});
+  for (int i = 0; i < 4; ++i) scene.lights.push_back({glm::vec3(static_cast<float>(i), 60.0f, 0.0f), glm::vec3(1.0f), 1.0f, 5.0f});
+  scene.views.push_back({"down", glm::vec3(0, 10, 0), 0.0f, -89.9f});
+  World world(std::move(manager), std::move(scene), {"", std::nullopt, "forward", 1, {64, 36}});
+  auto& settings = world.registry().resource<RendererSettings>();
+  settings.debug_view = "heatmap";
+  auto evaluated = [&](const char* mode) {
+    world.set_mode(mode);
+    world.frame(0.0);
+    return world.renderer().stats().light_evaluations_per_pixel;
+  };
+  EXPECT_DOUBLE_EQ(evaluated("forward"), 6.0);
+  EXPECT_DOUBLE_EQ(evaluated("deferred"), 6.0);
+  EXPECT_DOUBLE_EQ(evaluated("deferred-radius"), 2.0);
+  EXPECT_DOUBLE_EQ(evaluated("light-volumes"), 2.0);
+  EXPECT_DOUBLE_EQ(evaluated("light-volumes-instanced"), 2.0);
+  BenchRow row;
+  row.evaluated_per_pixel = 6.0;
+  row.reaching_per_pixel = 2.0;
+  EXPECT_DOUBLE_EQ(row.efficiency(), 1.0 / 3.0);
+}
+
+}  // namespace
+}  // namespace atrium

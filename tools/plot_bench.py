@@ -1,0 +1,50 @@
+#!/usr/bin/env python3
+"""Plots an `atrium bench` CSV: frame time against light count on log-log axes,
+one line per mode (the median over views of each mode's median frame time).
+
+usage: tools/plot_bench.py BENCH.csv OUT.png [TITLE]
+"""
+import csv
+import statistics
+import sys
+from collections import defaultdict
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+
+def main() -> int:
+    if len(sys.argv) < 3:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
+    source, target = sys.argv[1], sys.argv[2]
+    times = defaultdict(lambda: defaultdict(list))
+    renderer, size = "", ""
+    with open(source, newline="") as f:
+        for row in csv.DictReader(f):
+            times[row["mode"]][int(row["lights"])].append(float(row["median_ms"]))
+            renderer, size = row["renderer"], f'{row["width"]}x{row["height"]}'
+    if not times:
+        print(f"plot_bench: {source} has no rows", file=sys.stderr)
+        return 1
+    figure, axes = plt.subplots(figsize=(8, 5), dpi=100)
+    for mode, by_lights in times.items():
+        counts = sorted(by_lights)
+        axes.plot(counts, [statistics.median(by_lights[c]) for c in counts], marker="o", label=mode)
+    axes.set_xscale("log")
+    axes.set_yscale("log")
+    axes.set_xlabel("lights")
+    axes.set_ylabel("frame time (ms, median)")
+    title = sys.argv[3] if len(sys.argv) > 3 else f"Atrium, {size}, {renderer}"
+    axes.set_title(title, fontsize=10)
+    axes.grid(True, which="both", alpha=0.3)
+    axes.legend(fontsize=8)
+    figure.tight_layout()
+    figure.savefig(target)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
