@@ -19,6 +19,10 @@ out vec4 v_tangent;
 out vec2 v_uv0;
 out vec2 v_uv1;
 
+// Every pass that draws the same mesh computes the same depth: the depth
+// pre-pass of forward+ and its shading pass compare with LEQUAL.
+invariant gl_Position;
+
 void main() {
   vec4 world = u_model * vec4(a_position, 1.0);
   v_position = world.xyz;

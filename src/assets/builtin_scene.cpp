@@ -92,7 +92,7 @@ Mesh floor_mesh() {
   // Upper gallery floors, paved like the court.
   for (float side : {-1.0f, 1.0f}) {
     const float z0 = side > 0 ? kHalfWidth : -kColonnadeZ + 0.3f;
-    Primitive gallery = shapes::grid(glm::vec3(-kHalfLength, kStorey + 0.001f, z0), glm::vec3(2.0f * kHalfLength, 0, 0),
+    Primitive gallery = shapes::grid(glm::vec3(-kHalfLength, kStorey + 0.02f, z0), glm::vec3(2.0f * kHalfLength, 0, 0),
                                      glm::vec3(0, 0, -(kHalfWidth - kColonnadeZ + 0.3f)), 68, 8, 0.25f);
     shapes::append(floor, gallery, glm::mat4(1.0f));
   }

@@ -5,6 +5,8 @@
 
 #include <glm/glm.hpp>
 
+#include "systems/lighting/technique_options.hpp"
+
 namespace atrium {
 
 // Size of the image the renderer produces, in pixels.
@@ -37,6 +39,7 @@ struct RendererSettings {
   std::string mode = "forward";
   std::string shading = "pbr";  // pbr, blinn-phong or phong
   std::string debug_view;       // empty, or a name from systems/lighting/debug_views.hpp
+  lighting::TechniqueOptions technique_options;
   bool present_to_window = false;  // blit the final image to the default framebuffer
 };
 

@@ -65,7 +65,7 @@ void MeshRenderer::select_technique(const std::string& mode) {
   const lighting::TechniqueInfo* info = lighting::find_technique(mode);
   if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
   technique_.reset();  // release the old technique's targets before the new one allocates
-  technique_ = info->create(gpu_);
+  technique_ = info->create(gpu_, technique_options_);
   technique_->resize(targets());
   mode_ = mode;
 }
@@ -87,6 +87,10 @@ void MeshRenderer::render(ecs::Registry& registry) {
     shading_ = settings.shading;
     counting_ = counting;
     technique_.reset();  // its programs were compiled with the old globals
+  }
+  if (settings.technique_options != technique_options_) {
+    technique_options_ = settings.technique_options;
+    technique_.reset();
   }
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
 
@@ -117,7 +121,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
 
-  const lighting::FrameContext frame{draws, gpu, lights.staging, scene.background, timer_};
+  const lighting::FrameContext frame{draws,      gpu,       lights.staging,  scene.background,
+                                     timer_,     view.view, view.projection, view.near_plane,
+                                     view.far_plane};
   if (debug_view >= 0 && !debug_views_) {
     debug_views_ = std::make_unique<lighting::DebugViews>(gpu_);
     debug_views_->resize(targets());

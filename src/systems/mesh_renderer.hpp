@@ -58,6 +58,7 @@ class MeshRenderer {
   glm::ivec2 size_{0};
   std::string mode_;
   std::string shading_;
+  lighting::TechniqueOptions technique_options_;
   bool counting_ = false;
   std::unique_ptr<lighting::DebugViews> debug_views_;
   std::unique_ptr<lighting::LightingTechnique> technique_;

@@ -15,6 +15,7 @@
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl.hpp"
 #include "gfx/pass_timer.hpp"
+#include "systems/lighting/technique_options.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/draw_list.hpp"
 
@@ -28,6 +29,10 @@ struct FrameContext {
   std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};
   gfx::PassTimer& timer;             // wrap each pass: auto pass = frame.timer.scope("lighting");
+  glm::mat4 view{1.0f};
+  glm::mat4 projection{1.0f};
+  float near_plane = 0.05f;
+  float far_plane = 200.0f;
 };
 
 // The frame's named targets, owned by the MeshRenderer.
@@ -53,7 +58,7 @@ struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
   // Makes the technique; it takes its shader programs from gpu.shaders().
-  std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu);
+  std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu, const TechniqueOptions& options);
 };
 
 [[nodiscard]] std::span<const TechniqueInfo> technique_table();

@@ -1,4 +1,5 @@
 // The technique table: one row per lighting mode, in the order `t` cycles them.
+#include "systems/lighting/clustered.hpp"
 #include "systems/lighting/deferred.hpp"
 #include "systems/lighting/forward.hpp"
 #include "systems/lighting/light_volumes.hpp"
@@ -8,21 +9,29 @@ namespace atrium::lighting {
 namespace {
 
 template <typename T>
-std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu) {
+std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueOptions&) {
   return std::make_unique<T>(gpu);
 }
 
 constexpr TechniqueInfo kTechniques[] = {
     {"forward", "one geometry pass; every fragment loops over every light (the baseline)", &make<ForwardTechnique>},
-    {"deferred", "G-buffer, then one full-screen pass over every light", [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> {
+    {"deferred", "G-buffer, then one full-screen pass over every light", [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> {
        return std::make_unique<DeferredTechnique>(gpu, false);
      }},
     {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel",
-     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
+     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
     {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius",
-     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, false); }},
+     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, false); }},
+    {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's",
+     [](assets::GpuAssets& gpu, const TechniqueOptions& options) -> std::unique_ptr<LightingTechnique> {
+       return std::make_unique<ClusteredTechnique>(gpu, options, false);
+     }},
+    {"clustered-deferred", "G-buffer, lights assigned to a 3D cluster grid, each pixel shades its cluster's",
+     [](assets::GpuAssets& gpu, const TechniqueOptions& options) -> std::unique_ptr<LightingTechnique> {
+       return std::make_unique<ClusteredTechnique>(gpu, options, true);
+     }},
     {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil",
-     [](assets::GpuAssets& gpu) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, true); }},
+     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, true); }},
 };
 
 }  // namespace

@@ -1,0 +1,19 @@
+#version 450 core
+// Clustered forward+, depth pre-pass: writes depth only, so that the shading
+// pass shades each pixel once. Alpha-masked fragments below the cutoff are
+// discarded here too, or they would hide what is behind their holes.
+#include "common/frame.glsl"
+#include "common/material.glsl"
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv0;
+in vec2 v_uv1;
+
+void main() {
+  if (u_alpha_cutoff >= 0.0) {
+    Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, gl_FrontFacing);
+    if (s.alpha < u_alpha_cutoff) discard;
+  }
+}

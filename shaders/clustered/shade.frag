@@ -1,0 +1,24 @@
+#version 450 core
+// Clustered forward+ shading: after the depth pre-pass, each visible fragment
+// evaluates its material and only its cluster's lights.
+#include "common/frame.glsl"
+#include "common/material.glsl"
+#include "common/cluster_shading.glsl"
+
+#ifdef COUNT_LIGHTS
+layout(early_fragment_tests) in;
+#endif
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv0;
+in vec2 v_uv1;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, gl_FrontFacing);
+  if (s.alpha < u_alpha_cutoff) discard;
+  out_color = vec4(shade_cluster_lights(s, gl_FragCoord.xy), s.alpha);
+}

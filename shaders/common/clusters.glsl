@@ -1,0 +1,34 @@
+// The cluster grid shared by the clustered techniques: the view frustum cut into
+// u_grid.x * u_grid.y screen tiles and u_grid.z depth slices. Slice 0 runs from
+// the near plane to u_first_slice_far; slices 1.. are logarithmic in view depth
+// from there to the far plane, so that distant slices are not wasted and near
+// ones are not too thick. C++ twin: ClusterGrid in
+// src/systems/lighting/cluster_grid.cpp (tested against each other).
+layout(std140, binding = 1) uniform ClusterBlock {
+  uvec4 u_grid;             // xyz clusters per axis, w total
+  vec4 u_slicing;           // x first_slice_far, y log scale, z log bias, w unused
+  uvec4 u_list_info;        // x index list capacity
+};
+
+// Each cluster's range in the global light index list.
+struct ClusterRange {
+  uint offset;
+  uint count;
+};
+
+layout(std430, binding = 2) buffer ClusterRanges { ClusterRange u_cluster_ranges[]; };
+layout(std430, binding = 3) buffer ClusterIndices { uint u_cluster_indices[]; };
+
+// The slice of a positive view depth (metres in front of the camera). Depths
+// at or before the near plane fall in slice 0, at or beyond the far plane in
+// the last slice: every visible fragment has a valid cluster.
+uint cluster_slice(float view_depth) {
+  if (view_depth <= u_slicing.x) return 0u;
+  float slice = log(view_depth) * u_slicing.y + u_slicing.z;
+  return uint(clamp(slice, 1.0, float(u_grid.z - 1u)));
+}
+
+uint cluster_index(vec2 frag_coord, vec2 viewport, float view_depth) {
+  uvec2 tile = uvec2(clamp(frag_coord / viewport * vec2(u_grid.xy), vec2(0.0), vec2(u_grid.xy) - 1.0));
+  return (cluster_slice(view_depth) * u_grid.y + tile.y) * u_grid.x + tile.x;
+}

@@ -1,0 +1,137 @@
+#include "systems/lighting/cluster_grid.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace atrium::lighting {
+namespace {
+constexpr GLuint kBoundsBinding = 4, kRangesBinding = 2, kIndicesBinding = 3, kTotalBinding = 5, kActiveBinding = 6;
+}  // namespace
+
+ClusterGrid::ClusterGrid(glm::uvec3 dims)
+    : dims_(glm::max(dims, glm::uvec3(1, 1, 2))),
+      uniform_buffer_(gfx::create_buffer()),
+      bounds_(gfx::create_buffer()),
+      ranges_(gfx::create_buffer()),
+      total_(gfx::create_buffer()),
+      active_(gfx::create_buffer()) {
+  glNamedBufferStorage(uniform_buffer_.id(), sizeof(ClusterUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(bounds_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(ClusterBox)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(cluster_count() * 2 * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(total_.id(), sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  resize_list(4096);
+}
+
+void ClusterGrid::resize_list(std::uint32_t capacity) {
+  capacity_ = capacity;
+  indices_ = gfx::create_buffer();
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(capacity, 1) * sizeof(std::uint32_t)), nullptr, 0);
+  uniforms_.list_info = glm::uvec4(capacity_, 0, 0, 0);
+  glNamedBufferSubData(uniform_buffer_.id(), 0, sizeof(ClusterUniforms), &uniforms_);
+}
+
+void ClusterGrid::update(const glm::mat4& projection, float near_plane, float far_plane) {
+  if (projection == projection_ && near_plane == near_ && far_plane == far_) return;
+  projection_ = projection;
+  near_ = near_plane;
+  far_ = far_plane;
+  ++rebuilds_;
+  // The first slice ends ten near-plane distances out (or earlier for a short frustum).
+  const float first = std::min(near_plane * 10.0f, near_plane + (far_plane - near_plane) / static_cast<float>(dims_.z));
+  const float scale = static_cast<float>(dims_.z - 1) / std::log(far_plane / first);
+  uniforms_.grid = glm::uvec4(dims_, cluster_count());
+  uniforms_.slicing = glm::vec4(first, scale, 1.0f - std::log(first) * scale, 0.0f);
+  glNamedBufferSubData(uniform_buffer_.id(), 0, sizeof(ClusterUniforms), &uniforms_);
+
+  // Each cluster's box: the tile's four corner rays cut at the slice's depths.
+  const glm::mat4 inverse = glm::inverse(projection);
+  auto slice_depth = [&](std::uint32_t boundary) {
+    if (boundary == 0) return near_plane;
+    return first * std::pow(far_plane / first, static_cast<float>(boundary - 1) / static_cast<float>(dims_.z - 1));
+  };
+  boxes_.resize(cluster_count());
+  for (std::uint32_t z = 0; z < dims_.z; ++z) {
+    const float d0 = slice_depth(z), d1 = z + 1 == dims_.z ? far_plane : slice_depth(z + 1);
+    for (std::uint32_t y = 0; y < dims_.y; ++y) {
+      for (std::uint32_t x = 0; x < dims_.x; ++x) {
+        glm::vec3 lo(1e30f), hi(-1e30f);
+        for (int corner = 0; corner < 4; ++corner) {
+          const float ndc_x = -1.0f + 2.0f * static_cast<float>(x + (corner & 1)) / static_cast<float>(dims_.x);
+          const float ndc_y = -1.0f + 2.0f * static_cast<float>(y + ((corner >> 1) & 1)) / static_cast<float>(dims_.y);
+          glm::vec4 on_near = inverse * glm::vec4(ndc_x, ndc_y, -1.0f, 1.0f);
+          const glm::vec3 ray = glm::vec3(on_near) / on_near.w / near_plane;  // the point at view depth 1
+          for (const float depth : {d0, d1}) {
+            lo = glm::min(lo, ray * depth);
+            hi = glm::max(hi, ray * depth);
+          }
+        }
+        boxes_[(z * dims_.y + y) * dims_.x + x] = {glm::vec4(lo, 0.0f), glm::vec4(hi, 0.0f)};
+      }
+    }
+  }
+  glNamedBufferSubData(bounds_.id(), 0, static_cast<GLsizeiptr>(boxes_.size() * sizeof(ClusterBox)), boxes_.data());
+}
+
+std::uint32_t ClusterGrid::slice_of(float view_depth) const {
+  if (view_depth <= uniforms_.slicing.x) return 0;
+  const float slice = std::log(view_depth) * uniforms_.slicing.y + uniforms_.slicing.z;
+  return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
+}
+
+void ClusterGrid::assign(gfx::ShaderProgram& assign, GLuint active) {
+  bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalBinding, total_.id());
+  if (active) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveBinding, active);
+  assign.use();
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    const std::uint32_t zero = 0;
+    glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
+    glDispatchCompute((cluster_count() + 63) / 64, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glGetNamedBufferSubData(total_.id(), 0, sizeof last_total_, &last_total_);
+    if (last_total_ <= capacity_) break;
+    // The list was too small for this frame: grow it with room to spare and assign again.
+    ++overflow_frames_;
+    resize_list(last_total_ + last_total_ / 4 + 64);
+    bind();
+  }
+}
+
+void ClusterGrid::bind() const {
+  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding, indices_.id());
+}
+
+std::vector<std::vector<std::uint32_t>> ClusterGrid::assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const {
+  std::vector<std::vector<std::uint32_t>> lists(cluster_count());
+  for (std::uint32_t l = 0; l < lights.size(); ++l) {
+    const GpuLight& light = lights[l];
+    const bool everywhere = light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+    const glm::vec3 centre(view * glm::vec4(glm::vec3(light.position_radius), 1.0f));
+    const float radius = light.position_radius.w;
+    for (std::uint32_t c = 0; c < cluster_count(); ++c) {
+      const glm::vec3 nearest = glm::clamp(centre, glm::vec3(boxes_[c].lo), glm::vec3(boxes_[c].hi)) - centre;
+      if (everywhere || glm::dot(nearest, nearest) <= radius * radius) lists[c].push_back(l);
+    }
+  }
+  return lists;
+}
+
+std::vector<std::vector<std::uint32_t>> ClusterGrid::read_lists() const {
+  std::vector<std::uint32_t> ranges(cluster_count() * 2), indices(capacity_);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glGetNamedBufferSubData(ranges_.id(), 0, static_cast<GLsizeiptr>(ranges.size() * sizeof(std::uint32_t)), ranges.data());
+  glGetNamedBufferSubData(indices_.id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
+  std::vector<std::vector<std::uint32_t>> lists(cluster_count());
+  for (std::uint32_t c = 0; c < cluster_count(); ++c) {
+    const std::uint32_t offset = ranges[c * 2], count = ranges[c * 2 + 1];
+    for (std::uint32_t i = 0; i < count && offset + i < capacity_; ++i) lists[c].push_back(indices[offset + i]);
+    std::sort(lists[c].begin(), lists[c].end());
+  }
+  return lists;
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,77 @@
+// The cluster grid of the clustered techniques: the view frustum cut into
+// screen tiles and depth slices (a first slice from the near plane, then
+// logarithmic slices to the far plane), each cluster's view-space bounds
+// (rebuilt only when the projection changes), and the light assignment pass
+// that fills one global light index list. There is no cap per cluster: the list
+// is sized from the previous frame's total, and a frame whose total does not fit
+// grows the list and assigns again (counted in overflow_frames()).
+// GLSL twin: shaders/common/clusters.glsl.
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfx/gl_object.hpp"
+#include "gfx/shader_program.hpp"
+#include "systems/light_buffer.hpp"
+
+namespace atrium::lighting {
+
+inline constexpr unsigned kClusterUniformBinding = 1;
+
+// std140 twin of ClusterBlock in shaders/common/clusters.glsl.
+struct ClusterUniforms {
+  glm::uvec4 grid;      // xyz clusters per axis, w total
+  glm::vec4 slicing;    // x first slice's far depth, y log scale, z log bias
+  glm::uvec4 list_info; // x index list capacity
+};
+static_assert(sizeof(ClusterUniforms) == 48, "must match ClusterBlock in shaders/common/clusters.glsl");
+
+struct ClusterBox {
+  glm::vec4 lo;  // view space
+  glm::vec4 hi;
+};
+static_assert(sizeof(ClusterBox) == 32, "must match ClusterBounds in shaders/clustered/assign.comp");
+
+class ClusterGrid {
+ public:
+  explicit ClusterGrid(glm::uvec3 dims);
+
+  // Recomputes the slicing and the clusters' bounds if the projection changed.
+  void update(const glm::mat4& projection, float near_plane, float far_plane);
+  // Runs `assign` (shaders/clustered/assign.comp) over `lights`; `active` is a
+  // buffer of per-cluster flags when only active clusters receive lights.
+  void assign(gfx::ShaderProgram& assign, GLuint active = 0);
+  // Binds the uniform block and the range and index buffers for shading.
+  void bind() const;
+
+  [[nodiscard]] glm::uvec3 dims() const { return dims_; }
+  [[nodiscard]] std::uint32_t cluster_count() const { return dims_.x * dims_.y * dims_.z; }
+  [[nodiscard]] std::uint32_t slice_of(float view_depth) const;
+  [[nodiscard]] const std::vector<ClusterBox>& boxes() const { return boxes_; }
+  [[nodiscard]] std::uint32_t last_total() const { return last_total_; }
+  [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
+  [[nodiscard]] std::uint32_t overflow_frames() const { return overflow_frames_; }
+  [[nodiscard]] std::uint32_t rebuilds() const { return rebuilds_; }
+  [[nodiscard]] GLuint active_buffer() const { return active_.id(); }
+
+  // The assignment done on the CPU with the same boxes and test, and the GPU's
+  // lists read back: both as sorted light indices per cluster (for tests).
+  [[nodiscard]] std::vector<std::vector<std::uint32_t>> assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const;
+  [[nodiscard]] std::vector<std::vector<std::uint32_t>> read_lists() const;
+
+ private:
+  void resize_list(std::uint32_t capacity);
+
+  glm::uvec3 dims_;
+  ClusterUniforms uniforms_{};
+  std::vector<ClusterBox> boxes_;
+  glm::mat4 projection_{0.0f};
+  float near_ = 0.0f, far_ = 0.0f;
+  gfx::Buffer uniform_buffer_, bounds_, ranges_, indices_, total_, active_;
+  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, rebuilds_ = 0;
+};
+
+}  // namespace atrium::lighting

@@ -1,0 +1,86 @@
+#include "systems/lighting/clustered.hpp"
+
+namespace atrium::lighting {
+namespace {
+std::vector<gfx::ShaderDefine> active_define(bool active) {
+  return active ? std::vector<gfx::ShaderDefine>{{"ACTIVE_ONLY"}} : std::vector<gfx::ShaderDefine>{};
+}
+}  // namespace
+
+ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
+    : deferred_(deferred),
+      active_only_(options.active_clusters),
+      grid_(options.cluster_grid),
+      assign_(gpu.shaders().get({"clustered/assign.comp"}, active_define(options.active_clusters))),
+      mark_active_(gpu.shaders().get({"clustered/mark_active.comp"})),
+      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
+      shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
+                        : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+
+void ClusteredTechnique::resize(const FrameTargets& targets) {
+  if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);
+}
+
+void ClusteredTechnique::mark_active_clusters(const FrameTargets& targets) {
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(grid_.active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  grid_.bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, grid_.active_buffer());
+  glBindTextureUnit(0, targets.depth_stencil);
+  mark_active_.use();
+  glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+  grid_.update(frame.projection, frame.near_plane, frame.far_plane);
+  if (deferred_) {
+    gbuffer_.draw_geometry(geometry_, frame);
+  } else {
+    const auto pass = frame.timer.scope("depth pre-pass");
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glViewport(0, 0, targets.size.x, targets.size.y);
+    const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+    glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
+    glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    geometry_.use();
+    draw_items(geometry_, frame.gpu, frame.draws.opaque);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+  {
+    const auto pass = frame.timer.scope("light assignment");
+    if (active_only_) mark_active_clusters(targets);
+    grid_.assign(assign_, active_only_ ? grid_.active_buffer() : 0);
+  }
+  {
+    const auto pass = frame.timer.scope(deferred_ ? "lighting" : "shading");
+    grid_.bind();
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glViewport(0, 0, targets.size.x, targets.size.y);
+    if (deferred_) {
+      glDisable(GL_DEPTH_TEST);
+      glDisable(GL_CULL_FACE);
+      gbuffer_.bind_textures();
+      shading_.use();
+      fullscreen_.draw();
+    } else {
+      // Every visible fragment is shaded once: its depth is already there.
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LEQUAL);
+      glDepthMask(GL_FALSE);
+      shading_.use();
+      draw_items(shading_, frame.gpu, frame.draws.opaque);
+      glDepthMask(GL_TRUE);
+      glDepthFunc(GL_LESS);
+    }
+  }
+  draw_transparent(forward_, frame, targets);
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,38 @@
+// Clustered shading (modes `clustered-forward` and `clustered-deferred`): the
+// frustum is cut into a 3D grid of clusters; a compute pass assigns each light
+// to the clusters its sphere touches; shading then loops over the pixel's
+// cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
+// fragment once; deferred shades from the G-buffer. With --active-clusters only
+// clusters that hold a visible pixel receive lights.
+#pragma once
+
+#include "systems/lighting/cluster_grid.hpp"
+#include "systems/lighting/gbuffer.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium::lighting {
+
+class ClusteredTechnique final : public LightingTechnique {
+ public:
+  ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
+  void resize(const FrameTargets& targets) override;
+  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+
+  [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
+
+ private:
+  void mark_active_clusters(const FrameTargets& targets);
+
+  bool deferred_;
+  bool active_only_;
+  ClusterGrid grid_;
+  gfx::ShaderProgram& assign_;
+  gfx::ShaderProgram& mark_active_;
+  gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass
+  gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading
+  gfx::ShaderProgram& forward_;
+  GBuffer gbuffer_;
+  FullscreenTriangle fullscreen_;
+};
+
+}  // namespace atrium::lighting
