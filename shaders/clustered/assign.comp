@@ -16,7 +16,6 @@ struct ClusterBounds {
   vec4 hi;
 };
 layout(std430, binding = 4) readonly buffer Bounds { ClusterBounds u_bounds[]; };
-layout(std430, binding = 5) buffer Total { uint u_total; };
 #ifdef ACTIVE_ONLY
 layout(std430, binding = 6) readonly buffer Active { uint u_active[]; };
 #endif
@@ -58,8 +57,8 @@ void main() {
     }
     barrier();
   }
-  uint offset = count > 0u ? atomicAdd(u_total, count) : 0u;
-  if (cluster < u_grid.w) u_cluster_ranges[cluster] = ClusterRange(offset, count);
+  uint offset = count > 0u ? atomicAdd(u_light_total, count) : 0u;
+  if (cluster < u_grid.w) u_light_ranges[cluster] = LightRange(offset, count);
   // The loops stay uniform across the work group: barrier() needs that.
   uint written = 0u;
   for (uint base = 0u; base < u_light_count; base += kBatch) {
@@ -70,7 +69,7 @@ void main() {
       for (uint i = 0u; i < batch; ++i) {
         if (touches(s_lights[i], box)) {
           uint slot = offset + written++;
-          if (slot < u_list_info.x) u_cluster_indices[slot] = base + i;
+          if (slot < u_list_info.x) u_light_indices[slot] = base + i;
         }
       }
     }

@@ -10,14 +10,7 @@ layout(std140, binding = 1) uniform ClusterBlock {
   uvec4 u_list_info;        // x index list capacity
 };
 
-// Each cluster's range in the global light index list.
-struct ClusterRange {
-  uint offset;
-  uint count;
-};
-
-layout(std430, binding = 2) buffer ClusterRanges { ClusterRange u_cluster_ranges[]; };
-layout(std430, binding = 3) buffer ClusterIndices { uint u_cluster_indices[]; };
+#include "light_lists.glsl"
 
 // The slice of a positive view depth (metres in front of the camera). Depths
 // at or before the near plane fall in slice 0, at or beyond the far plane in

@@ -59,6 +59,7 @@ class ShaderProgram {
   // Uniform setters; an unknown name (optimised out) is ignored, as GL does.
   void set(const char* name, int value);
   void set(const char* name, unsigned value);
+  void set(const char* name, const glm::uvec2& value);
   void set(const char* name, float value);
   void set(const char* name, const glm::vec2& value);
   void set(const char* name, const glm::vec3& value);

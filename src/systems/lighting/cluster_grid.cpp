@@ -5,29 +5,23 @@
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kBoundsBinding = 4, kRangesBinding = 2, kIndicesBinding = 3, kTotalBinding = 5, kActiveBinding = 6;
+constexpr GLuint kBoundsBinding = 4, kActiveBinding = 6;
 }  // namespace
 
 ClusterGrid::ClusterGrid(glm::uvec3 dims)
     : dims_(glm::max(dims, glm::uvec3(1, 1, 2))),
       uniform_buffer_(gfx::create_buffer()),
       bounds_(gfx::create_buffer()),
-      ranges_(gfx::create_buffer()),
-      total_(gfx::create_buffer()),
-      active_(gfx::create_buffer()) {
+      active_(gfx::create_buffer()),
+      list_(dims_.x * dims_.y * dims_.z) {
   glNamedBufferStorage(uniform_buffer_.id(), sizeof(ClusterUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(bounds_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(ClusterBox)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(cluster_count() * 2 * sizeof(std::uint32_t)), nullptr, 0);
-  glNamedBufferStorage(total_.id(), sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  resize_list(4096);
+  upload_uniforms();
 }
 
-void ClusterGrid::resize_list(std::uint32_t capacity) {
-  capacity_ = capacity;
-  indices_ = gfx::create_buffer();
-  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(capacity, 1) * sizeof(std::uint32_t)), nullptr, 0);
-  uniforms_.list_info = glm::uvec4(capacity_, 0, 0, 0);
+void ClusterGrid::upload_uniforms() {
+  uniforms_.list_info = glm::uvec4(list_.capacity(), 0, 0, 0);
   glNamedBufferSubData(uniform_buffer_.id(), 0, sizeof(ClusterUniforms), &uniforms_);
 }
 
@@ -42,7 +36,7 @@ void ClusterGrid::update(const glm::mat4& projection, float near_plane, float fa
   const float scale = static_cast<float>(dims_.z - 1) / std::log(far_plane / first);
   uniforms_.grid = glm::uvec4(dims_, cluster_count());
   uniforms_.slicing = glm::vec4(first, scale, 1.0f - std::log(first) * scale, 0.0f);
-  glNamedBufferSubData(uniform_buffer_.id(), 0, sizeof(ClusterUniforms), &uniforms_);
+  upload_uniforms();
 
   // Each cluster's box: the tile's four corner rays cut at the slice's depths.
   const glm::mat4 inverse = glm::inverse(projection);
@@ -80,29 +74,20 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
 }
 
 void ClusterGrid::assign(gfx::ShaderProgram& assign, GLuint active) {
-  bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTotalBinding, total_.id());
   if (active) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveBinding, active);
   assign.use();
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    const std::uint32_t zero = 0;
-    glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
-    glDispatchCompute((cluster_count() + 63) / 64, 1, 1);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(total_.id(), 0, sizeof last_total_, &last_total_);
-    if (last_total_ <= capacity_) break;
-    // The list was too small for this frame: grow it with room to spare and assign again.
-    ++overflow_frames_;
-    resize_list(last_total_ + last_total_ / 4 + 64);
-    bind();
-  }
+  list_.assign(
+      [&] {
+        bind();
+        glDispatchCompute((cluster_count() + 63) / 64, 1, 1);
+      },
+      [&](std::uint32_t) { upload_uniforms(); });
 }
 
 void ClusterGrid::bind() const {
   glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kIndicesBinding, indices_.id());
+  list_.bind();
 }
 
 std::vector<std::vector<std::uint32_t>> ClusterGrid::assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const {
@@ -116,20 +101,6 @@ std::vector<std::vector<std::uint32_t>> ClusterGrid::assign_on_cpu(std::span<con
       const glm::vec3 nearest = glm::clamp(centre, glm::vec3(boxes_[c].lo), glm::vec3(boxes_[c].hi)) - centre;
       if (everywhere || glm::dot(nearest, nearest) <= radius * radius) lists[c].push_back(l);
     }
-  }
-  return lists;
-}
-
-std::vector<std::vector<std::uint32_t>> ClusterGrid::read_lists() const {
-  std::vector<std::uint32_t> ranges(cluster_count() * 2), indices(capacity_);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(ranges_.id(), 0, static_cast<GLsizeiptr>(ranges.size() * sizeof(std::uint32_t)), ranges.data());
-  glGetNamedBufferSubData(indices_.id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
-  std::vector<std::vector<std::uint32_t>> lists(cluster_count());
-  for (std::uint32_t c = 0; c < cluster_count(); ++c) {
-    const std::uint32_t offset = ranges[c * 2], count = ranges[c * 2 + 1];
-    for (std::uint32_t i = 0; i < count && offset + i < capacity_; ++i) lists[c].push_back(indices[offset + i]);
-    std::sort(lists[c].begin(), lists[c].end());
   }
   return lists;
 }

@@ -2,9 +2,7 @@
 // screen tiles and depth slices (a first slice from the near plane, then
 // logarithmic slices to the far plane), each cluster's view-space bounds
 // (rebuilt only when the projection changes), and the light assignment pass
-// that fills one global light index list. There is no cap per cluster: the list
-// is sized from the previous frame's total, and a frame whose total does not fit
-// grows the list and assigns again (counted in overflow_frames()).
+// that fills one global light index list (LightIndexList: no cap per cluster).
 // GLSL twin: shaders/common/clusters.glsl.
 #pragma once
 
@@ -16,6 +14,7 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_program.hpp"
 #include "systems/light_buffer.hpp"
+#include "systems/lighting/light_index_list.hpp"
 
 namespace atrium::lighting {
 
@@ -51,27 +50,26 @@ class ClusterGrid {
   [[nodiscard]] std::uint32_t cluster_count() const { return dims_.x * dims_.y * dims_.z; }
   [[nodiscard]] std::uint32_t slice_of(float view_depth) const;
   [[nodiscard]] const std::vector<ClusterBox>& boxes() const { return boxes_; }
-  [[nodiscard]] std::uint32_t last_total() const { return last_total_; }
-  [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
-  [[nodiscard]] std::uint32_t overflow_frames() const { return overflow_frames_; }
+  [[nodiscard]] const LightIndexList& list() const { return list_; }
   [[nodiscard]] std::uint32_t rebuilds() const { return rebuilds_; }
   [[nodiscard]] GLuint active_buffer() const { return active_.id(); }
 
   // The assignment done on the CPU with the same boxes and test, and the GPU's
   // lists read back: both as sorted light indices per cluster (for tests).
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const;
-  [[nodiscard]] std::vector<std::vector<std::uint32_t>> read_lists() const;
+  [[nodiscard]] std::vector<std::vector<std::uint32_t>> read_lists() const { return list_.read(); }
 
  private:
-  void resize_list(std::uint32_t capacity);
+  void upload_uniforms();
 
   glm::uvec3 dims_;
   ClusterUniforms uniforms_{};
   std::vector<ClusterBox> boxes_;
   glm::mat4 projection_{0.0f};
   float near_ = 0.0f, far_ = 0.0f;
-  gfx::Buffer uniform_buffer_, bounds_, ranges_, indices_, total_, active_;
-  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, rebuilds_ = 0;
+  gfx::Buffer uniform_buffer_, bounds_, active_;
+  LightIndexList list_;
+  std::uint32_t rebuilds_ = 0;
 };
 
 }  // namespace atrium::lighting

@@ -3,6 +3,7 @@
 #include "systems/lighting/deferred.hpp"
 #include "systems/lighting/forward.hpp"
 #include "systems/lighting/light_volumes.hpp"
+#include "systems/lighting/tiled.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
@@ -22,6 +23,8 @@ constexpr TechniqueInfo kTechniques[] = {
      [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
     {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius",
      [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, false); }},
+    {"tiled-deferred", "G-buffer, lights culled per 16x16 tile against its depth bounds, each pixel shades its tile's",
+     &make<TiledTechnique>},
     {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's",
      [](assets::GpuAssets& gpu, const TechniqueOptions& options) -> std::unique_ptr<LightingTechnique> {
        return std::make_unique<ClusteredTechnique>(gpu, options, false);

@@ -1,0 +1,40 @@
+// A light index list with no cap: per bin (cluster or tile) an (offset, count)
+// range into one global array of light indices. An assignment pass counts each
+// bin's lights, reserves its range with an atomic add on a total, and writes.
+// The array is sized from the previous frame's total; when a frame's total does
+// not fit, the array grows and the pass runs again (counted as an overflow).
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "gfx/gl_object.hpp"
+
+namespace atrium::lighting {
+
+inline constexpr GLuint kLightRangesBinding = 2, kLightIndicesBinding = 3, kLightTotalBinding = 5;
+
+class LightIndexList {
+ public:
+  explicit LightIndexList(std::uint32_t bins);
+
+  // Runs `dispatch` (which must read the capacity through `capacity()` or the
+  // uniform set by `on_resize`) until the whole list fits.
+  void assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize);
+  void bind() const;
+
+  [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
+  [[nodiscard]] std::uint32_t last_total() const { return last_total_; }
+  [[nodiscard]] std::uint32_t overflow_frames() const { return overflow_frames_; }
+  // The lists read back, sorted, per bin (for tests).
+  [[nodiscard]] std::vector<std::vector<std::uint32_t>> read() const;
+
+ private:
+  void resize(std::uint32_t capacity);
+
+  std::uint32_t bins_;
+  gfx::Buffer ranges_, indices_, total_;
+  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0;
+};
+
+}  // namespace atrium::lighting
