@@ -45,6 +45,8 @@ class MeshRenderer {
   [[nodiscard]] std::vector<float> read_depth() const;
 
   [[nodiscard]] const std::string& mode() const { return mode_; }
+  // The technique that drew the last frame (tests and tools inspect it).
+  [[nodiscard]] const lighting::LightingTechnique* technique() const { return technique_.get(); }
   [[nodiscard]] const FrameStats& stats() const { return stats_; }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
   // Per-pass times of the latest frame whose timings are complete.

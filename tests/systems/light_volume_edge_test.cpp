@@ -21,6 +21,9 @@ struct EdgeCase {
   std::vector<assets::SceneLight> lights;
   float far_plane = 200.0f;
   bool blended_panes = false;
+  float near_plane = 0.05f;
+  glm::vec3 eye{0.0f, 0.5f, 5.0f};
+  float pitch_degrees = -8.0f;
 };
 
 // A floor and a back wall, seen from (0, 0.5, 5) looking along -Z.
@@ -58,9 +61,12 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode) {
     scene.instances.push_back({handle, 2, Transform{}});
   }
   scene.lights = c.lights;
-  scene.views.push_back({"eye", glm::vec3(0.0f, 0.5f, 5.0f), 0.0f, -8.0f});
+  scene.views.push_back({"eye", c.eye, 0.0f, c.pitch_degrees});
   auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize});
-  world->registry().view<Camera>().each([&](Camera& camera) { camera.far_plane = c.far_plane; });
+  world->registry().view<Camera>().each([&](Camera& camera) {
+    camera.near_plane = c.near_plane;
+    camera.far_plane = c.far_plane;
+  });
   return world;
 }
 
@@ -90,6 +96,19 @@ assets::SceneLight sun() {
   return light;
 }
 
+// A lattice of small lights just above the floor: many of their spheres cross
+// tile and cluster boundaries, where a culling bug would cut light off.
+std::vector<assets::SceneLight> straddling_lights() {
+  std::vector<assets::SceneLight> lights;
+  for (int i = 0; i < 8; ++i) {
+    for (int j = 0; j < 8; ++j) {
+      const glm::vec3 position(-3.5f + static_cast<float>(i), 0.15f, 1.5f - static_cast<float>(j) * 1.3f);
+      lights.push_back(point(position, glm::vec3(0.3f + 0.1f * static_cast<float>(i % 3), 0.6f, 0.9f), 0.04f, 0.9f));
+    }
+  }
+  return lights;
+}
+
 const EdgeCase kCases[] = {
     {"camera_inside", {point(glm::vec3(0.3f, 0.8f, 4.5f), glm::vec3(1.0f, 0.9f, 0.8f), 0.6f, 6.0f)}},
     // Centre 1.02 m ahead, radius 1: the sphere reaches 2 cm in front of the
@@ -99,6 +118,10 @@ const EdgeCase kCases[] = {
     {"crosses_far_plane", {point(glm::vec3(0.0f, 0.4f, 0.5f), glm::vec3(0.8f, 0.9f, 1.0f), 1.5f, 2.0f)}, 6.0f},
     {"spot_and_directional", {spot(), sun(), point(glm::vec3(2.0f, 1.0f, 0.0f), glm::vec3(0.4f, 1.0f, 0.4f), 0.5f, 4.0f)}},
     {"blended_panes", {point(glm::vec3(0.0f, 1.5f, 2.5f), glm::vec3(1.0f), 1.0f, 6.0f), sun()}, 200.0f, true},
+    // 2 cm from the back wall, looking at it, with the far plane 1000x the near.
+    {"close_to_wall", {point(glm::vec3(0.3f, 0.8f, -9.7f), glm::vec3(1.0f, 0.8f, 0.6f), 0.2f, 1.5f)}, 20.0f, false, 0.02f,
+     glm::vec3(0.0f, 0.8f, -9.98f), 0.0f},
+    {"straddling_edges", straddling_lights()},
 };
 
 class VolumeEdgeCase : public testing::GlTest, public ::testing::WithParamInterface<std::tuple<std::string, int>> {};
@@ -126,7 +149,7 @@ std::vector<std::string> non_forward_modes() {
   return modes;
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase, ::testing::Combine(::testing::ValuesIn(non_forward_modes()), ::testing::Values(0, 1, 2, 3, 4)),
+INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase, ::testing::Combine(::testing::ValuesIn(non_forward_modes()), ::testing::Range(0, 7)),
                          [](const auto& info) {
                            std::string name = std::get<0>(info.param) + "_" + kCases[std::get<1>(info.param)].name;
                            for (char& ch : name) if (ch == '-') ch = '_';

@@ -1,0 +1,138 @@
+// The cluster grid: the GPU's light lists equal a CPU computation of the same
+// grid (as sets), every depth maps to a valid slice in GLSL and C++ alike, lists
+// grow instead of dropping lights, and --active-clusters changes no pixel.
+#include <filesystem>
+#include <fstream>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/shader_program.hpp"
+#include "support/gl_test.hpp"
+#include "systems/light_buffer.hpp"
+#include "systems/lighting/clustered.hpp"
+
+namespace atrium {
+namespace {
+
+using ClusterGridTest = testing::GlTest;
+
+const lighting::ClusterGrid& grid_of(World& world) {
+  const auto* technique = dynamic_cast<const lighting::ClusteredTechnique*>(world.renderer().technique());
+  if (!technique) throw std::logic_error("not a clustered technique");
+  return technique->grid();
+}
+
+TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
+  World world({"atrium", 300u, "clustered-deferred", 3, {160, 90}});
+  world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
+  world.frame(0.0);
+  const lighting::ClusterGrid& grid = grid_of(world);
+  ASSERT_EQ(grid.dims(), glm::uvec3(4, 3, 6));
+  const auto gpu = grid.read_lists();
+  const auto cpu = grid.assign_on_cpu(world.registry().resource<LightBuffer>().staging,
+                                      world.registry().resource<ViewState>().view);
+  ASSERT_EQ(gpu.size(), cpu.size());
+  std::size_t assignments = 0;
+  for (std::size_t c = 0; c < gpu.size(); ++c) {
+    EXPECT_EQ(gpu[c], cpu[c]) << "cluster " << c;
+    assignments += cpu[c].size();
+  }
+  EXPECT_GT(assignments, 300u) << "lights overlap several clusters";
+  EXPECT_EQ(grid.list().last_total(), assignments);
+}
+
+TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
+  World world({"atrium", 16u, "clustered-forward", 1, {64, 36}});
+  for (int view = 1; view <= 5; ++view) {
+    world.set_view(view);  // moving the camera keeps the projection
+    world.frame(0.0);
+  }
+  EXPECT_EQ(grid_of(world).rebuilds(), 1u);
+  world.set_size({80, 36});  // a new aspect ratio is a new projection
+  world.frame(0.0);
+  EXPECT_EQ(grid_of(world).rebuilds(), 2u);
+  world.frame(0.0);
+  EXPECT_EQ(grid_of(world).rebuilds(), 2u);
+}
+
+TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
+  World world({"atrium", 4u, "clustered-deferred", 1, {64, 36}});
+  world.frame(0.0);
+  const lighting::ClusterGrid& grid = grid_of(world);
+  const ViewState& view = world.registry().resource<ViewState>();
+  // Depths from before the near plane to beyond the far plane, including the
+  // view depth that window depth 1.0 stands for (the far plane itself).
+  std::vector<float> depths{0.0f, view.near_plane * 0.5f, view.near_plane, view.far_plane, view.far_plane * 2.0f};
+  for (int i = 0; i <= 400; ++i) depths.push_back(view.near_plane * std::pow(view.far_plane / view.near_plane, i / 400.0f));
+
+  const auto folder = std::filesystem::temp_directory_path() / ("atrium_slices_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "slice_probe.comp") << "#version 450 core\n"
+                                                "layout(local_size_x = 64) in;\n"
+                                                "#include \"common/frame.glsl\"\n"
+                                                "#include \"common/clusters.glsl\"\n"
+                                                "layout(std430, binding = 7) readonly buffer In { float depths[]; };\n"
+                                                "layout(std430, binding = 8) writeonly buffer Out { uint slices[]; };\n"
+                                                "uniform uint u_count;\n"
+                                                "void main() {\n"
+                                                "  uint i = gl_GlobalInvocationID.x;\n"
+                                                "  if (i < u_count) slices[i] = cluster_slice(depths[i]);\n"
+                                                "}\n";
+  gfx::ShaderSearchPath path{folder};
+  for (const auto& p : gfx::default_shader_path()) path.push_back(p);
+  gfx::ShaderProgram probe = gfx::ShaderProgram::load({"slice_probe.comp"}, {}, path);
+  std::filesystem::remove_all(folder);
+  gfx::Buffer input = gfx::create_buffer(), output = gfx::create_buffer();
+  glNamedBufferStorage(input.id(), static_cast<GLsizeiptr>(depths.size() * sizeof(float)), depths.data(), 0);
+  glNamedBufferStorage(output.id(), static_cast<GLsizeiptr>(depths.size() * sizeof(std::uint32_t)), nullptr, 0);
+  grid.bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, input.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, output.id());
+  probe.set("u_count", static_cast<unsigned>(depths.size()));
+  probe.use();
+  glDispatchCompute(static_cast<GLuint>((depths.size() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> slices(depths.size());
+  glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(slices.size() * sizeof(std::uint32_t)), slices.data());
+  int disagreements = 0;
+  for (std::size_t i = 0; i < depths.size(); ++i) {
+    EXPECT_LT(slices[i], grid.dims().z) << "depth " << depths[i];
+    // Only a depth on a slice boundary may round either way.
+    disagreements += slices[i] != grid.slice_of(depths[i]);
+  }
+  EXPECT_LE(disagreements, 2);
+  EXPECT_EQ(grid.slice_of(0.0f), 0u);
+  EXPECT_EQ(grid.slice_of(view.far_plane), grid.dims().z - 1);
+  EXPECT_EQ(grid.slice_of(view.far_plane * 2.0f), grid.dims().z - 1);
+}
+
+TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
+  constexpr glm::ivec2 kSize{96, 54};
+  World world({"atrium", 1024u, "forward", 1, kSize});
+  world.frame(0.0);
+  const assets::Image reference = world.renderer().read_output();
+  world.set_mode("clustered-deferred");
+  world.frame(0.0);
+  const lighting::ClusterGrid& grid = grid_of(world);
+  EXPECT_GE(grid.list().overflow_frames(), 1u) << "1024 lights overfill the initial list";
+  EXPECT_GE(grid.list().capacity(), grid.list().last_total());
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << "no light was lost";
+  const std::uint32_t overflows = grid.list().overflow_frames();
+  world.frame(0.0);
+  EXPECT_EQ(grid_of(world).list().overflow_frames(), overflows) << "the grown list fits the next frame";
+}
+
+TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
+  World world({"atrium", 200u, "clustered-deferred", 2, {96, 54}});
+  world.frame(0.0);
+  const assets::Image all = world.renderer().read_output();
+  const std::uint32_t total_all = grid_of(world).list().last_total();
+  world.registry().resource<RendererSettings>().technique_options.active_clusters = true;
+  world.frame(0.0);
+  EXPECT_TRUE(std::isinf(assets::psnr(all, world.renderer().read_output())));
+  EXPECT_LT(grid_of(world).list().last_total(), total_all) << "empty clusters received no lights";
+}
+
+}  // namespace
+}  // namespace atrium
