@@ -67,6 +67,7 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading});
+    world.registry().resource<RendererSettings>().technique_options = options.technique_options;
     apply_radius(world, options, lights);
     std::vector<int> views = options.views;
     if (views.empty()) {

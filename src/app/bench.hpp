@@ -12,6 +12,7 @@
 #include <glm/glm.hpp>
 
 #include "gfx/pass_timer.hpp"
+#include "systems/lighting/technique_options.hpp"
 
 namespace atrium {
 
@@ -26,6 +27,7 @@ struct BenchOptions {
   std::optional<float> light_radius;         // every light gets this radius
   bool constant_density = false;             // radii shrink as cbrt(1024 / lights)
   std::string shading = "pbr";
+  lighting::TechniqueOptions technique_options;
 };
 
 struct BenchRow {

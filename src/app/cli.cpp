@@ -145,6 +145,8 @@ std::string help_text() {
          "Options:\n"
          "  --mode M        lighting technique (default: the scene's, 'forward')\n"
          "  --shading S     shading model: pbr (default), blinn-phong or phong\n"
+         "  --cluster-grid XxYxZ  clustered modes: clusters per axis (default 16x9x24)\n"
+         "  --active-clusters     clustered modes: only clusters holding visible pixels get lights\n"
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
          "                  emissive, depth, light-volumes (outlines) or heatmap (lights\n"
          "                  evaluated per pixel in the current mode)\n"
@@ -196,6 +198,18 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     if (options.command == Command::Bench && parse_bench_option(arg, value, options)) continue;
     if (arg == "--mode") {
       options.mode = std::string(value());
+    } else if (arg == "--cluster-grid") {
+      const std::string text(value());
+      const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
+      if (x1 == std::string::npos || x2 == std::string::npos) {
+        throw UsageError("--cluster-grid expects XxYxZ (e.g. 16x9x24), got '" + text + "'");
+      }
+      options.technique_options.cluster_grid = {
+          parse_number<unsigned>("--cluster-grid", std::string_view(text).substr(0, x1), 1, 256),
+          parse_number<unsigned>("--cluster-grid", std::string_view(text).substr(x1 + 1, x2 - x1 - 1), 1, 256),
+          parse_number<unsigned>("--cluster-grid", std::string_view(text).substr(x2 + 1), 2, 256)};
+    } else if (arg == "--active-clusters") {
+      options.technique_options.active_clusters = true;
     } else if (arg == "--debug-view") {
       options.debug_view = std::string(value());
       if (lighting::debug_view_index(options.debug_view) < 0) {
@@ -256,6 +270,7 @@ int run_render(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
   World world({options.scene, options.lights, options.mode, options.view, options.size, options.shading});
   world.registry().resource<RendererSettings>().debug_view = options.debug_view;
+  world.registry().resource<RendererSettings>().technique_options = options.technique_options;
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
@@ -265,6 +280,10 @@ int run_render(const CliOptions& options) {
               stats.triangles, stats.draw_calls, context->info().renderer.c_str());
   if (options.debug_view == "heatmap") {
     std::printf("light evaluations per pixel: %.2f on average\n", stats.light_evaluations_per_pixel);
+  }
+  if (stats.light_list_entries > 0) {
+    std::printf("light lists: %u entries, %u overflowed frames (the list grew and was filled again)\n",
+                stats.light_list_entries, stats.light_list_overflows);
   }
   return kExitOk;
 }
@@ -283,6 +302,7 @@ int run_info(const CliOptions& options) {
 int run_compare(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
   World world({options.scene, options.lights, "forward", 1, options.size, options.shading});
+  world.registry().resource<RendererSettings>().technique_options = options.technique_options;
   std::printf("%-24s %-18s %10s %9s\n", "mode", "view", "PSNR", "max diff");
   bool all_close = true;
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
@@ -334,6 +354,7 @@ int run_bench_command(const CliOptions& options) {
   bench.scene = options.scene;
   bench.size = options.size;
   bench.shading = options.shading;
+  bench.technique_options = options.technique_options;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   ProgressBar bar("bench");
   const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "app/bench.hpp"
+#include "systems/lighting/technique_options.hpp"
 
 namespace atrium {
 
@@ -35,6 +36,7 @@ struct CliOptions {
   std::optional<std::string> mode;
   std::string shading = "pbr";
   std::string debug_view;  // empty: the lit image
+  lighting::TechniqueOptions technique_options;  // --cluster-grid, --active-clusters
   std::optional<std::uint32_t> lights;
   int view = 1;
   glm::ivec2 size{1280, 720};

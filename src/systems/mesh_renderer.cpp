@@ -130,6 +130,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
   }
   if (counting) debug_views_->begin_counting();
   technique_->execute(frame, targets());
+  stats_.light_list_entries = technique_->light_lists().entries;
+  stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
 
   // Tone map into the 8-bit output.
   {

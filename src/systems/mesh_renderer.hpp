@@ -28,6 +28,8 @@ struct FrameStats {
   std::size_t triangles = 0;
   std::uint32_t lights = 0;
   double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
+  std::uint32_t light_list_entries = 0;      // tiled and clustered modes
+  std::uint32_t light_list_overflows = 0;    // frames whose lists grew and were filled again
 };
 
 class MeshRenderer {

@@ -19,6 +19,9 @@ class ClusteredTechnique final : public LightingTechnique {
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
+  [[nodiscard]] ListStats light_lists() const override {
+    return {grid_.list().last_total(), grid_.list().overflow_frames()};
+  }
 
  private:
   void mark_active_clusters(const FrameTargets& targets);

@@ -52,6 +52,13 @@ class LightingTechnique {
   virtual void execute(const FrameContext& frame, const FrameTargets& targets) = 0;
   // Technique-specific controls for the overlay; most techniques have none.
   virtual void draw_ui() {}
+  // Techniques with light lists report their size and how often a frame's
+  // lists did not fit (the list then grew and was filled again).
+  struct ListStats {
+    std::uint32_t entries = 0;
+    std::uint32_t overflowed_frames = 0;
+  };
+  [[nodiscard]] virtual ListStats light_lists() const { return {}; }
 };
 
 struct TechniqueInfo {

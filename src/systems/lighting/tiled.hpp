@@ -22,6 +22,9 @@ class TiledTechnique final : public LightingTechnique {
 
   [[nodiscard]] const LightIndexList& list() const { return *list_; }
   [[nodiscard]] glm::uvec2 tiles() const { return tiles_; }
+  [[nodiscard]] ListStats light_lists() const override {
+    return list_ ? ListStats{list_->last_total(), list_->overflow_frames()} : ListStats{};
+  }
 
  private:
   gfx::ShaderProgram& geometry_;
