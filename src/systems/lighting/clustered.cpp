@@ -39,15 +39,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
     gbuffer_.draw_geometry(geometry_, frame);
   } else {
     const auto pass = frame.timer.scope("depth pre-pass");
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-    glViewport(0, 0, targets.size.x, targets.size.y);
-    const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
-    glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
-    glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, 1.0f, 0);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
+    begin_scene_pass(frame, targets);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     geometry_.use();
     draw_items(geometry_, frame.gpu, frame.draws.opaque);
@@ -61,15 +53,11 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
   {
     const auto pass = frame.timer.scope(deferred_ ? "lighting" : "shading");
     grid_.bind();
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-    glViewport(0, 0, targets.size.x, targets.size.y);
     if (deferred_) {
-      glDisable(GL_DEPTH_TEST);
-      glDisable(GL_CULL_FACE);
-      gbuffer_.bind_textures();
-      shading_.use();
-      fullscreen_.draw();
+      gbuffer_.draw_fullscreen(shading_, targets);
     } else {
+      glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+      glViewport(0, 0, targets.size.x, targets.size.y);
       // Every visible fragment is shaded once: its depth is already there.
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(GL_LEQUAL);

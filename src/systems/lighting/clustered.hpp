@@ -35,7 +35,6 @@ class ClusteredTechnique final : public LightingTechnique {
   gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  FullscreenTriangle fullscreen_;
 };
 
 }  // namespace atrium::lighting

@@ -15,13 +15,7 @@ void DeferredTechnique::execute(const FrameContext& frame, const FrameTargets& t
   gbuffer_.draw_geometry(geometry_, frame);
   {
     const auto pass = frame.timer.scope("lighting");
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-    glViewport(0, 0, targets.size.x, targets.size.y);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    lighting_.use();
-    gbuffer_.bind_textures();
-    fullscreen_.draw();
+    gbuffer_.draw_fullscreen(lighting_, targets);
   }
 
   draw_transparent(forward_, frame, targets);

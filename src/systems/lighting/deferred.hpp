@@ -22,7 +22,6 @@ class DeferredTechnique final : public LightingTechnique {
   gfx::ShaderProgram& lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  FullscreenTriangle fullscreen_;
 };
 
 }  // namespace atrium::lighting

@@ -103,6 +103,18 @@ void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& f
   glDisable(GL_BLEND);
 }
 
+void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
+  glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
 void FullscreenTriangle::draw() const {
   glBindVertexArray(vertex_array_.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

@@ -49,6 +49,10 @@ struct FrameTargets;
 // every light with `forward_program`, depth-tested against the opaque depth.
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
 
+// Binds the HDR target, clears it to the background and depth to 1, and sets
+// the state for drawing scene geometry (depth test LESS with writes, no blend).
+void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets);
+
 // A triangle that covers the viewport, for full-screen passes.
 class FullscreenTriangle {
  public:

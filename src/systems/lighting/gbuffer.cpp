@@ -47,6 +47,16 @@ void GBuffer::bind_textures() const {
   glBindTextures(0, static_cast<GLsizei>(kTargets), names.data());
 }
 
+void GBuffer::draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  bind_textures();
+  program.use();
+  fullscreen_.draw();
+}
+
 std::size_t GBuffer::bytes_per_pixel() {
   std::size_t bytes = 4;  // DEPTH24_STENCIL8
   for (const Target& target : kLayout) bytes += target.bytes_per_pixel;

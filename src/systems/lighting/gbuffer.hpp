@@ -36,6 +36,8 @@ class GBuffer {
   void draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame);
   // Binds the targets to texture units 0-4 for lighting passes.
   void bind_textures() const;
+  // A full-screen pass with `program` reading the G-buffer into the HDR target.
+  void draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const;
 
   [[nodiscard]] GLuint texture(std::size_t index) const { return textures_[index].id(); }
   [[nodiscard]] static std::size_t bytes_per_pixel();
@@ -44,6 +46,7 @@ class GBuffer {
   glm::ivec2 size_{0};
   std::array<gfx::Texture, kTargets> textures_;
   gfx::Framebuffer framebuffer_;
+  FullscreenTriangle fullscreen_;
 };
 
 }  // namespace atrium::lighting

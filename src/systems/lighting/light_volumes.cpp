@@ -81,16 +81,9 @@ void LightVolumeTechnique::resize(const FrameTargets& targets) { gbuffer_.resize
 
 void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
   gbuffer_.draw_geometry(geometry_, frame);
-
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-  glViewport(0, 0, targets.size.x, targets.size.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  gbuffer_.bind_textures();
   {
     const auto pass = frame.timer.scope("base");
-    unlit_.use();
-    fullscreen_.draw();
+    gbuffer_.draw_fullscreen(unlit_, targets);
   }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -99,8 +92,7 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   });
   if (any_directional) {
     const auto pass = frame.timer.scope("directional");
-    directional_.use();
-    fullscreen_.draw();
+    gbuffer_.draw_fullscreen(directional_, targets);
   }
   {
     // Stencil and lighting alternate per light, so they are timed together.

@@ -33,7 +33,6 @@ class LightVolumeTechnique final : public LightingTechnique {
   gfx::ShaderProgram& lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  FullscreenTriangle fullscreen_;
   gfx::Buffer sphere_vertices_;
   gfx::Buffer sphere_indices_;
   gfx::VertexArray sphere_;

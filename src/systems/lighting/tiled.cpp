@@ -33,13 +33,7 @@ void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targ
   {
     const auto pass = frame.timer.scope("lighting");
     list_->bind();
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-    glViewport(0, 0, targets.size.x, targets.size.y);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
-    gbuffer_.bind_textures();
-    lighting_.use();
-    fullscreen_.draw();
+    gbuffer_.draw_fullscreen(lighting_, targets);
   }
   draw_transparent(forward_, frame, targets);
 }

@@ -32,7 +32,6 @@ class TiledTechnique final : public LightingTechnique {
   gfx::ShaderProgram& lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  FullscreenTriangle fullscreen_;
   glm::uvec2 tiles_{0};
   std::unique_ptr<LightIndexList> list_;
 };
