@@ -1,13 +1,10 @@
 // The cluster grid: the GPU's light lists equal a CPU computation of the same
 // grid (as sets), every depth maps to a valid slice in GLSL and C++ alike, lists
 // grow instead of dropping lights, and --active-clusters changes no pixel.
-#include <filesystem>
-#include <fstream>
-
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
-#include "gfx/shader_program.hpp"
+#include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/clustered.hpp"
@@ -66,35 +63,9 @@ TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
   std::vector<float> depths{0.0f, view.near_plane * 0.5f, view.near_plane, view.far_plane, view.far_plane * 2.0f};
   for (int i = 0; i <= 400; ++i) depths.push_back(view.near_plane * std::pow(view.far_plane / view.near_plane, i / 400.0f));
 
-  const auto folder = std::filesystem::temp_directory_path() / ("atrium_slices_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
-  std::ofstream(folder / "slice_probe.comp") << "#version 450 core\n"
-                                                "layout(local_size_x = 64) in;\n"
-                                                "#include \"common/frame.glsl\"\n"
-                                                "#include \"common/clusters.glsl\"\n"
-                                                "layout(std430, binding = 7) readonly buffer In { float depths[]; };\n"
-                                                "layout(std430, binding = 8) writeonly buffer Out { uint slices[]; };\n"
-                                                "uniform uint u_count;\n"
-                                                "void main() {\n"
-                                                "  uint i = gl_GlobalInvocationID.x;\n"
-                                                "  if (i < u_count) slices[i] = cluster_slice(depths[i]);\n"
-                                                "}\n";
-  gfx::ShaderSearchPath path{folder};
-  for (const auto& p : gfx::default_shader_path()) path.push_back(p);
-  gfx::ShaderProgram probe = gfx::ShaderProgram::load({"slice_probe.comp"}, {}, path);
-  std::filesystem::remove_all(folder);
-  gfx::Buffer input = gfx::create_buffer(), output = gfx::create_buffer();
-  glNamedBufferStorage(input.id(), static_cast<GLsizeiptr>(depths.size() * sizeof(float)), depths.data(), 0);
-  glNamedBufferStorage(output.id(), static_cast<GLsizeiptr>(depths.size() * sizeof(std::uint32_t)), nullptr, 0);
-  grid.bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, input.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, output.id());
-  probe.set("u_count", static_cast<unsigned>(depths.size()));
-  probe.use();
-  glDispatchCompute(static_cast<GLuint>((depths.size() + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<std::uint32_t> slices(depths.size());
-  glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(slices.size() * sizeof(std::uint32_t)), slices.data());
+  const std::vector<std::uint32_t> slices = testing::evaluate_glsl<std::uint32_t>(
+      "#include \"common/frame.glsl\"\n#include \"common/clusters.glsl\"\n", "float", "uint", "cluster_slice(value)", depths,
+      [&] { grid.bind(); });
   int disagreements = 0;
   for (std::size_t i = 0; i < depths.size(); ++i) {
     EXPECT_LT(slices[i], grid.dims().z) << "depth " << depths[i];

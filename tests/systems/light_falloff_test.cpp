@@ -3,10 +3,8 @@
 // evaluates the GLSL at many (distance, radius) pairs and the results must
 // match the C++ function.
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 
-#include "gfx/shader_program.hpp"
+#include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
 #include "systems/lighting/light_falloff.hpp"
 
@@ -14,40 +12,6 @@ namespace atrium::lighting {
 namespace {
 
 using LightFalloff = testing::GlTest;
-
-std::vector<float> evaluate_glsl(const std::vector<glm::vec2>& samples) {
-  const auto folder = std::filesystem::temp_directory_path() / ("atrium_falloff_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(folder);
-  std::ofstream(folder / "falloff_probe.comp")
-      << "#version 450 core\n"
-         "layout(local_size_x = 64) in;\n"
-         "#include \"common/attenuation.glsl\"\n"
-         "layout(std430, binding = 1) readonly buffer Samples { vec2 samples[]; };\n"
-         "layout(std430, binding = 2) writeonly buffer Results { float results[]; };\n"
-         "uniform uint u_count;\n"
-         "void main() {\n"
-         "  uint i = gl_GlobalInvocationID.x;\n"
-         "  if (i < u_count) results[i] = light_attenuation(samples[i].x, samples[i].y);\n"
-         "}\n";
-  gfx::ShaderSearchPath path{folder};
-  for (const auto& p : gfx::default_shader_path()) path.push_back(p);
-  gfx::ShaderProgram program = gfx::ShaderProgram::load({"falloff_probe.comp"}, {}, path);
-  std::filesystem::remove_all(folder);
-
-  gfx::Buffer input = gfx::create_buffer();
-  gfx::Buffer output = gfx::create_buffer();
-  glNamedBufferStorage(input.id(), static_cast<GLsizeiptr>(samples.size() * sizeof(glm::vec2)), samples.data(), 0);
-  glNamedBufferStorage(output.id(), static_cast<GLsizeiptr>(samples.size() * sizeof(float)), nullptr, 0);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, input.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, output.id());
-  program.set("u_count", static_cast<unsigned>(samples.size()));
-  program.use();
-  glDispatchCompute(static_cast<GLuint>((samples.size() + 63) / 64), 1, 1);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<float> results(samples.size());
-  glGetNamedBufferSubData(output.id(), 0, static_cast<GLsizeiptr>(results.size() * sizeof(float)), results.data());
-  return results;
-}
 
 TEST_F(LightFalloff, GlslAndCppAgreeEverywhere) {
   std::vector<glm::vec2> samples;
@@ -59,7 +23,8 @@ TEST_F(LightFalloff, GlslAndCppAgreeEverywhere) {
   }
   samples.emplace_back(1.0f, 0.0f);   // no radius: no light
   samples.emplace_back(1.0f, -2.0f);  // negative radius: no light
-  const std::vector<float> gpu = evaluate_glsl(samples);
+  const std::vector<float> gpu = testing::evaluate_glsl<float>(
+      "#include \"common/attenuation.glsl\"\n", "vec2", "float", "light_attenuation(value.x, value.y)", samples);
   for (std::size_t i = 0; i < samples.size(); ++i) {
     const float cpu = light_attenuation(samples[i].x, samples[i].y);
     EXPECT_NEAR(gpu[i], cpu, 1e-5f * std::max(1.0f, std::abs(cpu)))
