@@ -66,8 +66,7 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   const std::size_t total = options.light_counts.size() * modes.size() * std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
-    World world({options.scene, lights, "forward", 1, options.size, options.shading});
-    world.registry().resource<RendererSettings>().technique_options = options.technique_options;
+    World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options});
     apply_radius(world, options, lights);
     std::vector<int> views = options.views;
     if (views.empty()) {

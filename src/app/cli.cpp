@@ -260,6 +260,11 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   return options;
 }
 
+WorldOptions world_options(const CliOptions& options) {
+  return {options.scene, options.lights,     options.mode,       options.view,
+          options.size,  options.shading,    options.debug_view, options.technique_options};
+}
+
 namespace {
 
 int run_render(const CliOptions& options) {
@@ -268,9 +273,7 @@ int run_render(const CliOptions& options) {
     throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");
   }
   const auto context = gfx::HeadlessContext::create();
-  World world({options.scene, options.lights, options.mode, options.view, options.size, options.shading});
-  world.registry().resource<RendererSettings>().debug_view = options.debug_view;
-  world.registry().resource<RendererSettings>().technique_options = options.technique_options;
+  World world(world_options(options));
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
@@ -292,7 +295,9 @@ int run_render(const CliOptions& options) {
 
 int run_info(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
-  World world({options.scene, options.lights, options.mode, 1, {16, 16}});
+  WorldOptions loaded = world_options(options);
+  loaded.size = {16, 16};  // info renders nothing worth a large target
+  World world(loaded);
   const SceneInfo info = gather_info(world, options.scene);
   std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);
   return kExitOk;
@@ -301,8 +306,9 @@ int run_info(const CliOptions& options) {
 // Every mode at every view against forward: PSNR and largest channel difference.
 int run_compare(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
-  World world({options.scene, options.lights, "forward", 1, options.size, options.shading});
-  world.registry().resource<RendererSettings>().technique_options = options.technique_options;
+  WorldOptions compared = world_options(options);
+  compared.mode = "forward";
+  World world(compared);
   std::printf("%-24s %-18s %10s %9s\n", "mode", "view", "PSNR", "max diff");
   bool all_close = true;
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {

@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "app/bench.hpp"
+#include "app/world.hpp"
 #include "systems/lighting/technique_options.hpp"
 
 namespace atrium {
@@ -57,5 +58,8 @@ int run_command(const CliOptions& options);
 int run_cli(int argc, char** argv);
 
 int run_window(const CliOptions& options);
+
+// The World every command builds from the parsed options.
+[[nodiscard]] WorldOptions world_options(const CliOptions& options);
 
 }  // namespace atrium

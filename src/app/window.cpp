@@ -46,10 +46,8 @@ int run_window(const CliOptions& options) {
   glfwSetWindowUserPointer(window, &keys);
   glfwSetKeyCallback(window, on_key);
 
-  World world({options.scene, options.lights, options.mode, options.view, options.size, options.shading});
+  World world(world_options(options));
   world.registry().resource<RendererSettings>().present_to_window = true;
-  world.registry().resource<RendererSettings>().debug_view = options.debug_view;
-  world.registry().resource<RendererSettings>().technique_options = options.technique_options;
   std::printf("renderer: %s\nmode: %s\nview: %d %s\n", context->info().renderer.c_str(), world.mode().c_str(),
               world.view(), world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str());
   std::fflush(stdout);

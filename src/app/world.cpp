@@ -119,7 +119,10 @@ void World::start(const WorldOptions& options) {
   spawn(registry_, scene_);
 
   set_mode(options.mode.value_or(scene_.default_mode));
-  registry_.resource<RendererSettings>().shading = options.shading;
+  auto& settings = registry_.resource<RendererSettings>();
+  settings.shading = options.shading;
+  settings.debug_view = options.debug_view;
+  settings.technique_options = options.technique_options;
   set_view(options.view);
 
   register_camera(scheduler_);

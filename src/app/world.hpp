@@ -13,6 +13,7 @@
 #include "assets/scene.hpp"
 #include "assets/scene_file.hpp"
 #include "ecs/scheduler.hpp"
+#include "systems/lighting/technique_options.hpp"
 #include "systems/mesh_renderer.hpp"
 
 namespace atrium {
@@ -30,6 +31,8 @@ struct WorldOptions {
   int view = 1;                         // 1-based index into the scene's views
   glm::ivec2 size{1280, 720};
   std::string shading = "pbr";          // a name from systems/lighting/shading_model.hpp
+  std::string debug_view;               // empty, or a name from systems/lighting/debug_views.hpp
+  lighting::TechniqueOptions technique_options;
 };
 
 class World {
