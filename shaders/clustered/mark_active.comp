@@ -14,7 +14,5 @@ void main() {
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   float depth = texelFetch(u_depth, pixel, 0).r;
   if (depth >= 1.0) return;
-  float ndc = depth * 2.0 - 1.0;
-  float view_depth = 2.0 * u_near * u_far / (u_far + u_near - ndc * (u_far - u_near));
-  u_active[cluster_index(vec2(pixel) + 0.5, u_viewport_size, view_depth)] = 1u;
+  u_active[cluster_index(vec2(pixel) + 0.5, u_viewport_size, view_depth_from_depth(depth))] = 1u;
 }

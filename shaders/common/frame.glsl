@@ -15,3 +15,10 @@ layout(std140, binding = 0) uniform FrameBlock {
   float u_far;
   vec2 u_frame_padding;
 };
+
+// View depth (metres in front of the camera) of a depth-buffer value, for the
+// perspective projection built from u_near and u_far.
+float view_depth_from_depth(float depth) {
+  float ndc = depth * 2.0 - 1.0;
+  return 2.0 * u_near * u_far / (u_far + u_near - ndc * (u_far - u_near));
+}

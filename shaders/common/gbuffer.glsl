@@ -1,6 +1,8 @@
-// The full G-buffer of the deferred techniques (reference layout), written by
-// the geometry pass and read back into a Surface by lighting passes. C++ side:
-// GBuffer in src/systems/lighting/gbuffer.cpp (formats, bytes per pixel).
+// The G-buffer of the deferred techniques, written by the geometry pass and read
+// back into a Surface by lighting passes. C++ side: GBuffer in
+// src/systems/lighting/gbuffer.hpp (formats, bytes per pixel). Needs frame.glsl.
+#ifndef COMPACT_GBUFFER
+// Full layout (--gbuffer full, the reference's five targets, 44 B/px with depth):
 //   0 position           RGBA32F      xyz world position, w = 1 where geometry was drawn
 //   1 albedo, occlusion  SRGB8_ALPHA8 rgb base colour, a ambient occlusion
 //   2 normal             RGBA16       xyz world-space shading normal * 0.5 + 0.5 (16-bit
@@ -8,7 +10,44 @@
 //                                     sharp GGX highlights visibly)
 //   3 metal-rough        RGBA8        r metallic, g roughness
 //   4 emissive           RGBA16F      rgb emitted radiance
+#else
+// Compact layout (--gbuffer compact, two targets, 24 B/px with depth):
+//   0 albedo, occlusion  SRGB8_ALPHA8 as above
+//   1 packed             RGBA32UI     x octahedral normal, 2 x 16-bit unorm
+//                                     y emissive r, g as half floats
+//                                     z emissive b (half, low 16 bits), metallic and
+//                                       roughness (8-bit unorm each, high 16 bits)
+//                                     w distance from the camera, 32-bit float; 0 = no
+//                                       geometry. Position = camera + view ray * distance.
+// The distance sits in the spare fourth word instead of being read from the depth
+// buffer: light-volumes writes stencil into that buffer while lighting, and
+// sampling a texture that is being written is a feedback loop. It also keeps 32
+// bits of precision where DEPTH24 would lose it with a far plane 1000x the near.
+
+vec2 sign_not_zero(vec2 v) { return vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
+
+// Unit vector to the octahedron unfolded onto [-1, 1]^2.
+vec2 octahedral_encode(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * sign_not_zero(n.xy);
+}
+
+vec3 octahedral_decode(vec2 p) {
+  vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
+  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * sign_not_zero(n.xy);
+  return normalize(n);
+}
+
+// World-space direction from the camera through the centre of `pixel`.
+vec3 view_ray(ivec2 pixel) {
+  vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
+  vec4 far_point = u_inverse_view_projection * vec4(ndc, 1.0, 1.0);
+  return normalize(far_point.xyz / far_point.w - u_camera_position.xyz);
+}
+#endif
+
 #ifdef GBUFFER_WRITE
+#ifndef COMPACT_GBUFFER
 layout(location = 0) out vec4 out_position;
 layout(location = 1) out vec4 out_albedo;
 layout(location = 2) out vec4 out_normal;
@@ -23,6 +62,20 @@ void write_gbuffer(Surface s) {
   out_emissive = vec4(s.emissive, 0.0);
 }
 #else
+layout(location = 0) out vec4 out_albedo;
+layout(location = 1) out uvec4 out_words;
+
+void write_gbuffer(Surface s) {
+  out_albedo = vec4(s.albedo, s.occlusion);
+  out_words.x = packUnorm2x16(octahedral_encode(s.normal) * 0.5 + 0.5);
+  out_words.y = packHalf2x16(s.emissive.rg);
+  out_words.z = (packHalf2x16(vec2(s.emissive.b, 0.0)) & 0xffffu) |
+                 (packUnorm4x8(vec4(0.0, 0.0, s.metallic, s.roughness)) & 0xffff0000u);
+  out_words.w = floatBitsToUint(max(length(s.position - u_camera_position.xyz), 1e-30));
+}
+#endif
+#else
+#ifndef COMPACT_GBUFFER
 layout(binding = 0) uniform sampler2D u_gbuffer_position;
 layout(binding = 1) uniform sampler2D u_gbuffer_albedo;
 layout(binding = 2) uniform sampler2D u_gbuffer_normal;
@@ -45,4 +98,24 @@ bool read_gbuffer(ivec2 pixel, out Surface s) {
   s.emissive = texelFetch(u_gbuffer_emissive, pixel, 0).rgb;
   return true;
 }
+#else
+layout(binding = 0) uniform sampler2D u_gbuffer_albedo;
+layout(binding = 1) uniform usampler2D u_gbuffer_packed;
+
+bool read_gbuffer(ivec2 pixel, out Surface s) {
+  uvec4 words = texelFetch(u_gbuffer_packed, pixel, 0);
+  if (words.w == 0u) return false;
+  vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
+  vec4 mr = unpackUnorm4x8(words.z);
+  s.position = u_camera_position.xyz + view_ray(pixel) * uintBitsToFloat(words.w);
+  s.normal = octahedral_decode(unpackUnorm2x16(words.x) * 2.0 - 1.0);
+  s.albedo = albedo.rgb;
+  s.alpha = 1.0;
+  s.occlusion = albedo.a;
+  s.metallic = mr.z;
+  s.roughness = mr.w;
+  s.emissive = vec3(unpackHalf2x16(words.y), unpackHalf2x16(words.z).x);
+  return true;
+}
+#endif
 #endif

@@ -22,9 +22,7 @@ void main() {
 #if DEBUG_VIEW == 5
   // Linear view depth, near white, far black, on a log scale.
   float d = texelFetch(u_depth, pixel, 0).r;
-  float z_ndc = d * 2.0 - 1.0;
-  float view_z = 2.0 * u_near * u_far / (u_far + u_near - z_ndc * (u_far - u_near));
-  color = vec3(d < 1.0 ? 1.0 - log2(view_z / u_near) / log2(u_far / u_near) : 0.0);
+  color = vec3(d < 1.0 ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
 #else
   if (covered) {
 #if DEBUG_VIEW == 0

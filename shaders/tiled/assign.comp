@@ -61,8 +61,7 @@ void main() {
   if (all(lessThan(pixel, ivec2(u_viewport_size)))) {
     float depth = texelFetch(u_depth, pixel, 0).r;
     if (depth < 1.0) {
-      float ndc = depth * 2.0 - 1.0;
-      float view_depth = 2.0 * u_near * u_far / (u_far + u_near - ndc * (u_far - u_near));
+      float view_depth = view_depth_from_depth(depth);
       atomicMin(s_min_depth, floatBitsToUint(view_depth));
       atomicMax(s_max_depth, floatBitsToUint(view_depth));
     }

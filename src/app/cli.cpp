@@ -1,5 +1,6 @@
 #include "app/cli.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
@@ -128,7 +129,7 @@ std::string help_text() {
          "  atrium render [SCENE] --out FILE.png [options]\n"
          "                                           render one frame headless to a PNG\n"
          "  atrium info [SCENE] [--json]             what the scene holds and what loading cost\n"
-         "  atrium compare [SCENE] [--size WxH] [--lights N] [--shading S]\n"
+         "  atrium compare [SCENE] [--size WxH] [--lights N] [--shading S] [--gbuffer L]\n"
          "                                           every mode at every view against forward (PSNR,\n"
          "                                           largest difference); exit 1 under 40 dB\n"
          "  atrium bench [SCENE] [--modes all|LIST] [--lights LIST] [--views all|LIST] [--size WxH]\n"
@@ -147,9 +148,12 @@ std::string help_text() {
          "  --shading S     shading model: pbr (default), blinn-phong or phong\n"
          "  --cluster-grid XxYxZ  clustered modes: clusters per axis (default 16x9x24)\n"
          "  --active-clusters     clustered modes: only clusters holding visible pixels get lights\n"
+         "  --gbuffer L     deferred modes: G-buffer layout, full (5 targets, 44 B/px, default)\n"
+         "                  or compact (2 targets, 24 B/px; position from depth, octahedral normal)\n"
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
-         "                  emissive, depth, light-volumes (outlines) or heatmap (lights\n"
-         "                  evaluated per pixel in the current mode)\n"
+         "                  emissive, depth, light-volumes (outlines), heatmap (lights\n"
+         "                  evaluated per pixel in the current mode), light-lists (lights in\n"
+         "                  each pixel's tile or cluster list) or depth-slices (cluster slices)\n"
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
@@ -210,6 +214,12 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
           parse_number<unsigned>("--cluster-grid", std::string_view(text).substr(x2 + 1), 2, 256)};
     } else if (arg == "--active-clusters") {
       options.technique_options.active_clusters = true;
+    } else if (arg == "--gbuffer") {
+      const std::string_view layout = value();
+      const auto& names = lighting::kGBufferLayoutNames;
+      const auto found = std::find(names.begin(), names.end(), layout);
+      if (found == names.end()) throw UsageError("unknown G-buffer layout '" + std::string(layout) + "' (layouts: full, compact)");
+      options.technique_options.gbuffer_layout = static_cast<lighting::GBufferLayout>(found - names.begin());
     } else if (arg == "--debug-view") {
       options.debug_view = std::string(value());
       if (lighting::debug_view_index(options.debug_view) < 0) {
@@ -275,6 +285,9 @@ int run_render(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
   World world(world_options(options));
   world.frame(0.0);
+  // The first frame sizes the light lists (and shows them as overflowed);
+  // the light-lists view is meant to show them as they settle.
+  if (options.debug_view == "light-lists") world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
   std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles in %zu draws, %s)\n",

@@ -78,19 +78,19 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
   if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
   const bool counting = debug_view == lighting::kHeatmapView;
-  if (settings.shading != shading_ || counting != counting_) {
+  if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_) {
     const int model = lighting::shading_model_index(settings.shading);
     if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
     std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
     if (counting) globals.push_back({"COUNT_LIGHTS"});
+    if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
     gpu_.shaders().set_global_defines(std::move(globals));
     shading_ = settings.shading;
     counting_ = counting;
-    technique_.reset();  // its programs were compiled with the old globals
-  }
-  if (settings.technique_options != technique_options_) {
     technique_options_ = settings.technique_options;
+    // Their programs were compiled with the old globals, their G-buffers in the old layout.
     technique_.reset();
+    debug_views_.reset();
   }
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
 
@@ -125,7 +125,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                      timer_,     view.view, view.projection, view.near_plane,
                                      view.far_plane};
   if (debug_view >= 0 && !debug_views_) {
-    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_);
+    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_, technique_options_);
     debug_views_->resize(targets());
   }
   if (counting) debug_views_->begin_counting();
@@ -151,7 +151,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
 
   // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
-    debug_views_->draw(debug_view, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
+    debug_views_->draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
     if (counting) stats_.light_evaluations_per_pixel = debug_views_->average_light_evaluations();
   }
 

@@ -1,12 +1,18 @@
-// Debug views: each renders something, each differs from the others, and the
-// heatmap's counts are the light evaluations each mode really performs.
+// Debug views: each renders something, each differs from the others, the
+// heatmap's counts are the light evaluations each mode really performs, and the
+// light-lists and depth-slices views show the bins the tiled and clustered
+// modes really built (checked against the lists read back and a CPU slicing).
 #include <cmath>
+#include <map>
+#include <set>
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
 #include "support/gl_test.hpp"
+#include "systems/lighting/clustered.hpp"
 #include "systems/lighting/debug_views.hpp"
+#include "systems/lighting/tiled.hpp"
 
 namespace atrium {
 namespace {
@@ -16,11 +22,13 @@ constexpr glm::ivec2 kSize{160, 90};
 using DebugViewRender = testing::GlTest;
 
 TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
-  World world({"atrium", 48u, "deferred", 1, kSize});
+  // Clustered deferred has a G-buffer and light lists: every view has something to show.
+  World world({"atrium", 48u, "clustered-deferred", 1, kSize});
   std::vector<assets::Image> images;
   for (const auto name : lighting::kDebugViews) {
     world.registry().resource<RendererSettings>().debug_view = std::string(name);
     world.frame(0.0);
+    world.frame(0.0);  // past the first frame's list growth
     images.push_back(world.renderer().read_output());
     assets::write_png("debug_view_" + std::string(name) + ".png", images.back());
     int lit = 0;
@@ -74,6 +82,169 @@ TEST_F(DebugViewRender, HeatmapCountsWhatEachModeEvaluates) {
   EXPECT_LE(volumes, radius * 1.1);
   EXPECT_GE(instanced, volumes) << "without the stencil, pixels in front of a sphere are shaded too";
   EXPECT_GE(forward, deferred) << "forward shades overdrawn fragments too";
+}
+
+struct Rgb {
+  std::uint8_t r, g, b;
+  auto operator<=>(const Rgb&) const = default;
+};
+
+Rgb pixel(const assets::Image& image, int x, int y) {
+  const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) + static_cast<std::size_t>(x)) * 4;
+  return {image.rgba[i], image.rgba[i + 1], image.rgba[i + 2]};
+}
+
+constexpr Rgb kMagenta{255, 0, 255}, kBlack{0, 0, 0};
+
+float view_depth(World& world, float depth) {
+  const auto& view = world.registry().resource<ViewState>();
+  const float ndc = depth * 2.0f - 1.0f;
+  return 2.0f * view.near_plane * view.far_plane / (view.far_plane + view.near_plane - ndc * (view.far_plane - view.near_plane));
+}
+
+// The bin each covered pixel (top-down image order) reads, -1 for background,
+// worked out on the CPU from the depth buffer and the technique's layout.
+std::vector<int> pixel_bins(World& world) {
+  const std::vector<float> depth = world.renderer().read_depth();
+  std::vector<int> bins(depth.size(), -1);
+  const lighting::LightingTechnique* technique = world.renderer().technique();
+  const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique);
+  const auto* clustered = dynamic_cast<const lighting::ClusteredTechnique*>(technique);
+  for (int y = 0; y < kSize.y; ++y) {
+    for (int x = 0; x < kSize.x; ++x) {
+      const std::size_t i = static_cast<std::size_t>(y * kSize.x + x);
+      if (depth[i] >= 1.0f) continue;
+      const int gl_y = kSize.y - 1 - y;
+      if (tiled) {
+        bins[i] = gl_y / lighting::kTileSize * static_cast<int>(tiled->tiles().x) + x / lighting::kTileSize;
+      } else {
+        const glm::uvec3 dims = clustered->grid().dims();
+        const glm::uvec2 tile = glm::uvec2(glm::clamp(glm::vec2(x + 0.5f, gl_y + 0.5f) / glm::vec2(kSize) * glm::vec2(dims),
+                                                      glm::vec2(0.0f), glm::vec2(dims) - 1.0f));
+        bins[i] = static_cast<int>((clustered->grid().slice_of(view_depth(world, depth[i])) * dims.y + tile.y) * dims.x + tile.x);
+      }
+    }
+  }
+  return bins;
+}
+
+std::vector<std::vector<std::uint32_t>> read_lists(World& world) {
+  const lighting::LightingTechnique* technique = world.renderer().technique();
+  if (const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique)) return tiled->list().read();
+  return dynamic_cast<const lighting::ClusteredTechnique*>(technique)->grid().read_lists();
+}
+
+class LightListView : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+
+TEST_P(LightListView, ColoursEachPixelByItsBinsLightCount) {
+  World world({"atrium", 256u, GetParam(), 1, kSize});
+  world.registry().resource<RendererSettings>().debug_view = "light-lists";
+  world.frame(0.0);
+  world.frame(0.0);
+  const assets::Image image = world.renderer().read_output();
+  assets::write_png("debug_view_light_lists_" + GetParam() + ".png", image);
+  const std::vector<int> bins = pixel_bins(world);
+  const auto lists = read_lists(world);
+  // Per light count: the colours its pixels got and their mean luma. Pixels on
+  // a slice boundary may round into the neighbouring cluster: allow 2%.
+  std::map<std::size_t, std::map<Rgb, int>> colours;
+  std::map<std::size_t, double> luma_sum;
+  int covered = 0;
+  for (int y = 0; y < kSize.y; ++y) {
+    for (int x = 0; x < kSize.x; ++x) {
+      const int bin = bins[static_cast<std::size_t>(y * kSize.x + x)];
+      if (bin < 0) continue;
+      ++covered;
+      const std::size_t count = lists[static_cast<std::size_t>(bin)].size();
+      ++colours[count][pixel(image, x, y)];
+      luma_sum[count] += assets::luma(image, x, y);
+      EXPECT_NE(pixel(image, x, y), kMagenta) << "nothing overflowed in the second frame";
+    }
+  }
+  int agreeing = 0;
+  std::set<Rgb> used;
+  double previous_luma = -1.0;
+  for (const auto& [count, seen] : colours) {
+    const auto majority = std::max_element(seen.begin(), seen.end(), [](auto& a, auto& b) { return a.second < b.second; });
+    agreeing += majority->second;
+    if (count == 0) EXPECT_EQ(majority->first, kBlack) << "empty bins are black";
+    EXPECT_TRUE(used.insert(majority->first).second) << "count " << count << " shares its colour with another count";
+    int pixels = 0;
+    for (const auto& entry : seen) pixels += entry.second;
+    const double mean_luma = luma_sum[count] / pixels;
+    if (count > 0) EXPECT_GT(mean_luma, previous_luma) << "more lights read lighter (count " << count << ")";
+    previous_luma = mean_luma;
+  }
+  EXPECT_GE(colours.size(), 4u) << "the view spans several counts";
+  EXPECT_GE(agreeing, covered * 98 / 100);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, LightListView, ::testing::Values("tiled-deferred", "clustered-deferred", "clustered-forward"),
+                         [](const auto& info) {
+                           std::string name = info.param;
+                           for (char& c : name) if (c == '-') c = '_';
+                           return name;
+                         });
+
+TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
+  World world({"atrium", 1024u, "clustered-deferred", 1, kSize});
+  world.registry().resource<RendererSettings>().debug_view = "light-lists";
+  auto magenta_pixels = [&] {
+    const assets::Image image = world.renderer().read_output();
+    int magenta = 0;
+    for (int y = 0; y < kSize.y; ++y) {
+      for (int x = 0; x < kSize.x; ++x) magenta += pixel(image, x, y) == kMagenta;
+    }
+    return magenta;
+  };
+  world.frame(0.0);  // the list starts small: this frame's lists overflow it and it grows
+  ASSERT_EQ(world.renderer().stats().light_list_overflows, 1u);
+  EXPECT_GT(magenta_pixels(), 0);
+  world.frame(0.0);
+  EXPECT_EQ(world.renderer().stats().light_list_overflows, 1u);
+  EXPECT_EQ(magenta_pixels(), 0);
+}
+
+TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
+  World world({"atrium", 16u, "deferred", 1, kSize});
+  world.registry().resource<RendererSettings>().debug_view = "light-lists";
+  world.frame(0.0);
+  const assets::Image image = world.renderer().read_output();
+  EXPECT_EQ(pixel(image, 0, 0), pixel(image, kSize.x / 2, kSize.y / 2));
+  EXPECT_EQ(pixel(image, 0, 0), (Rgb{38, 38, 38}));
+}
+
+TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyMode) {
+  for (const char* mode : {"forward", "clustered-deferred"}) {
+    World world({"atrium", 16u, mode, 1, kSize});
+    world.registry().resource<RendererSettings>().debug_view = "depth-slices";
+    world.frame(0.0);
+    const assets::Image image = world.renderer().read_output();
+    assets::write_png(std::string("debug_view_depth_slices_") + mode + ".png", image);
+    const std::vector<float> depth = world.renderer().read_depth();
+    lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid);
+    const auto& view = world.registry().resource<ViewState>();
+    grid.update(view.projection, view.near_plane, view.far_plane);
+    std::map<std::uint32_t, std::map<Rgb, int>> colours;
+    int covered = 0;
+    for (int y = 0; y < kSize.y; ++y) {
+      for (int x = 0; x < kSize.x; ++x) {
+        const float d = depth[static_cast<std::size_t>(y * kSize.x + x)];
+        if (d >= 1.0f) continue;
+        ++covered;
+        ++colours[grid.slice_of(view_depth(world, d))][pixel(image, x, y)];
+      }
+    }
+    EXPECT_GE(colours.size(), 4u) << mode << ": the view spans several slices";
+    int agreeing = 0;
+    std::set<Rgb> used;
+    for (const auto& [slice, seen] : colours) {
+      const auto majority = std::max_element(seen.begin(), seen.end(), [](auto& a, auto& b) { return a.second < b.second; });
+      agreeing += majority->second;
+      EXPECT_TRUE(used.insert(majority->first).second) << mode << ": slice " << slice << " shares its colour";
+    }
+    EXPECT_GE(agreeing, covered * 98 / 100) << mode;
+  }
 }
 
 }  // namespace

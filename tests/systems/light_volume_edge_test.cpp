@@ -9,6 +9,7 @@
 #include "assets/mesh_builder.hpp"
 #include "components/camera.hpp"
 #include "support/gl_test.hpp"
+#include "support/modes.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
@@ -27,7 +28,8 @@ struct EdgeCase {
 };
 
 // A floor and a back wall, seen from (0, 0.5, 5) looking along -Z.
-std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode) {
+std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
+                                  lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
   assets::AssetManager manager;
   assets::MeshAsset room;
   assets::Material material;
@@ -62,7 +64,7 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode) {
   }
   scene.lights = c.lights;
   scene.views.push_back({"eye", c.eye, 0.0f, c.pitch_degrees});
-  auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize});
+  auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize, "pbr", "", testing::with_layout(layout)});
   world->registry().view<Camera>().each([&](Camera& camera) {
     camera.near_plane = c.near_plane;
     camera.far_plane = c.far_plane;
@@ -70,8 +72,8 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode) {
   return world;
 }
 
-assets::Image render(const EdgeCase& c, const std::string& mode) {
-  const auto world = make_world(c, mode);
+assets::Image render(const EdgeCase& c, const std::string& mode, lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
+  const auto world = make_world(c, mode, layout);
   world->frame(0.0);
   return world->renderer().read_output();
 }
@@ -124,10 +126,12 @@ const EdgeCase kCases[] = {
     {"straddling_edges", straddling_lights()},
 };
 
-class VolumeEdgeCase : public testing::GlTest, public ::testing::WithParamInterface<std::tuple<std::string, int>> {};
+class VolumeEdgeCase : public testing::GlTest,
+                       public ::testing::WithParamInterface<std::tuple<std::string, int, lighting::GBufferLayout>> {};
 
 TEST_P(VolumeEdgeCase, MatchesForward) {
-  const auto& [mode, index] = GetParam();
+  const auto& [mode, index, layout] = GetParam();
+  const std::string name = testing::test_name(mode, layout);
   const EdgeCase& c = kCases[index];
   const assets::Image reference = render(c, "forward");
   double lit = 0;
@@ -135,25 +139,18 @@ TEST_P(VolumeEdgeCase, MatchesForward) {
     for (int x = 0; x < kSize.x; ++x) lit += assets::luma(reference, x, y) > 0.15;
   }
   ASSERT_GT(lit, kSize.x * kSize.y * 0.02) << c.name << ": the light must visibly reach the scene";
-  const assets::Image image = render(c, mode);
-  assets::write_png(std::string("edge_") + c.name + "_" + mode + ".png", image);
-  EXPECT_GE(assets::psnr(reference, image), 40.0) << mode << " " << c.name;
-  EXPECT_LE(assets::max_channel_difference(reference, image), 8) << mode << " " << c.name;
+  const assets::Image image = render(c, mode, layout);
+  assets::write_png(std::string("edge_") + c.name + "_" + name + ".png", image);
+  EXPECT_GE(assets::psnr(reference, image), 40.0) << name << " " << c.name;
+  EXPECT_LE(assets::max_channel_difference(reference, image), 8) << name << " " << c.name;
 }
 
-std::vector<std::string> non_forward_modes() {
-  std::vector<std::string> modes;
-  for (const auto& info : lighting::technique_table()) {
-    if (info.name != "forward") modes.emplace_back(info.name);
-  }
-  return modes;
-}
-
-INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase, ::testing::Combine(::testing::ValuesIn(non_forward_modes()), ::testing::Range(0, 7)),
+INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase,
+                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()), ::testing::Range(0, 7),
+                                            ::testing::ValuesIn(testing::gbuffer_layouts())),
                          [](const auto& info) {
-                           std::string name = std::get<0>(info.param) + "_" + kCases[std::get<1>(info.param)].name;
-                           for (char& ch : name) if (ch == '-') ch = '_';
-                           return name;
+                           return testing::test_name(std::get<0>(info.param), std::get<2>(info.param)) + "_" +
+                                  kCases[std::get<1>(info.param)].name;
                          });
 
 using BlendedPanes = testing::GlTest;

@@ -1,6 +1,7 @@
 // Every lighting technique draws the picture forward draws: each mode in the
-// technique table against forward on the built-in scene at 160x90 from all
-// five views, PSNR at least 40 dB. New techniques are covered by their row.
+// technique table, with each G-buffer layout, against forward on the built-in
+// scene at 160x90 from all five views, PSNR at least 40 dB. New techniques are
+// covered by their row.
 #include <cmath>
 
 #include "app/world.hpp"
@@ -8,6 +9,7 @@
 #include "components/frame_resources.hpp"
 #include "gfx/gl_object.hpp"
 #include "support/gl_test.hpp"
+#include "support/modes.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
@@ -15,38 +17,32 @@ namespace {
 
 constexpr glm::ivec2 kSize{160, 90};
 
-class TechniqueMatchesForward : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
+class TechniqueMatchesForward : public testing::GlTest,
+                                public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
 
 TEST_P(TechniqueMatchesForward, FromEveryView) {
-  World world({"atrium", std::nullopt, "forward", 1, kSize});
+  const auto& [mode, layout] = GetParam();
+  const std::string name = testing::test_name(mode, layout);
+  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", testing::with_layout(layout)});
   for (int view = 1; view <= 5; ++view) {
     world.set_view(view);
     world.set_mode("forward");
     world.frame(0.0);
     const assets::Image reference = world.renderer().read_output();
-    world.set_mode(GetParam());
+    world.set_mode(mode);
     world.frame(0.0);
     const assets::Image image = world.renderer().read_output();
-    assets::write_png("compare_" + GetParam() + "_view" + std::to_string(view) + ".png", image);
+    assets::write_png("compare_" + name + "_view" + std::to_string(view) + ".png", image);
     const double psnr = assets::psnr(reference, image);
-    EXPECT_GE(psnr, 40.0) << GetParam() << " view " << view;
-    EXPECT_LE(assets::max_channel_difference(reference, image), 8) << GetParam() << " view " << view;
+    EXPECT_GE(psnr, 40.0) << name << " view " << view;
+    EXPECT_LE(assets::max_channel_difference(reference, image), 8) << name << " view " << view;
   }
 }
 
-std::vector<std::string> non_forward_modes() {
-  std::vector<std::string> modes;
-  for (const auto& info : lighting::technique_table()) {
-    if (info.name != "forward") modes.emplace_back(info.name);
-  }
-  return modes;
-}
-
-INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward, ::testing::ValuesIn(non_forward_modes()), [](const auto& info) {
-  std::string name = info.param;
-  for (char& c : name) if (c == '-') c = '_';
-  return name;
-});
+INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward,
+                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()),
+                                            ::testing::ValuesIn(testing::gbuffer_layouts())),
+                         [](const auto& info) { return testing::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
 using ShadingModels = testing::GlTest;
 

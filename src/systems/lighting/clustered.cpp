@@ -16,7 +16,8 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
       shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
                         : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
-      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      gbuffer_(options.gbuffer_layout) {}
 
 void ClusteredTechnique::resize(const FrameTargets& targets) {
   if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);

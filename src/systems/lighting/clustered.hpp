@@ -22,6 +22,10 @@ class ClusteredTechnique final : public LightingTechnique {
   [[nodiscard]] ListStats light_lists() const override {
     return {grid_.list().last_total(), grid_.list().overflow_frames()};
   }
+  [[nodiscard]] LightBins bind_light_bins() const override {
+    grid_.bind();
+    return {Binning::Clusters, {}, 0, grid_.list().overflow_capacity()};
+  }
 
  private:
   void mark_active_clusters(const FrameTargets& targets);

@@ -18,7 +18,8 @@ std::string debug_view_names() {
   return names;
 }
 
-DebugViews::DebugViews(assets::GpuAssets& gpu) : gpu_(gpu) {}
+DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
+    : gpu_(gpu), gbuffer_(options.gbuffer_layout), cluster_dims_(options.cluster_grid) {}
 
 void DebugViews::resize(const FrameTargets& targets) {
   size_ = targets.size;
@@ -33,8 +34,8 @@ void DebugViews::begin_counting() {
   glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
-void DebugViews::draw(int view, const FrameContext& frame, const FrameTargets& targets, GLuint output_framebuffer,
-                      glm::vec3 bounds_min, glm::vec3 bounds_max) {
+void DebugViews::draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
+                      GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
   if (view == kHeatmapView) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gfx::ShaderProgram& heatmap = gpu_.shaders().get({"post/fullscreen.vert", "debug/heatmap.frag"});
@@ -45,6 +46,14 @@ void DebugViews::draw(int view, const FrameContext& frame, const FrameTargets& t
     glViewport(0, 0, size_.x, size_.y);
     heatmap.use();
     fullscreen_.draw();
+    return;
+  }
+  if (view == kLightListView || view == kDepthSliceView) {
+    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
+    glViewport(0, 0, size_.x, size_.y);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    draw_light_bins(view, technique, frame, targets);
     return;
   }
   gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
@@ -73,6 +82,38 @@ double DebugViews::average_light_evaluations() const {
   glGetTextureImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(counts.size() * sizeof(GLuint)),
                     counts.data());
   return static_cast<double>(std::accumulate(counts.begin(), counts.end(), std::uint64_t{0})) / static_cast<double>(counts.size());
+}
+
+void DebugViews::draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame,
+                                 const FrameTargets& targets) {
+  std::vector<gfx::ShaderDefine> defines;
+  LightingTechnique::LightBins bins;
+  if (view == kDepthSliceView) {
+    if (!slicing_) slicing_ = std::make_unique<ClusterGrid>(cluster_dims_);
+    slicing_->update(frame.projection, frame.near_plane, frame.far_plane);
+    slicing_->bind();
+    defines.push_back({"DEPTH_SLICES"});
+  } else {
+    bins = technique.bind_light_bins();
+    if (bins.binning == LightingTechnique::Binning::None) {
+      // This mode keeps no lists: a flat grey says so rather than a stale picture.
+      const float grey[] = {0.15f, 0.15f, 0.15f, 1.0f};
+      glClearBufferfv(GL_COLOR, 0, grey);
+      return;
+    }
+    defines.push_back({"LIGHT_BINS", bins.binning == LightingTechnique::Binning::Tiles ? "1" : "2"});
+  }
+  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"}, defines);
+  if (view == kLightListView) {
+    program.set("u_tiles", bins.tiles);
+    program.set("u_tile_size", bins.tile_size);
+    program.set("u_overflow_capacity", bins.overflow_capacity);
+    // A bin can hold every light: the map tops out there.
+    program.set("u_scale_max", static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
+  }
+  glBindTextureUnit(5, targets.depth_stencil);
+  program.use();
+  fullscreen_.draw();
 }
 
 }  // namespace atrium::lighting

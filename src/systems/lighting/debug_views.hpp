@@ -1,24 +1,29 @@
 // Debug views (--debug-view, `g` in the window): each G-buffer target on its own,
-// depth, light-volume outlines over the lit image, and a heatmap of the lights
-// evaluated per pixel by the current mode. The G-buffer views run their own
+// depth, light-volume outlines over the lit image, a heatmap of the lights
+// evaluated per pixel by the current mode, the light count of each pixel's tile
+// or cluster, and the cluster depth slices. The G-buffer views run their own
 // geometry pass, so they work whatever the mode; the heatmap counts what the
-// mode's own shaders do (they are compiled with COUNT_LIGHTS while it is shown).
+// mode's own shaders do (they are compiled with COUNT_LIGHTS while it is shown);
+// the light-lists view draws the lists the tiled and clustered modes built.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <string>
 #include <string_view>
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl_object.hpp"
+#include "systems/lighting/cluster_grid.hpp"
 #include "systems/lighting/gbuffer.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 8> kDebugViews{
-    "position", "normal", "albedo", "metallic-roughness", "emissive", "depth", "light-volumes", "heatmap"};
-inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7;
+inline constexpr std::array<std::string_view, 10> kDebugViews{
+    "position", "normal",        "albedo",  "metallic-roughness", "emissive",
+    "depth",    "light-volumes", "heatmap", "light-lists",        "depth-slices"};
+inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);
@@ -26,21 +31,28 @@ inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7;
 
 class DebugViews {
  public:
-  explicit DebugViews(assets::GpuAssets& gpu);
+  DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets);
 
   // Heatmap: zeroes the per-pixel counters and binds them to image unit 0 for
   // the technique's shaders.
   void begin_counting();
-  // Draws `view` into `output_framebuffer` (already holding the tone-mapped image).
-  void draw(int view, const FrameContext& frame, const FrameTargets& targets, GLuint output_framebuffer,
-            glm::vec3 bounds_min, glm::vec3 bounds_max);
+  // Draws `view` into `output_framebuffer` (already holding the tone-mapped
+  // image) after `technique` has drawn the frame.
+  void draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
+            GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max);
   // Heatmap: light evaluations per pixel, averaged over the image.
   [[nodiscard]] double average_light_evaluations() const;
 
  private:
+  void draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets);
+
   assets::GpuAssets& gpu_;
   GBuffer gbuffer_;
+  // The slicing the clustered modes use with these options, for depth-slices
+  // in any mode; made when that view is first shown.
+  glm::uvec3 cluster_dims_;
+  std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
   gfx::Texture counts_;
   glm::ivec2 size_{0};

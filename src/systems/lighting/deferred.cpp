@@ -2,12 +2,13 @@
 
 namespace atrium::lighting {
 
-DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, bool cull_by_radius)
+DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       lighting_(gpu.shaders().get({"post/fullscreen.vert", "deferred/lighting.frag"},
                                   cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}}
                                                  : std::vector<gfx::ShaderDefine>{})),
-      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      gbuffer_(options.gbuffer_layout) {}
 
 void DeferredTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
 

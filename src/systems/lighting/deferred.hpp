@@ -13,7 +13,7 @@ namespace atrium::lighting {
 
 class DeferredTechnique final : public LightingTechnique {
  public:
-  DeferredTechnique(assets::GpuAssets& gpu, bool cull_by_radius);
+  DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 

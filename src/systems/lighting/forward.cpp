@@ -2,7 +2,7 @@
 
 namespace atrium::lighting {
 
-ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu)
+ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& /*options*/)
     : program_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
 
 void ForwardTechnique::resize(const FrameTargets& /*targets*/) {}

@@ -11,7 +11,7 @@ namespace atrium::lighting {
 
 class ForwardTechnique final : public LightingTechnique {
  public:
-  explicit ForwardTechnique(assets::GpuAssets& gpu);
+  ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 

@@ -4,20 +4,26 @@
 
 namespace atrium::lighting {
 
+std::span<const GBuffer::Target> GBuffer::targets(GBufferLayout layout) {
+  if (layout == GBufferLayout::Compact) return kCompactLayout;
+  return kFullLayout;
+}
+
 void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
   size_ = size;
   framebuffer_ = gfx::create_framebuffer();
-  std::array<GLenum, kTargets> attachments{};
-  for (std::size_t i = 0; i < kTargets; ++i) {
+  const auto layout = targets();
+  std::array<GLenum, kMaxTargets> attachments{};
+  for (std::size_t i = 0; i < layout.size(); ++i) {
     textures_[i] = gfx::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(textures_[i].id(), 1, kLayout[i].format, size.x, size.y);
+    glTextureStorage2D(textures_[i].id(), 1, layout[i].format, size.x, size.y);
     glTextureParameteri(textures_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(textures_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(framebuffer_.id(), attachments[i], textures_[i].id(), 0);
   }
   glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
-  glNamedFramebufferDrawBuffers(framebuffer_.id(), static_cast<GLsizei>(kTargets), attachments.data());
+  glNamedFramebufferDrawBuffers(framebuffer_.id(), static_cast<GLsizei>(layout.size()), attachments.data());
   if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     throw std::runtime_error("the G-buffer framebuffer is incomplete");
   }
@@ -27,8 +33,17 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
   const auto pass = frame.timer.scope("geometry");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, size_.x, size_.y);
-  const float zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-  for (GLint i = 0; i < static_cast<GLint>(kTargets); ++i) glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+  // Zero everywhere marks "no geometry" in both layouts (position.w, distance).
+  const auto layout = targets();
+  for (GLint i = 0; i < static_cast<GLint>(layout.size()); ++i) {
+    if (layout[static_cast<std::size_t>(i)].format == GL_RGBA32UI) {
+      const GLuint zero[] = {0, 0, 0, 0};
+      glClearNamedFramebufferuiv(framebuffer_.id(), GL_COLOR, i, zero);
+    } else {
+      const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+      glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
+    }
+  }
   glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
@@ -42,9 +57,10 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
 }
 
 void GBuffer::bind_textures() const {
-  std::array<GLuint, kTargets> names{};
-  for (std::size_t i = 0; i < kTargets; ++i) names[i] = textures_[i].id();
-  glBindTextures(0, static_cast<GLsizei>(kTargets), names.data());
+  std::array<GLuint, kMaxTargets> names{};
+  const std::size_t count = targets().size();
+  for (std::size_t i = 0; i < count; ++i) names[i] = textures_[i].id();
+  glBindTextures(0, static_cast<GLsizei>(count), names.data());
 }
 
 void GBuffer::draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const {
@@ -57,9 +73,9 @@ void GBuffer::draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& t
   fullscreen_.draw();
 }
 
-std::size_t GBuffer::bytes_per_pixel() {
+std::size_t GBuffer::bytes_per_pixel(GBufferLayout layout) {
   std::size_t bytes = 4;  // DEPTH24_STENCIL8
-  for (const Target& target : kLayout) bytes += target.bytes_per_pixel;
+  for (const Target& target : targets(layout)) bytes += target.bytes_per_pixel;
   return bytes;
 }
 

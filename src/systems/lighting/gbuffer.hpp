@@ -1,7 +1,7 @@
-// The full G-buffer shared by the deferred techniques (reference layout:
-// position, albedo, normal, metallic-roughness, emissive) plus the renderer's
-// depth-stencil target. Formats are chosen to match forward shading: 32-bit
-// float positions, 16-bit unorm normals, 16-bit float emission, sRGB albedo.
+// The G-buffer shared by the deferred techniques plus the renderer's
+// depth-stencil target. Two layouts (--gbuffer): the reference's five targets
+// (full), or two packed targets (compact); shaders/common/gbuffer.glsl writes
+// and reads both, picked by the COMPACT_GBUFFER define the renderer sets.
 #pragma once
 
 #include <array>
@@ -12,39 +12,53 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_program.hpp"
 #include "systems/lighting/technique.hpp"
+#include "systems/lighting/technique_options.hpp"
 
 namespace atrium::lighting {
 
 class GBuffer {
  public:
-  static constexpr std::size_t kTargets = 5;
   struct Target {
     const char* name;
     GLenum format;
     std::size_t bytes_per_pixel;
   };
-  static constexpr std::array<Target, kTargets> kLayout{{{"position", GL_RGBA32F, 16},
-                                                         {"albedo", GL_SRGB8_ALPHA8, 4},
-                                                         {"normal", GL_RGBA16, 8},
-                                                         {"metallic-roughness", GL_RGBA8, 4},
-                                                         {"emissive", GL_RGBA16F, 8}}};
+  static constexpr std::size_t kMaxTargets = 5;
+  // Full: formats chosen so that deferred matches forward shading: 32-bit float
+  // positions, 16-bit unorm normals, 16-bit float emission, sRGB albedo.
+  static constexpr std::array<Target, 5> kFullLayout{{{"position", GL_RGBA32F, 16},
+                                                      {"albedo", GL_SRGB8_ALPHA8, 4},
+                                                      {"normal", GL_RGBA16, 8},
+                                                      {"metallic-roughness", GL_RGBA8, 4},
+                                                      {"emissive", GL_RGBA16F, 8}}};
+  // Compact: albedo as above; normal (octahedral, 2x16 bits), emission (3 half
+  // floats), metallic and roughness (8 bits each) and the distance to the camera
+  // (32-bit float) packed into the four words of one integer target.
+  static constexpr std::array<Target, 2> kCompactLayout{{{"albedo", GL_SRGB8_ALPHA8, 4},
+                                                         {"packed", GL_RGBA32UI, 16}}};
+
+  explicit GBuffer(GBufferLayout layout = GBufferLayout::Full) : layout_(layout) {}
 
   // (Re)allocates the colour targets; depth and stencil are the renderer's.
   void resize(glm::ivec2 size, GLuint depth_stencil);
 
   // Fills the G-buffer with the opaque and masked draw items.
   void draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame);
-  // Binds the targets to texture units 0-4 for lighting passes.
+  // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures() const;
   // A full-screen pass with `program` reading the G-buffer into the HDR target.
   void draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const;
 
+  [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
   [[nodiscard]] GLuint texture(std::size_t index) const { return textures_[index].id(); }
-  [[nodiscard]] static std::size_t bytes_per_pixel();
+  // Bytes per pixel of the targets plus the shared DEPTH24_STENCIL8.
+  [[nodiscard]] static std::size_t bytes_per_pixel(GBufferLayout layout);
+  [[nodiscard]] static std::span<const Target> targets(GBufferLayout layout);
 
  private:
+  GBufferLayout layout_;
   glm::ivec2 size_{0};
-  std::array<gfx::Texture, kTargets> textures_;
+  std::array<gfx::Texture, kMaxTargets> textures_;
   gfx::Framebuffer framebuffer_;
   FullscreenTriangle fullscreen_;
 };

@@ -18,6 +18,7 @@ void LightIndexList::resize(std::uint32_t capacity) {
 }
 
 void LightIndexList::assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize) {
+  overflow_capacity_ = 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
     const std::uint32_t zero = 0;
     glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
@@ -28,6 +29,7 @@ void LightIndexList::assign(const std::function<void()>& dispatch, const std::fu
     if (last_total_ <= capacity_) return;
     // Too small for this frame: grow with room to spare and assign again.
     ++overflow_frames_;
+    overflow_capacity_ = capacity_;
     resize(last_total_ + last_total_ / 4 + 64);
     on_resize(capacity_);
   }

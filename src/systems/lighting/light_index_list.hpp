@@ -26,6 +26,9 @@ class LightIndexList {
   [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
   [[nodiscard]] std::uint32_t last_total() const { return last_total_; }
   [[nodiscard]] std::uint32_t overflow_frames() const { return overflow_frames_; }
+  // The capacity the latest assignment first ran with if it overflowed, else 0:
+  // bins whose range ends beyond it would have lost lights without the growth.
+  [[nodiscard]] std::uint32_t overflow_capacity() const { return overflow_capacity_; }
   // The lists read back, sorted, per bin (for tests).
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> read() const;
 
@@ -34,7 +37,7 @@ class LightIndexList {
 
   std::uint32_t bins_;
   gfx::Buffer ranges_, indices_, total_;
-  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0;
+  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, overflow_capacity_ = 0;
 };
 
 }  // namespace atrium::lighting

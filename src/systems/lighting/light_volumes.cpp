@@ -53,7 +53,7 @@ SphereMesh make_sphere() {
 
 }  // namespace
 
-LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, bool instanced)
+LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced)
     : instanced_(instanced),
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       unlit_(gpu.shaders().get({"post/fullscreen.vert", "light_volumes/unlit.frag"})),
@@ -61,6 +61,7 @@ LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, bool instance
       stencil_(gpu.shaders().get({"light_volumes/volume.vert", "light_volumes/stencil.frag"})),
       lighting_(gpu.shaders().get({"light_volumes/volume.vert", "light_volumes/lighting.frag"})),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      gbuffer_(options.gbuffer_layout),
       sphere_vertices_(gfx::create_buffer()),
       sphere_indices_(gfx::create_buffer()),
       sphere_(gfx::create_vertex_array()) {

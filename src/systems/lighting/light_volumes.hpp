@@ -17,7 +17,7 @@ namespace atrium::lighting {
 
 class LightVolumeTechnique final : public LightingTechnique {
  public:
-  LightVolumeTechnique(assets::GpuAssets& gpu, bool instanced);
+  LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 

@@ -59,6 +59,17 @@ class LightingTechnique {
     std::uint32_t overflowed_frames = 0;
   };
   [[nodiscard]] virtual ListStats light_lists() const { return {}; }
+  // For the light-lists debug view: a technique whose lists are per screen
+  // tile or per cluster binds them (and the cluster grid's uniform block) and
+  // says how pixels map to its bins.
+  enum class Binning { None, Tiles, Clusters };
+  struct LightBins {
+    Binning binning = Binning::None;
+    glm::uvec2 tiles{0};                 // Tiles: tiles per row and column
+    std::uint32_t tile_size = 0;         // Tiles: pixels per tile side
+    std::uint32_t overflow_capacity = 0; // LightIndexList::overflow_capacity()
+  };
+  [[nodiscard]] virtual LightBins bind_light_bins() const { return {}; }
 };
 
 struct TechniqueInfo {

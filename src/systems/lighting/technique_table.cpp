@@ -9,32 +9,28 @@
 namespace atrium::lighting {
 namespace {
 
-template <typename T>
-std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueOptions&) {
-  return std::make_unique<T>(gpu);
+// Every technique is built from the GPU assets and the options; `variant`
+// picks a row's flavour of a shared implementation (radius culling, instancing,
+// deferred or forward+).
+template <typename T, auto... variant>
+std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueOptions& options) {
+  return std::make_unique<T>(gpu, options, variant...);
 }
 
 constexpr TechniqueInfo kTechniques[] = {
     {"forward", "one geometry pass; every fragment loops over every light (the baseline)", &make<ForwardTechnique>},
-    {"deferred", "G-buffer, then one full-screen pass over every light", [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> {
-       return std::make_unique<DeferredTechnique>(gpu, false);
-     }},
-    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel",
-     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<DeferredTechnique>(gpu, true); }},
+    {"deferred", "G-buffer, then one full-screen pass over every light", &make<DeferredTechnique, false>},
+    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel", &make<DeferredTechnique, true>},
     {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius",
-     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, false); }},
+     &make<LightVolumeTechnique, false>},
     {"tiled-deferred", "G-buffer, lights culled per 16x16 tile against its depth bounds, each pixel shades its tile's",
      &make<TiledTechnique>},
     {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's",
-     [](assets::GpuAssets& gpu, const TechniqueOptions& options) -> std::unique_ptr<LightingTechnique> {
-       return std::make_unique<ClusteredTechnique>(gpu, options, false);
-     }},
+     &make<ClusteredTechnique, false>},
     {"clustered-deferred", "G-buffer, lights assigned to a 3D cluster grid, each pixel shades its cluster's",
-     [](assets::GpuAssets& gpu, const TechniqueOptions& options) -> std::unique_ptr<LightingTechnique> {
-       return std::make_unique<ClusteredTechnique>(gpu, options, true);
-     }},
+     &make<ClusteredTechnique, true>},
     {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil",
-     [](assets::GpuAssets& gpu, const TechniqueOptions&) -> std::unique_ptr<LightingTechnique> { return std::make_unique<LightVolumeTechnique>(gpu, true); }},
+     &make<LightVolumeTechnique, true>},
 };
 
 }  // namespace

@@ -2,11 +2,12 @@
 
 namespace atrium::lighting {
 
-TiledTechnique::TiledTechnique(assets::GpuAssets& gpu)
+TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       assign_(gpu.shaders().get({"tiled/assign.comp"})),
       lighting_(gpu.shaders().get({"post/fullscreen.vert", "tiled/lighting.frag"})),
-      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      gbuffer_(options.gbuffer_layout) {}
 
 void TiledTechnique::resize(const FrameTargets& targets) {
   gbuffer_.resize(targets.size, targets.depth_stencil);
@@ -36,6 +37,12 @@ void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targ
     gbuffer_.draw_fullscreen(lighting_, targets);
   }
   draw_transparent(forward_, frame, targets);
+}
+
+LightingTechnique::LightBins TiledTechnique::bind_light_bins() const {
+  if (!list_) return {};
+  list_->bind();
+  return {Binning::Tiles, tiles_, static_cast<std::uint32_t>(kTileSize), list_->overflow_capacity()};
 }
 
 }  // namespace atrium::lighting

@@ -16,7 +16,7 @@ inline constexpr int kTileSize = 16;
 
 class TiledTechnique final : public LightingTechnique {
  public:
-  explicit TiledTechnique(assets::GpuAssets& gpu);
+  TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
 
@@ -25,6 +25,7 @@ class TiledTechnique final : public LightingTechnique {
   [[nodiscard]] ListStats light_lists() const override {
     return list_ ? ListStats{list_->last_total(), list_->overflow_frames()} : ListStats{};
   }
+  [[nodiscard]] LightBins bind_light_bins() const override;
 
  private:
   gfx::ShaderProgram& geometry_;

@@ -1,0 +1,38 @@
+#version 450 core
+// Debug views of the tiled and clustered modes' binning, from the depth buffer
+// and the technique's light lists: LIGHT_BINS 1 colours each pixel by the light
+// count of its tile, 2 by that of its cluster (black for none, magenta for a bin
+// that did not fit this frame's first list and was filled after it grew);
+// DEPTH_SLICES colours each pixel by its cluster depth slice.
+#include "common/frame.glsl"
+#include "common/colour_map.glsl"
+#include "common/clusters.glsl"
+
+layout(binding = 5) uniform sampler2D u_depth;
+uniform uvec2 u_tiles;
+uniform uint u_tile_size;
+uniform float u_scale_max;
+uniform uint u_overflow_capacity;  // the list's size before it grew this frame; 0 if it did not
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+  float view_depth = view_depth_from_depth(depth);
+#ifdef DEPTH_SLICES
+  // Alternate bright and dim slices so that neighbours stay apart.
+  uint slice = cluster_slice(view_depth);
+  vec3 color = colour_map(float(slice) / float(max(u_grid.z - 1u, 1u))) * ((slice & 1u) == 0u ? 1.0 : 0.6);
+#else
+#if LIGHT_BINS == 1
+  uvec2 tile = uvec2(gl_FragCoord.xy) / u_tile_size;
+  LightRange range = u_light_ranges[tile.y * u_tiles.x + tile.x];
+#else
+  LightRange range = u_light_ranges[cluster_index(gl_FragCoord.xy, u_viewport_size, view_depth)];
+#endif
+  bool overflowed = u_overflow_capacity != 0u && range.offset + range.count > u_overflow_capacity;
+  vec3 color = overflowed ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
+#endif
+  // The background reads no list; it is drawn dimmed grey to set it apart.
+  out_color = vec4(depth < 1.0 ? color : vec3(0.15), 1.0);
+}

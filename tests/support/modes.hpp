@@ -1,0 +1,39 @@
+// Test parameters drawn from the technique table, so that a new mode or
+// G-buffer layout is covered by every comparison without editing the tests.
+#pragma once
+
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "systems/lighting/technique.hpp"
+#include "systems/lighting/technique_options.hpp"
+
+namespace atrium::testing {
+
+inline std::vector<std::string> non_forward_modes() {
+  std::vector<std::string> modes;
+  for (const auto& info : lighting::technique_table()) {
+    if (info.name != "forward") modes.emplace_back(info.name);
+  }
+  return modes;
+}
+
+inline std::vector<lighting::GBufferLayout> gbuffer_layouts() {
+  return {lighting::GBufferLayout::Full, lighting::GBufferLayout::Compact};
+}
+
+inline lighting::TechniqueOptions with_layout(lighting::GBufferLayout layout) {
+  lighting::TechniqueOptions options;
+  options.gbuffer_layout = layout;
+  return options;
+}
+
+// A gtest-safe name: "clustered-deferred", Compact -> "clustered_deferred_compact".
+inline std::string test_name(std::string mode, lighting::GBufferLayout layout) {
+  mode += "_" + std::string(lighting::kGBufferLayoutNames[static_cast<std::size_t>(layout)]);
+  for (char& c : mode) if (c == '-') c = '_';
+  return mode;
+}
+
+}  // namespace atrium::testing
