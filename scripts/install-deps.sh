@@ -11,7 +11,7 @@ packages=(
   libglm-dev libglfw3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
   libepoxy-dev libegl-dev libgl-dev libimgui-dev libmeshoptimizer-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth python3 python3-matplotlib
+  xvfb xauth xdotool python3 python3-matplotlib python3-numpy
 )
 mesa_packages=(libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgbm1)
 

@@ -2,7 +2,8 @@
 // Debug views of the G-buffer and depth: reads one target and writes it as a
 // displayable colour straight to the output (no tone mapping). DEBUG_VIEW picks
 // the target: 0 position, 1 normal, 2 albedo, 3 metallic-roughness, 4 emissive,
-// 5 depth.
+// 5 depth. The overlay's thumbnails draw it into a smaller viewport: output
+// pixels map to G-buffer pixels through the thumbnail origin and scale.
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
@@ -11,11 +12,13 @@
 layout(binding = 5) uniform sampler2D u_depth;
 uniform vec3 u_bounds_min;
 uniform vec3 u_bounds_max;
+uniform vec2 u_thumbnail_origin;
+uniform vec2 u_thumbnail_scale;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  ivec2 pixel = ivec2((gl_FragCoord.xy - u_thumbnail_origin) * u_thumbnail_scale);
   Surface s;
   bool covered = read_gbuffer(pixel, s);
   vec3 color = vec3(0.0);

@@ -54,7 +54,66 @@ double count_evaluations(World& world, const std::string& mode) {
   return count;
 }
 
+// Frame and pass times of `mode` from the world's current camera.
+BenchRow measure_mode(World& world, const std::string& mode, int frames, int warmup, double reaching) {
+  world.set_mode(mode);
+  std::vector<double> frame_ms;
+  std::map<std::string, std::vector<double>> pass_ms;
+  std::vector<std::string> pass_order;
+  for (int f = 0; f < warmup + frames; ++f) {
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    world.frame(1.0 / 60.0);
+    glFinish();
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if (f < warmup) continue;
+    frame_ms.push_back(ms);
+    for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
+      if (!pass_ms.contains(pass.name)) pass_order.push_back(pass.name);
+      pass_ms[pass.name].push_back(pass.milliseconds);
+    }
+  }
+  BenchRow row;
+  row.mode = mode;
+  row.lights = world.light_count();
+  row.view = world.view();
+  row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
+  row.median_ms = percentile(frame_ms, 0.5);
+  row.p5_ms = percentile(frame_ms, 0.05);
+  row.p95_ms = percentile(frame_ms, 0.95);
+  for (const std::string& name : pass_order) row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5)});
+  row.evaluated_per_pixel = count_evaluations(world, mode);
+  row.reaching_per_pixel = reaching;
+  return row;
+}
+
+void describe_renderer(BenchResult& result, World& world) {
+  if (!result.renderer.empty()) return;
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  result.renderer = renderer ? renderer : "?";
+  result.timing_method = world.renderer().timer().method_name();
+}
+
 }  // namespace
+
+BenchResult bench_current_view(World& world, int frames, int warmup) {
+  BenchResult result;
+  result.options.scene = world.scene().name;
+  result.options.light_counts = {world.light_count()};
+  result.options.views = {world.view()};
+  result.options.size = world.registry().resource<Viewport>().size;
+  result.options.frames = frames;
+  result.options.warmup = warmup;
+  const std::string previous = world.mode();
+  const double reaching = count_evaluations(world, "deferred-radius");
+  for (const auto& info : lighting::technique_table()) {
+    result.rows.push_back(measure_mode(world, std::string(info.name), frames, warmup, reaching));
+    result.rows.back().view_name = "current camera";
+  }
+  describe_renderer(result, world);
+  world.set_mode(previous);
+  return result;
+}
 
 BenchResult run_bench(const BenchOptions& options, const std::function<void(std::size_t, std::size_t)>& progress) {
   BenchResult result;
@@ -77,43 +136,11 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
       // deferred-radius evaluates exactly the lights whose radius covers a pixel.
       const double reaching = count_evaluations(world, "deferred-radius");
       for (const std::string& mode : modes) {
-        world.set_mode(mode);
-        std::vector<double> frame_ms;
-        std::map<std::string, std::vector<double>> pass_ms;
-        std::vector<std::string> pass_order;
-        for (int f = 0; f < options.warmup + options.frames; ++f) {
-          glFinish();
-          const auto start = std::chrono::steady_clock::now();
-          world.frame(1.0 / 60.0);
-          glFinish();
-          const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-          if (f < options.warmup) continue;
-          frame_ms.push_back(ms);
-          for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
-            if (!pass_ms.contains(pass.name)) pass_order.push_back(pass.name);
-            pass_ms[pass.name].push_back(pass.milliseconds);
-          }
-        }
-        BenchRow row;
-        row.mode = mode;
-        row.lights = lights;
-        row.view = view;
-        row.view_name = world.scene().views[static_cast<std::size_t>(view - 1)].name;
-        row.median_ms = percentile(frame_ms, 0.5);
-        row.p5_ms = percentile(frame_ms, 0.05);
-        row.p95_ms = percentile(frame_ms, 0.95);
-        for (const std::string& name : pass_order) row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5)});
-        row.evaluated_per_pixel = count_evaluations(world, mode);
-        row.reaching_per_pixel = reaching;
-        result.rows.push_back(row);
+        result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
         if (progress) progress(++done, total);
       }
     }
-    if (result.renderer.empty()) {
-      const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-      result.renderer = renderer ? renderer : "?";
-      result.timing_method = world.renderer().timer().method_name();
-    }
+    describe_renderer(result, world);
   }
   return result;
 }

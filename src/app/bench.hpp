@@ -55,6 +55,11 @@ struct BenchResult {
 [[nodiscard]] BenchResult run_bench(const BenchOptions& options,
                                     const std::function<void(std::size_t done, std::size_t total)>& progress = {});
 
+class World;
+// Every mode from the world's current camera, at its light count and size
+// (`b` in the window); the world's mode is restored.
+[[nodiscard]] BenchResult bench_current_view(World& world, int frames, int warmup);
+
 [[nodiscard]] std::string bench_markdown(const BenchResult& result);
 [[nodiscard]] std::string bench_csv(const BenchResult& result);
 

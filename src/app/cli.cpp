@@ -17,6 +17,7 @@
 #include "assets/image.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
+#include "systems/overlay.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
@@ -161,12 +162,14 @@ std::string help_text() {
          "  --size WxH      image or window size in pixels (default 1280x720)\n"
          "  --out FILE.png  render: where to write the image\n"
          "  --frames N      window: quit after N frames (for scripted runs)\n"
+         "  --gl-debug      window: report GL errors through KHR_debug and print their count\n"
+         "                  on exit (always on in debug builds)\n"
          "  --json          info: print JSON\n"
          "\n"
          "Modes:\n" + modes +
          "\n"
-         "Window keys: 1..5 stored views, t / Shift+t next / previous mode, Esc quit.\n"
-         "Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.\n";
+         "Window keys:\n" + key_help() +
+         "\nExit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.\n";
 }
 
 CliOptions parse_cli(std::span<const std::string_view> args) {
@@ -244,6 +247,8 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
       options.json = true;
     } else if (arg == "--frames") {
       options.frames = parse_number<std::uint64_t>("--frames", value(), 1, 1'000'000'000);
+    } else if (arg == "--gl-debug") {
+      options.gl_debug = true;
     } else if (arg.starts_with("-")) {
       throw UsageError("unknown option '" + std::string(arg) + "' (see atrium --help)");
     } else if (!scene_given) {

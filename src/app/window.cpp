@@ -1,56 +1,185 @@
-// The demo window: a GLFW window that runs the World every frame and presents
-// the MeshRenderer's output. Keys: 1..5 stored views, t / Shift+t modes, Esc.
+// The demo window: a GLFW window that runs the World with the interactive
+// systems (input, fly camera, light animation, overlay) and carries out what
+// keys and overlay controls ask for between frames. Every mode, view, light
+// count or debug-view change is also written to stdout as one line.
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <ctime>
 
+#include "app/bench.hpp"
 #include "app/cli.hpp"
 #include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/demo.hpp"
 #include "components/frame_resources.hpp"
+#include "components/input.hpp"
+#include "components/light.hpp"
 #include "gfx/context.hpp"
+#include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
+#include "systems/fly_camera.hpp"
+#include "systems/input.hpp"
+#include "systems/light_animation.hpp"
+#include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/technique.hpp"
+#include "systems/overlay.hpp"
+#define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace atrium {
 namespace {
 
-struct KeyState {
-  int pending_view = 0;
-  int mode_step = 0;
-};
-
-void on_key(GLFWwindow* window, int key, int /*scancode*/, int action, int mods) {
-  if (action != GLFW_PRESS) return;
-  auto* state = static_cast<KeyState*>(glfwGetWindowUserPointer(window));
-  if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window, GLFW_TRUE);
-  if (key >= GLFW_KEY_1 && key <= GLFW_KEY_5) state->pending_view = key - GLFW_KEY_0;
-  if (key == GLFW_KEY_T) state->mode_step += (mods & GLFW_MOD_SHIFT) ? -1 : 1;
+void say(const std::string& line) {
+  std::printf("%s\n", line.c_str());
+  std::fflush(stdout);
 }
 
-std::string step_mode(const std::string& current, int step) {
-  const auto table = lighting::technique_table();
-  const auto count = static_cast<int>(table.size());
-  int index = 0;
-  for (int i = 0; i < count; ++i) {
-    if (table[static_cast<std::size_t>(i)].name == current) index = i;
+// The name `step` places after `current` in `names`, wrapping around.
+std::string step_name(const std::vector<std::string>& names, const std::string& current, int step) {
+  const auto count = static_cast<int>(names.size());
+  const auto found = std::find(names.begin(), names.end(), current);
+  const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
+  return names[static_cast<std::size_t>(((index + step) % count + count) % count)];
+}
+
+std::vector<std::string> mode_names() {
+  std::vector<std::string> names;
+  for (const auto& info : lighting::technique_table()) names.emplace_back(info.name);
+  return names;
+}
+
+void set_debug_view(World& world, const std::string& view) {
+  world.registry().resource<RendererSettings>().debug_view = view;
+  say("debug view: " + (view.empty() ? std::string("off") : view));
+}
+
+// Turns the frame's key presses into settings and requests.
+void handle_keys(World& world, gfx::WindowContext& context) {
+  ecs::Registry& registry = world.registry();
+  const InputState& input = registry.resource<InputState>();
+  if (input.ui_wants_keyboard) return;
+  auto& requests = registry.resource<DemoRequests>();
+  auto& overlay = registry.resource<OverlayState>();
+  for (const KeyPress& press : input.pressed) {
+    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
+    switch (press.key) {
+      case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(context.window(), GLFW_TRUE); break;
+      case GLFW_KEY_T: requests.mode = step_name(mode_names(), world.mode(), shift ? -1 : 1); break;
+      case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: case GLFW_KEY_5:
+        requests.view = press.key - GLFW_KEY_0;
+        break;
+      case GLFW_KEY_G: {
+        std::vector<std::string> views{""};
+        for (const auto name : lighting::kDebugViews) views.emplace_back(name);
+        set_debug_view(world, step_name(views, registry.resource<RendererSettings>().debug_view, shift ? -1 : 1));
+        break;
+      }
+      case GLFW_KEY_L: {
+        const bool on = registry.resource<RendererSettings>().debug_view == "light-volumes";
+        set_debug_view(world, on ? "" : "light-volumes");
+        break;
+      }
+      case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD:
+        requests.light_count = std::min(std::max(1u, world.light_count() * 2), kMaxLights);
+        break;
+      case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: requests.light_count = world.light_count() / 2; break;
+      case GLFW_KEY_P: {
+        bool& paused = registry.resource<LightAnimationSettings>().paused;
+        paused = !paused;
+        say(paused ? "light animation: paused" : "light animation: running");
+        break;
+      }
+      case GLFW_KEY_B: requests.benchmark = true; break;
+      case GLFW_KEY_F12: requests.screenshot = true; break;
+      case GLFW_KEY_R: requests.reload_shaders = true; break;
+      case GLFW_KEY_H:
+        overlay.show_help = !overlay.show_help;
+        std::printf("%s", key_help().c_str());
+        std::fflush(stdout);
+        break;
+      case GLFW_KEY_V:
+        overlay.vsync = !overlay.vsync;
+        context.set_vsync(overlay.vsync);
+        say(overlay.vsync ? "vsync: on" : "vsync: off");
+        break;
+      case GLFW_KEY_F1: overlay.visible = !overlay.visible; break;
+      default: break;
+    }
   }
-  return std::string(table[static_cast<std::size_t>(((index + step) % count + count) % count)].name);
+}
+
+std::string screenshot_name() {
+  const std::time_t now = std::time(nullptr);
+  char stamp[32];
+  std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", std::localtime(&now));
+  // Several in one second get a counter.
+  static int counter = 0;
+  return "atrium-" + std::string(stamp) + "-" + std::to_string(counter++) + ".png";
+}
+
+// Carries out what keys and overlay asked for this frame.
+void carry_out(World& world) {
+  ecs::Registry& registry = world.registry();
+  auto& requests = registry.resource<DemoRequests>();
+  auto& overlay = registry.resource<OverlayState>();
+  if (requests.mode) {
+    world.set_mode(*requests.mode);
+    say("mode: " + world.mode());
+  }
+  if (requests.view) {
+    if (*requests.view <= static_cast<int>(world.scene().views.size())) {
+      world.set_view(*requests.view);
+      say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
+    }
+  }
+  if (requests.light_count) {
+    world.set_light_count(*requests.light_count);
+    say("lights: " + std::to_string(world.light_count()));
+  }
+  if (requests.reload_shaders) {
+    const std::vector<std::string> errors = world.reload_shaders();
+    overlay.message.clear();
+    for (const std::string& error : errors) {
+      std::fprintf(stderr, "atrium: shader error (the old program stays):\n%s\n", error.c_str());
+      overlay.message += error + "\n";
+    }
+    say(errors.empty() ? "shaders: reloaded" : "shaders: " + std::to_string(errors.size()) + " failed, kept their old versions");
+  }
+  if (requests.screenshot) {
+    const std::string path = screenshot_name();
+    assets::write_png(path, world.renderer().read_output());
+    overlay.message = "screenshot: " + path;
+    say(overlay.message);
+  }
+  if (requests.benchmark) {
+    say("benchmark: every mode from the current camera, 8 frames after 2 warm-up...");
+    const BenchResult result = bench_current_view(world, 8, 2);
+    overlay.message = bench_markdown(result);
+    say(overlay.message);
+  }
+  requests = {};
 }
 
 }  // namespace
 
 int run_window(const CliOptions& options) {
-  const auto context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y);
+  gfx::ContextOptions context_options;
+  context_options.debug = context_options.debug || options.gl_debug;
+  const auto context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y, context_options);
   GLFWwindow* window = context->window();
-  KeyState keys;
-  glfwSetWindowUserPointer(window, &keys);
-  glfwSetKeyCallback(window, on_key);
+  context->set_vsync(true);
 
   World world(world_options(options));
   world.registry().resource<RendererSettings>().present_to_window = true;
-  std::printf("renderer: %s\nmode: %s\nview: %d %s\n", context->info().renderer.c_str(), world.mode().c_str(),
-              world.view(), world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str());
-  std::fflush(stdout);
+  register_input(world.scheduler(), world.registry(), window);
+  register_fly_camera(world.scheduler());
+  register_light_animation(world.scheduler());
+  register_overlay(world.scheduler(), world.registry(), window);
+  say("renderer: " + context->info().renderer);
+  say("mode: " + world.mode());
+  say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
+  say("lights: " + std::to_string(world.light_count()) + " (press h for the keys)");
 
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
@@ -58,33 +187,29 @@ int run_window(const CliOptions& options) {
   std::uint64_t frames = 0, frames_since_title = 0;
   while (!glfwWindowShouldClose(window)) {
     glfwPollEvents();
-    if (keys.pending_view != 0) {
-      if (keys.pending_view <= static_cast<int>(world.scene().views.size())) {
-        world.set_view(keys.pending_view);
-        std::printf("view: %d %s\n", world.view(), world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str());
-      }
-      keys.pending_view = 0;
-    }
-    if (keys.mode_step != 0) {
-      world.set_mode(step_mode(world.mode(), keys.mode_step));
-      keys.mode_step = 0;
-      std::printf("mode: %s\n", world.mode().c_str());
-    }
-    std::fflush(stdout);
-
     int width = 0, height = 0;
     glfwGetFramebufferSize(window, &width, &height);
+    if (width == 0 || height == 0) {
+      // Minimised: nothing to draw; wait for events instead of spinning.
+      glfwWaitEventsTimeout(0.1);
+      last = Clock::now();
+      continue;
+    }
     world.set_size({width, height});
     const auto now = Clock::now();
     world.frame(std::chrono::duration<double>(now - last).count());
     last = now;
     glfwSwapBuffers(window);
+    handle_keys(world, *context);
+    carry_out(world);
 
     ++frames;
     ++frames_since_title;
     const double since_title = std::chrono::duration<double>(now - title_time).count();
     if (since_title >= 0.5) {
-      const std::string title = "Atrium - " + world.mode() + " - " +
+      // The overlay shows mode and fps; hidden, the title does.
+      const bool overlay = world.registry().resource<OverlayState>().visible;
+      const std::string title = overlay ? "Atrium" : "Atrium - " + world.mode() + " - " +
                                 std::to_string(static_cast<int>(static_cast<double>(frames_since_title) / since_title + 0.5)) + " fps";
       glfwSetWindowTitle(window, title.c_str());
       title_time = now;
@@ -92,6 +217,7 @@ int run_window(const CliOptions& options) {
     }
     if (options.frames && frames >= *options.frames) break;
   }
+  if (context_options.debug) say("GL errors: " + std::to_string(gfx::gl_error_count()));
   return kExitOk;
 }
 

@@ -61,12 +61,11 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
                    "', a scene file .json, or a glTF model .gltf/.glb)");
 }
 
-void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
-  for (const auto& instance : scene.instances) {
-    const ecs::Entity e = registry.create();
-    registry.add<Transform>(e, instance.transform);
-    registry.add<MeshInstance>(e, instance.asset, instance.mesh);
-  }
+void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene) {
+  // Animated lights start at different points of their circles, spread by the
+  // golden angle so that neighbours do not move in step.
+  constexpr float kGoldenAngle = 2.39996323f;
+  std::uint32_t animated = 0;
   for (const auto& light : scene.lights) {
     const ecs::Entity e = registry.create();
     Transform transform{light.position};
@@ -79,11 +78,24 @@ void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
     if (light.radius) registry.add<LightRadius>(e, *light.radius);
     if (light.kind == assets::LightKind::Spot) registry.add<SpotCone>(e, light.inner_cone, light.outer_cone);
     if (light.kind == assets::LightKind::Directional) registry.add<DirectionalLight>(e);
+    if (light.generated && light.kind == assets::LightKind::Point) {
+      registry.add<LightAnimation>(e, light.position, kGoldenAngle * static_cast<float>(animated++));
+    }
   }
+}
+
+void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
+  for (const auto& instance : scene.instances) {
+    const ecs::Entity e = registry.create();
+    registry.add<Transform>(e, instance.transform);
+    registry.add<MeshInstance>(e, instance.asset, instance.mesh);
+  }
+  spawn_lights(registry, scene);
   const ecs::Entity camera = registry.create();
   registry.add<Transform>(camera);
   registry.add<Camera>(camera);
   registry.add<CameraAngles>(camera);
+  registry.add<FlyCamera>(camera);
 }
 
 }  // namespace
@@ -115,6 +127,7 @@ void World::start(const WorldOptions& options) {
   registry_.set_resource<SceneSettings>(
       SceneSettings{scene_.bounds_min, scene_.bounds_max, scene_.ambient, scene_.background, scene_.exposure});
   registry_.set_resource<RendererSettings>();
+  registry_.set_resource<LightAnimationSettings>();
   registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
   spawn(registry_, scene_);
 
@@ -147,6 +160,23 @@ void World::set_mode(const std::string& mode) {
 }
 
 void World::set_size(glm::ivec2 size) { registry_.resource<Viewport>().size = size; }
+
+void World::set_light_count(std::uint32_t count) {
+  std::vector<ecs::Entity> lights;
+  registry_.view<LightColor>().each([&](ecs::Entity e, const LightColor&) { lights.push_back(e); });
+  for (const ecs::Entity e : lights) registry_.destroy(e);
+  assets::resize_lights(scene_, count);
+  spawn_lights(registry_, scene_);
+}
+
+std::uint32_t World::light_count() const { return static_cast<std::uint32_t>(scene_.lights.size()); }
+
+std::vector<std::string> World::reload_shaders() {
+  std::vector<std::string> errors = registry_.resource<assets::GpuAssets>().shaders().reload();
+  // Programs that were replaced lost the uniforms their technique set once.
+  registry_.resource<MeshRenderer>().recreate_technique();
+  return errors;
+}
 
 const std::string& World::mode() const {
   return registry_.resource<RendererSettings>().mode;

@@ -51,8 +51,18 @@ class World {
   void set_view(int index);
   void set_mode(const std::string& mode);
   void set_size(glm::ivec2 size);
+  // Replaces the light entities with the scene's first `count` lights
+  // (assets::resize_lights: generated lights fill up, growing keeps the rest).
+  void set_light_count(std::uint32_t count);
+  [[nodiscard]] std::uint32_t light_count() const;
+  // Recompiles every shader; a failing program keeps its old version and its
+  // error comes back (one string per failing program).
+  std::vector<std::string> reload_shaders();
 
   [[nodiscard]] ecs::Registry& registry() { return registry_; }
+  // For systems beyond the core ones (the window adds input, fly camera, light
+  // animation and overlay).
+  [[nodiscard]] ecs::Scheduler& scheduler() { return scheduler_; }
   [[nodiscard]] const assets::SceneDescription& scene() const { return scene_; }
   [[nodiscard]] MeshRenderer& renderer() { return registry_.resource<MeshRenderer>(); }
   [[nodiscard]] const std::string& mode() const;

@@ -28,6 +28,7 @@ std::vector<SceneLight> generate_lights(const LightGenerator& generator) {
   lights.reserve(generator.count);
   for (std::uint32_t i = 0; i < generator.count; ++i) {
     SceneLight light;
+    light.generated = true;
     light.position = generator.box_min + (generator.box_max - generator.box_min) *
                                              glm::vec3(unit(random), unit(random), unit(random));
     const glm::vec3 hue = hue_to_rgb(unit(random));
@@ -61,6 +62,9 @@ void resize_lights(SceneDescription& scene, std::uint32_t count) {
     generator.intensity_min = generator.intensity_max = radius * radius * 5.0f / 256.0f;
     generator.seed = 7;
   }
+  // Generated lights are regenerated from the start of their sequence, which
+  // gives back the same lights first: growing keeps every existing light.
+  std::erase_if(scene.lights, [](const SceneLight& light) { return light.generated; });
   generator.count = count - static_cast<std::uint32_t>(scene.lights.size());
   for (const SceneLight& light : generate_lights(generator)) scene.lights.push_back(light);
 }

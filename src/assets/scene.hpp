@@ -31,6 +31,7 @@ struct SceneLight {
   glm::vec3 direction{0.0f, 0.0f, -1.0f};  // spot and directional: where the light points
   float inner_cone = 0.0f;                 // spot: radians from the axis, full intensity inside
   float outer_cone = 0.7853982f;           // spot: radians from the axis, dark outside
+  bool generated = false;                  // made by a LightGenerator (and animated in the demo)
 };
 
 struct NamedView {
@@ -70,7 +71,10 @@ struct SceneDescription {
 };
 
 // Sets the scene's light count to `count`: its listed lights first (cut when
-// there are more), then lights from its fill generator (the bounds when none).
+// there are more), then lights from its fill generator (the first of a scene
+// file's generators; the bounds when none). Growing regenerates the generated
+// lights from the start of the fill generator's sequence, so the lights it had
+// stay where they were.
 void resize_lights(SceneDescription& scene, std::uint32_t count);
 
 [[nodiscard]] std::vector<SceneLight> generate_lights(const LightGenerator& generator);

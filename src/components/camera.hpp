@@ -16,4 +16,12 @@ struct CameraAngles {
   float pitch_degrees = 0.0f;  // positive looks up
 };
 
+// Lets the fly-camera system steer a camera (systems/fly_camera.hpp).
+struct FlyCamera {
+  float speed = 3.0f;                   // metres per second; the scroll wheel scales it
+  float fast_factor = 4.0f;             // with Shift held
+  float look_degrees_per_pixel = 0.15f; // mouse drag
+  float turn_degrees_per_second = 90.0f;// arrow keys
+};
+
 }  // namespace atrium

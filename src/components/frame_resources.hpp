@@ -41,6 +41,7 @@ struct RendererSettings {
   std::string debug_view;       // empty, or a name from systems/lighting/debug_views.hpp
   lighting::TechniqueOptions technique_options;
   bool present_to_window = false;  // blit the final image to the default framebuffer
+  bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)
 };
 
 }  // namespace atrium

@@ -28,4 +28,20 @@ struct SpotCone {
 // position, no falloff, no radius.
 struct DirectionalLight {};
 
+// Moves a light from `origin` (systems/light_animation.hpp) round a horizontal
+// circle of `radius` metres through it, with a gentle vertical bob; lights
+// differ by `phase`.
+struct LightAnimation {
+  glm::vec3 origin{0.0f};
+  float phase = 0.0f;
+  float radius = 0.5f;
+  float angular_speed = 0.6f;  // radians per second
+};
+
+// Shared by every LightAnimation: `p` in the window pauses them.
+struct LightAnimationSettings {
+  bool paused = false;
+  double time = 0.0;  // seconds of animation so far (stops while paused)
+};
+
 }  // namespace atrium

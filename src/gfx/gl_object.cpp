@@ -1,10 +1,42 @@
 #include "gfx/gl_object.hpp"
 
+#include <algorithm>
 #include <atomic>
+#include <unordered_set>
 
 namespace atrium::gfx {
 namespace {
 std::array<std::atomic<std::int64_t>, kGlKindCount> g_live{};
+// Names of live buffers and textures, for the memory estimate (GL calls come
+// from the context's one thread).
+std::unordered_set<GLuint> g_buffers, g_textures;
+
+std::unordered_set<GLuint>* tracked(GlKind kind) {
+  if (kind == GlKind::Buffer) return &g_buffers;
+  if (kind == GlKind::Texture) return &g_textures;
+  return nullptr;
+}
+
+std::uint64_t texture_bytes(GLuint texture) {
+  GLint levels = 0;
+  glGetTextureParameteriv(texture, GL_TEXTURE_IMMUTABLE_LEVELS, &levels);
+  std::uint64_t bytes = 0;
+  for (GLint level = 0; level < std::max(levels, 1); ++level) {
+    GLint width = 0, height = 0, depth = 0, bits = 0;
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &width);
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_HEIGHT, &height);
+    glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_DEPTH, &depth);
+    for (GLenum size : {GL_TEXTURE_RED_SIZE, GL_TEXTURE_GREEN_SIZE, GL_TEXTURE_BLUE_SIZE, GL_TEXTURE_ALPHA_SIZE,
+                        GL_TEXTURE_DEPTH_SIZE, GL_TEXTURE_STENCIL_SIZE}) {
+      GLint channel = 0;
+      glGetTextureLevelParameteriv(texture, level, size, &channel);
+      bits += channel;
+    }
+    bytes += static_cast<std::uint64_t>(width) * static_cast<std::uint64_t>(std::max(height, 1)) *
+             static_cast<std::uint64_t>(std::max(depth, 1)) * static_cast<std::uint64_t>(bits) / 8;
+  }
+  return bytes;
+}
 
 std::atomic<std::int64_t>& live(GlKind kind) { return g_live[static_cast<std::size_t>(kind)]; }
 }  // namespace
@@ -23,6 +55,17 @@ std::int64_t live_gl_objects() {
   return total;
 }
 
+std::uint64_t estimated_gpu_memory_bytes() {
+  std::uint64_t bytes = 0;
+  for (GLuint buffer : g_buffers) {
+    GLint64 size = 0;
+    glGetNamedBufferParameteri64v(buffer, GL_BUFFER_SIZE, &size);
+    bytes += static_cast<std::uint64_t>(size);
+  }
+  for (GLuint texture : g_textures) bytes += texture_bytes(texture);
+  return bytes;
+}
+
 bool gl_object_exists(GlKind kind, GLuint name) {
   switch (kind) {
     case GlKind::Buffer: return glIsBuffer(name);
@@ -39,7 +82,10 @@ bool gl_object_exists(GlKind kind, GLuint name) {
 }
 
 namespace detail {
-void count_created(GlKind kind) { ++live(kind); }
+void count_created(GlKind kind, GLuint name) {
+  ++live(kind);
+  if (auto* names = tracked(kind)) names->insert(name);
+}
 
 void destroy_gl_object(GlKind kind, GLuint name) {
   switch (kind) {
@@ -54,6 +100,7 @@ void destroy_gl_object(GlKind kind, GLuint name) {
     case GlKind::Renderbuffer: glDeleteRenderbuffers(1, &name); break;
   }
   --live(kind);
+  if (auto* names = tracked(kind)) names->erase(name);
 }
 }  // namespace detail
 

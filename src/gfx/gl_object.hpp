@@ -21,9 +21,13 @@ inline constexpr std::size_t kGlKindCount = 9;
 [[nodiscard]] std::int64_t live_gl_objects();
 // Asks the driver (glIs*) whether a name still denotes an object of that kind.
 [[nodiscard]] bool gl_object_exists(GlKind kind, GLuint name);
+// The storage of every live buffer and texture owned by a wrapper, in bytes, as
+// the driver reports it (buffer sizes; texel bits per level and layer). An
+// estimate: drivers add padding, compression and their own allocations.
+[[nodiscard]] std::uint64_t estimated_gpu_memory_bytes();
 
 namespace detail {
-void count_created(GlKind kind);
+void count_created(GlKind kind, GLuint name);
 void destroy_gl_object(GlKind kind, GLuint name);
 }  // namespace detail
 
@@ -35,7 +39,7 @@ class GlObject {
   static GlObject adopt(GLuint name) {
     GlObject object;
     object.name_ = name;
-    if (name != 0) detail::count_created(K);
+    if (name != 0) detail::count_created(K, name);
     return object;
   }
   ~GlObject() { reset(); }

@@ -10,9 +10,23 @@ ShaderProgram& ShaderLibrary::get(const std::vector<std::string>& files, const s
   for (const auto& define : all) key += "#" + define.name + "=" + define.value;
   auto it = programs_.find(key);
   if (it == programs_.end()) {
-    it = programs_.emplace(key, std::make_unique<ShaderProgram>(ShaderProgram::load(files, all))).first;
+    auto program = std::make_unique<ShaderProgram>(ShaderProgram::load(files, all));
+    it = programs_.emplace(key, Entry{files, std::move(all), std::move(program)}).first;
   }
-  return *it->second;
+  return *it->second.program;
+}
+
+std::vector<std::string> ShaderLibrary::reload() {
+  std::vector<std::string> errors;
+  for (auto& [key, entry] : programs_) {
+    try {
+      // Assigned in place: techniques hold references to the cached object.
+      *entry.program = ShaderProgram::load(entry.files, entry.defines);
+    } catch (const ShaderError& e) {
+      errors.emplace_back(e.what());
+    }
+  }
+  return errors;
 }
 
 }  // namespace atrium::gfx

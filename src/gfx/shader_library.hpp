@@ -19,12 +19,23 @@ class ShaderLibrary {
 
   [[nodiscard]] std::size_t size() const { return programs_.size(); }
 
+  // Recompiles every cached program from its files (`r` in the window). A
+  // program that fails keeps its old version; the errors come back, one per
+  // failing program. Uniforms set on a replaced program are gone: its owner
+  // must set them again (the renderer recreates its technique).
+  std::vector<std::string> reload();
+
   // Defines added to every program fetched from now on (the shading model);
   // programs made with other globals stay cached under their own key.
   void set_global_defines(std::vector<ShaderDefine> defines) { globals_ = std::move(defines); }
 
  private:
-  std::map<std::string, std::unique_ptr<ShaderProgram>> programs_;
+  struct Entry {
+    std::vector<std::string> files;
+    std::vector<ShaderDefine> defines;
+    std::unique_ptr<ShaderProgram> program;
+  };
+  std::map<std::string, Entry> programs_;
   std::vector<ShaderDefine> globals_;
 };
 

@@ -70,6 +70,23 @@ void MeshRenderer::select_technique(const std::string& mode) {
   mode_ = mode;
 }
 
+lighting::DebugViews& MeshRenderer::debug_views() {
+  if (!debug_views_) {
+    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_, technique_options_);
+    debug_views_->resize(targets());
+  }
+  return *debug_views_;
+}
+
+GLuint MeshRenderer::gbuffer_thumbnails() const { return thumbnails_drawn_ && debug_views_ ? debug_views_->thumbnails() : 0; }
+
+glm::ivec2 MeshRenderer::thumbnail_size() const { return debug_views_ ? debug_views_->thumbnail_size() : glm::ivec2(0); }
+
+void MeshRenderer::recreate_technique() {
+  technique_.reset();
+  debug_views_.reset();
+}
+
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
@@ -124,11 +141,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const lighting::FrameContext frame{draws,      gpu,       lights.staging,  scene.background,
                                      timer_,     view.view, view.projection, view.near_plane,
                                      view.far_plane};
-  if (debug_view >= 0 && !debug_views_) {
-    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_, technique_options_);
-    debug_views_->resize(targets());
-  }
-  if (counting) debug_views_->begin_counting();
+  if (counting) debug_views().begin_counting();
   technique_->execute(frame, targets());
   stats_.light_list_entries = technique_->light_lists().entries;
   stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
@@ -149,9 +162,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
     glBindVertexArray(0);
   }
 
+  thumbnails_drawn_ = false;
+  if (settings.gbuffer_thumbnails && technique_->gbuffer()) {
+    debug_views().draw_thumbnails(*technique_->gbuffer(), targets(), scene.bounds_min, scene.bounds_max);
+    thumbnails_drawn_ = true;
+  }
+
   // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
-    debug_views_->draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
+    debug_views().draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
     if (counting) stats_.light_evaluations_per_pixel = debug_views_->average_light_evaluations();
   }
 

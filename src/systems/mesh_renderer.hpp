@@ -49,13 +49,23 @@ class MeshRenderer {
   [[nodiscard]] const std::string& mode() const { return mode_; }
   // The technique that drew the last frame (tests and tools inspect it).
   [[nodiscard]] const lighting::LightingTechnique* technique() const { return technique_.get(); }
+  // The G-buffer thumbnails of the last frame (see DebugViews::draw_thumbnails),
+  // 0 when the frame drew none (setting off, or a forward mode).
+  [[nodiscard]] GLuint gbuffer_thumbnails() const;
+  [[nodiscard]] glm::ivec2 thumbnail_size() const;
   [[nodiscard]] const FrameStats& stats() const { return stats_; }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
   // Per-pass times of the latest frame whose timings are complete.
   [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
 
+  // Drops the technique and debug views; the next frame makes them again from
+  // the shader library (after a shader reload).
+  void recreate_technique();
+
  private:
   void resize(glm::ivec2 size);
+  // Made on first use (a debug view or the thumbnails).
+  lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);
   [[nodiscard]] lighting::FrameTargets targets() const;
 
@@ -65,6 +75,7 @@ class MeshRenderer {
   lighting::TechniqueOptions technique_options_;
   bool counting_ = false;
   std::unique_ptr<lighting::DebugViews> debug_views_;
+  bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;

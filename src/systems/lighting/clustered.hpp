@@ -17,6 +17,7 @@ class ClusteredTechnique final : public LightingTechnique {
   ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  [[nodiscard]] const GBuffer* gbuffer() const override { return deferred_ ? &gbuffer_ : nullptr; }
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
   [[nodiscard]] ListStats light_lists() const override {

@@ -26,6 +26,35 @@ void DebugViews::resize(const FrameTargets& targets) {
   gbuffer_.resize(targets.size, targets.depth_stencil);
   counts_ = gfx::create_texture(GL_TEXTURE_2D);
   glTextureStorage2D(counts_.id(), 1, GL_R32UI, targets.size.x, targets.size.y);
+  thumbnail_size_ = {kThumbnailWidth, std::max(1, kThumbnailWidth * targets.size.y / std::max(targets.size.x, 1))};
+  thumbnails_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(thumbnails_.id(), 1, GL_RGBA8, thumbnail_size_.x * kThumbnailColumns,
+                     thumbnail_size_.y * (kThumbnailCount / kThumbnailColumns));
+  thumbnail_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(thumbnail_framebuffer_.id(), GL_COLOR_ATTACHMENT0, thumbnails_.id(), 0);
+}
+
+void DebugViews::draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min,
+                                 glm::vec3 bounds_max) {
+  glBindFramebuffer(GL_FRAMEBUFFER, thumbnail_framebuffer_.id());
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  gbuffer.bind_textures();
+  glBindTextureUnit(5, targets.depth_stencil);
+  for (int view = 0; view < kThumbnailCount; ++view) {
+    // Top row first on screen: GL's rows run bottom-up.
+    const glm::ivec2 cell(view % kThumbnailColumns, kThumbnailCount / kThumbnailColumns - 1 - view / kThumbnailColumns);
+    glViewport(cell.x * thumbnail_size_.x, cell.y * thumbnail_size_.y, thumbnail_size_.x, thumbnail_size_.y);
+    gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
+    show.set("u_bounds_min", bounds_min);
+    show.set("u_bounds_max", bounds_max);
+    show.set("u_thumbnail_origin", glm::vec2(cell * thumbnail_size_));
+    show.set("u_thumbnail_scale", glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
+    show.use();
+    fullscreen_.draw();
+  }
 }
 
 void DebugViews::begin_counting() {
@@ -70,6 +99,8 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
   gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
   show.set("u_bounds_min", bounds_min);
   show.set("u_bounds_max", bounds_max);
+  show.set("u_thumbnail_origin", glm::vec2(0.0f));
+  show.set("u_thumbnail_scale", glm::vec2(1.0f));
   glBindTextureUnit(5, targets.depth_stencil);
   show.use();
   fullscreen_.draw();

@@ -44,6 +44,15 @@ class DebugViews {
   // Heatmap: light evaluations per pixel, averaged over the image.
   [[nodiscard]] double average_light_evaluations() const;
 
+  // The overlay's thumbnails: the G-buffer views (position, normal, albedo,
+  // metallic-roughness, emissive, depth) of `gbuffer`, decoded as the debug
+  // views decode them, side by side in one texture of kThumbnailColumns x 2
+  // cells of kThumbnailWidth pixels across (rows bottom-up, as GL stores them).
+  static constexpr int kThumbnailWidth = 192, kThumbnailColumns = 3, kThumbnailCount = 6;
+  void draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min, glm::vec3 bounds_max);
+  [[nodiscard]] GLuint thumbnails() const { return thumbnails_.id(); }
+  [[nodiscard]] glm::ivec2 thumbnail_size() const { return thumbnail_size_; }
+
  private:
   void draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets);
 
@@ -55,6 +64,9 @@ class DebugViews {
   std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
   gfx::Texture counts_;
+  gfx::Texture thumbnails_;
+  gfx::Framebuffer thumbnail_framebuffer_;
+  glm::ivec2 thumbnail_size_{0};
   glm::ivec2 size_{0};
 };
 

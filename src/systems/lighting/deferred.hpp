@@ -16,6 +16,7 @@ class DeferredTechnique final : public LightingTechnique {
   DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
  private:
   gfx::ShaderProgram& geometry_;

@@ -20,6 +20,7 @@ class LightVolumeTechnique final : public LightingTechnique {
   LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
  private:
   void draw_volumes_with_stencil(const FrameContext& frame);

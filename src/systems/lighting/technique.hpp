@@ -43,6 +43,8 @@ struct FrameTargets {
   glm::ivec2 size{0};
 };
 
+class GBuffer;
+
 class LightingTechnique {
  public:
   virtual ~LightingTechnique() = default;
@@ -70,6 +72,9 @@ class LightingTechnique {
     std::uint32_t overflow_capacity = 0; // LightIndexList::overflow_capacity()
   };
   [[nodiscard]] virtual LightBins bind_light_bins() const { return {}; }
+  // The G-buffer the technique filled this frame, for the overlay's
+  // thumbnails; nullptr for forward techniques.
+  [[nodiscard]] virtual const GBuffer* gbuffer() const { return nullptr; }
 };
 
 struct TechniqueInfo {

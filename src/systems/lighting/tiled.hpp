@@ -19,6 +19,7 @@ class TiledTechnique final : public LightingTechnique {
   TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
   void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
   [[nodiscard]] const LightIndexList& list() const { return *list_; }
   [[nodiscard]] glm::uvec2 tiles() const { return tiles_; }

@@ -1,0 +1,227 @@
+#include "systems/overlay.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include "components/demo.hpp"
+#include "components/frame_resources.hpp"
+#include "components/input.hpp"
+#include "components/light.hpp"
+#include "gfx/gl_object.hpp"
+#include "systems/lighting/debug_views.hpp"
+#include "systems/lighting/shading_model.hpp"
+#include "systems/lighting/technique.hpp"
+#include "systems/mesh_renderer.hpp"
+
+namespace atrium {
+
+const std::string& key_help() {
+  static const std::string kHelp =
+      "w/s a/d q/e   fly forward/back, left/right, down/up (Shift: faster)\n"
+      "mouse drag    look around (arrow keys: turn); scroll: flying speed\n"
+      "t / Shift+t   next / previous lighting mode\n"
+      "1..5          stored views\n"
+      "g             cycle debug views (G-buffer targets, depth, heatmaps, light lists)\n"
+      "l             light-volume outlines on/off\n"
+      "+ / -         double / halve the light count\n"
+      "p             pause / resume the light animation\n"
+      "b             quick benchmark of every mode from here (printed to stdout)\n"
+      "F12           screenshot (PNG in the working folder)\n"
+      "r             reload shaders (a failing one keeps its old version)\n"
+      "v             vsync on/off\n"
+      "F1            hide / show this overlay\n"
+      "h             key help\n"
+      "Esc           quit\n";
+  return kHelp;
+}
+
+namespace {
+
+// Owns the Dear ImGui context and backends for the window's lifetime.
+class Overlay {
+ public:
+  explicit Overlay(GLFWwindow* window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini next to the user's files
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(window, true);
+    ImGui_ImplOpenGL3_Init("#version 450 core");
+  }
+  ~Overlay() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+  }
+  Overlay(const Overlay&) = delete;
+  Overlay& operator=(const Overlay&) = delete;
+
+  void draw(ecs::Registry& registry);
+
+ private:
+  void statistics(ecs::Registry& registry);
+  void controls(ecs::Registry& registry);
+  void thumbnails(const MeshRenderer& renderer);
+
+  double fps_ = 0.0, frame_ms_ = 0.0, window_seconds_ = 0.0;
+  int window_frames_ = 0;
+  double memory_age_ = 1e9;
+  std::uint64_t memory_bytes_ = 0;
+  float light_radius_ = 5.0f;
+};
+
+bool combo(const char* label, const std::string& current, const std::vector<std::string>& items, std::string& chosen) {
+  bool changed = false;
+  if (ImGui::BeginCombo(label, current.c_str())) {
+    for (const std::string& item : items) {
+      if (ImGui::Selectable(item.c_str(), item == current)) {
+        chosen = item;
+        changed = item != current;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  return changed;
+}
+
+void Overlay::statistics(ecs::Registry& registry) {
+  const auto& clock = registry.resource<ecs::FrameClock>();
+  window_seconds_ += clock.delta_seconds;
+  ++window_frames_;
+  memory_age_ += clock.delta_seconds;
+  if (window_seconds_ >= 0.5) {
+    fps_ = window_frames_ / window_seconds_;
+    frame_ms_ = 1000.0 * window_seconds_ / window_frames_;
+    window_seconds_ = 0.0;
+    window_frames_ = 0;
+  }
+  // Asking the driver about every texture is not free: twice a second.
+  if (memory_age_ >= 0.5) {
+    memory_bytes_ = gfx::estimated_gpu_memory_bytes();
+    memory_age_ = 0.0;
+  }
+  const MeshRenderer& renderer = registry.resource<MeshRenderer>();
+  const FrameStats& stats = renderer.stats();
+  const RendererSettings& settings = registry.resource<RendererSettings>();
+  ImGui::Text("%.1f fps, %.2f ms per frame", fps_, frame_ms_);
+  ImGui::Text("mode %s, shading %s", settings.mode.c_str(), settings.shading.c_str());
+  ImGui::Text("%u lights, %zu triangles, %zu draw calls", stats.lights, stats.triangles, stats.draw_calls);
+  if (stats.light_list_entries > 0) {
+    ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
+  }
+  ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
+  if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("pass");
+    ImGui::TableSetupColumn("ms");
+    ImGui::TableHeadersRow();
+    for (const gfx::PassTime& pass : renderer.timer().latest()) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(pass.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", pass.milliseconds);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::Text("timing: %s", renderer.timer().method_name());
+}
+
+void Overlay::controls(ecs::Registry& registry) {
+  auto& settings = registry.resource<RendererSettings>();
+  auto& requests = registry.resource<DemoRequests>();
+  std::vector<std::string> modes, models, views{"(none)"};
+  for (const auto& info : lighting::technique_table()) modes.emplace_back(info.name);
+  for (const auto name : lighting::kShadingModels) models.emplace_back(name);
+  for (const auto name : lighting::kDebugViews) views.emplace_back(name);
+  ImGui::PushItemWidth(220);
+  std::string chosen;
+  if (combo("mode", settings.mode, modes, chosen)) requests.mode = chosen;
+  if (combo("shading", settings.shading, models, chosen)) settings.shading = chosen;
+  if (combo("debug view", settings.debug_view.empty() ? views[0] : settings.debug_view, views, chosen)) {
+    settings.debug_view = chosen == views[0] ? "" : chosen;
+  }
+  int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
+  if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
+    requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, 1'000'000));
+  }
+  // One radius for every point and spot light: where each light's reach ends.
+  if (ImGui::SliderFloat("light radius (m)", &light_radius_, 0.5f, 40.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
+    registry.view<LightColor>().each([&](ecs::Entity e, const LightColor&) {
+      if (!registry.has<DirectionalLight>(e)) registry.add<LightRadius>(e, light_radius_);
+    });
+  }
+  ImGui::PopItemWidth();
+}
+
+void Overlay::thumbnails(const MeshRenderer& renderer) {
+  const GLuint texture = renderer.gbuffer_thumbnails();
+  if (texture == 0) {
+    ImGui::TextUnformatted("(this mode has no G-buffer)");
+    return;
+  }
+  using lighting::DebugViews;
+  const glm::ivec2 cell = renderer.thumbnail_size();
+  constexpr int kRows = DebugViews::kThumbnailCount / DebugViews::kThumbnailColumns;
+  const ImVec2 size(static_cast<float>(cell.x) * 0.65f, static_cast<float>(cell.y) * 0.65f);
+  for (int view = 0; view < DebugViews::kThumbnailCount; ++view) {
+    // GL rows run bottom-up: the cell's top edge has the larger v.
+    const int column = view % DebugViews::kThumbnailColumns, row = kRows - 1 - view / DebugViews::kThumbnailColumns;
+    const ImVec2 uv0(static_cast<float>(column) / DebugViews::kThumbnailColumns, static_cast<float>(row + 1) / kRows);
+    const ImVec2 uv1(static_cast<float>(column + 1) / DebugViews::kThumbnailColumns, static_cast<float>(row) / kRows);
+    ImGui::BeginGroup();
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, uv0, uv1);
+    ImGui::TextUnformatted(std::string(lighting::kDebugViews[static_cast<std::size_t>(view)]).c_str());
+    ImGui::EndGroup();
+    if (column + 1 < DebugViews::kThumbnailColumns) ImGui::SameLine();
+  }
+}
+
+void Overlay::draw(ecs::Registry& registry) {
+  auto& state = registry.resource<OverlayState>();
+  auto& input = registry.resource<InputState>();
+  registry.resource<RendererSettings>().gbuffer_thumbnails = state.visible;
+  if (!state.visible) {
+    input.ui_wants_mouse = input.ui_wants_keyboard = false;
+    return;
+  }
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(430, std::max(200.0f, ImGui::GetIO().DisplaySize.y - 16)), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowBgAlpha(0.8f);
+  if (ImGui::Begin("Atrium (F1 hides, h for keys)")) {
+    statistics(registry);
+    if (ImGui::CollapsingHeader("controls", ImGuiTreeNodeFlags_DefaultOpen)) controls(registry);
+    if (ImGui::CollapsingHeader("G-buffer", ImGuiTreeNodeFlags_DefaultOpen)) thumbnails(registry.resource<MeshRenderer>());
+    if (!state.message.empty() && ImGui::CollapsingHeader("messages", ImGuiTreeNodeFlags_DefaultOpen)) {
+      ImGui::TextUnformatted(state.message.c_str());
+    }
+  }
+  ImGui::End();
+  if (state.show_help) {
+    ImGui::Begin("keys", &state.show_help, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted(key_help().c_str());
+    ImGui::End();
+  }
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  const ImGuiIO& io = ImGui::GetIO();
+  input.ui_wants_mouse = io.WantCaptureMouse;
+  input.ui_wants_keyboard = io.WantCaptureKeyboard;
+}
+
+}  // namespace
+
+void register_overlay(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwindow* window) {
+  registry.set_resource<DemoRequests>();
+  registry.set_resource<OverlayState>();
+  registry.set_resource<Overlay>(window);
+  scheduler.add(ecs::Phase::Render, "overlay", [](ecs::Registry& r) { r.resource<Overlay>().draw(r); });
+}
+
+}  // namespace atrium

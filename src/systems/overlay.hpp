@@ -1,0 +1,24 @@
+// The overlay system (Render, after the MeshRenderer): a Dear ImGui panel over
+// the window with frame rate and time, the last frame's pass timings, the mode,
+// shading model, light count, triangles, draw calls, light-list overflow,
+// estimated GPU memory and G-buffer thumbnails; and controls for mode, light
+// count, light radius, shading model and debug view. F1 hides it.
+#pragma once
+
+#include <string>
+
+#include "ecs/scheduler.hpp"
+
+struct GLFWwindow;
+
+namespace atrium {
+
+// One line per key, for `h`, --help and the overlay's help window.
+[[nodiscard]] const std::string& key_help();
+
+// Sets up Dear ImGui on `window` (after register_input: ImGui's GLFW backend
+// chains to the input system's callbacks) and adds the system. The ImGui
+// context lives as long as the registry's Overlay resource.
+void register_overlay(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwindow* window);
+
+}  // namespace atrium

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# window_keys_test.sh ATRIUM OUT_DIR: drives the demo window with real X key
+# events (xdotool, under xvfb-run) as a user would: every mode with t and
+# Shift+t, the five views, every debug view with g, light count, pause,
+# benchmark, shader reload, help, vsync, overlay, a resize and screenshots;
+# checks each stdout line, compares screenshots by PSNR, and expects exit 0 on
+# Esc with no GL errors.
+set -u
+atrium=$1 out=$2
+rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
+fail() { echo "FAIL: $*" >&2; echo "--- stdout"; cat log; echo "--- stderr"; cat err; kill "$pid" 2>/dev/null; exit 1; }
+
+"$atrium" --size 320x180 --lights 16 --gl-debug > log 2> err &
+pid=$!
+lines_seen=0
+# Waits for the next stdout line after the ones already checked to match $1.
+expect_line() {
+  for _ in $(seq 1 600); do
+    if [ "$(wc -l < log)" -gt "$lines_seen" ]; then
+      lines_seen=$((lines_seen + 1))
+      if sed -n "${lines_seen}p" log | grep -Eq -- "$1"; then return 0; fi
+      continue
+    fi
+    kill -0 "$pid" 2>/dev/null || fail "atrium exited while waiting for '$1'"
+    sleep 0.2
+  done
+  fail "no line matching '$1'"
+}
+press() { xdotool key --window "$wid" "$1"; }
+
+expect_line "^renderer: "
+expect_line "^mode: forward$"
+expect_line "^view: 1 court$"
+expect_line "^lights: 16 "
+wid=$(xdotool search --name "^Atrium" | head -1)
+[ -n "$wid" ] || fail "no window named Atrium"
+
+press p; expect_line "^light animation: paused$"
+modes=$("$atrium" --help | sed -n '/^Modes:/,/^$/p' | awk 'NF > 1 && $1 != "Modes:" {print $1}')
+[ "$(echo "$modes" | wc -l)" -ge 8 ] || fail "could not read the modes from --help"
+for mode in $(echo "$modes" | tail -n +2) forward; do press t; expect_line "^mode: $mode$"; done
+press shift+t; expect_line "^mode: $(echo "$modes" | tail -1)$"
+press t; expect_line "^mode: forward$"
+
+press F12; expect_line "^screenshot: .*\.png$"; forward_view1=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
+press t; expect_line "^mode: deferred$"
+press F12; expect_line "^screenshot: "; deferred_view1=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
+names=(court gallery lamps overview colonnade)
+for v in 2 3 4 5 1; do press "$v"; expect_line "^view: $v ${names[$((v - 1))]}$"; done
+press 3; expect_line "^view: 3 lamps$"
+press F12; expect_line "^screenshot: "; deferred_view3=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
+press 1; expect_line "^view: 1 court$"
+
+for view in position normal albedo metallic-roughness emissive depth light-volumes heatmap light-lists depth-slices; do
+  press g; expect_line "^debug view: $view$"
+  if [ "$view" = normal ]; then press F12; expect_line "^screenshot: "; normal_view1=$(sed -n "${lines_seen}p" log | cut -d' ' -f2); fi
+done
+press g; expect_line "^debug view: off$"
+press l; expect_line "^debug view: light-volumes$"
+press l; expect_line "^debug view: off$"
+
+press plus; expect_line "^lights: 32$"
+press minus; expect_line "^lights: 16$"
+press b; expect_line "^benchmark: every mode"; expect_line "^\| lights \| forward \| deferred"
+press r; expect_line "^shaders: reloaded$"
+press h; expect_line "t / Shift\+t"
+press v; expect_line "^vsync: off$"
+press F1; sleep 2
+xdotool getwindowname "$wid" | grep -Eq "^Atrium - deferred - [0-9]+ fps$" || fail "with the overlay hidden the title shows mode and fps (got '$(xdotool getwindowname "$wid")')"
+xdotool windowsize "$wid" 400 240
+sleep 2
+press F12; expect_line "^screenshot: "; resized=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
+press Escape
+wait "$pid"; code=$?
+[ "$code" -eq 0 ] || fail "exit code $code on Esc"
+grep -q "^GL errors: 0$" log || fail "GL errors reported"
+
+/usr/bin/python3 - "$forward_view1" "$deferred_view1" "$deferred_view3" "$normal_view1" "$resized" <<'PY' || fail "screenshots"
+import sys
+import numpy as np
+import matplotlib.image as mpimg
+forward1, deferred1, deferred3, normal1, resized = (mpimg.imread(p)[..., :3].astype(np.float64) for p in sys.argv[1:])
+def psnr(a, b):
+    mse = np.mean((a - b) ** 2)
+    return float("inf") if mse == 0 else 10 * np.log10(1.0 / mse)
+checks = [
+    ("forward and deferred draw the same picture", psnr(forward1, deferred1) >= 40),
+    ("view 3 differs from view 1", psnr(deferred1, deferred3) < 25),
+    ("the normal debug view differs from the lit image", psnr(deferred1, normal1) < 25),
+    ("the screenshot follows the resized window", resized.shape[:2] == (240, 400)),
+]
+for name, ok in checks:
+    print(("ok   " if ok else "FAIL ") + name)
+sys.exit(0 if all(ok for _, ok in checks) else 1)
+PY
+echo "window keys: all checks passed"

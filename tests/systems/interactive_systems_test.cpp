@@ -1,0 +1,146 @@
+// The window's systems without a window: each test builds a registry, feeds
+// the InputState or clock a system reads, runs one frame and checks components.
+#include <gtest/gtest.h>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <glm/gtc/epsilon.hpp>
+
+#include "components/camera.hpp"
+#include "components/input.hpp"
+#include "components/light.hpp"
+#include "components/transform.hpp"
+#include "systems/camera.hpp"
+#include "systems/fly_camera.hpp"
+#include "systems/input.hpp"
+#include "systems/light_animation.hpp"
+
+namespace atrium {
+namespace {
+
+TEST(InputSystem, TurnsEventsIntoPressesHeldKeysAndMouseMotion) {
+  InputState state;
+  const std::vector<InputEvent> frame1{
+      {InputEvent::Kind::Key, GLFW_KEY_T, GLFW_PRESS, GLFW_MOD_SHIFT, {}},
+      {InputEvent::Kind::Key, GLFW_KEY_T, GLFW_RELEASE, 0, {}},
+      {InputEvent::Kind::Key, GLFW_KEY_W, GLFW_PRESS, 0, {}},
+      {InputEvent::Kind::Key, GLFW_KEY_W, GLFW_REPEAT, 0, {}},
+      {InputEvent::Kind::Key, GLFW_KEY_UNKNOWN, GLFW_PRESS, 0, {}},
+      {InputEvent::Kind::MouseButton, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0, {}},
+      {InputEvent::Kind::Cursor, 0, 0, 0, {10.0, 20.0}},
+      {InputEvent::Kind::Cursor, 0, 0, 0, {14.0, 17.0}},
+      {InputEvent::Kind::Scroll, 0, 0, 0, {0.0, 2.0}},
+  };
+  apply_input_events(state, frame1);
+  ASSERT_EQ(state.pressed.size(), 2u) << "a repeat is not a press; unknown keys are dropped";
+  EXPECT_EQ(state.pressed[0].key, GLFW_KEY_T);
+  EXPECT_EQ(state.pressed[0].mods, GLFW_MOD_SHIFT);
+  EXPECT_FALSE(state.held.test(GLFW_KEY_T));
+  EXPECT_TRUE(state.held.test(GLFW_KEY_W));
+  EXPECT_TRUE(state.looking);
+  EXPECT_EQ(state.cursor_delta, glm::dvec2(14.0, 17.0));
+  EXPECT_EQ(state.scroll, 2.0);
+
+  apply_input_events(state, {});  // the next frame: nothing happened
+  EXPECT_TRUE(state.pressed.empty());
+  EXPECT_TRUE(state.held.test(GLFW_KEY_W)) << "held until released";
+  EXPECT_EQ(state.cursor_delta, glm::dvec2(0.0));
+  EXPECT_EQ(state.scroll, 0.0);
+}
+
+struct FlyRig {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  ecs::Entity camera;
+  FlyRig() {
+    registry.set_resource<InputState>();
+    camera = registry.create();
+    registry.add<Transform>(camera);
+    registry.add<Camera>(camera);
+    registry.add<CameraAngles>(camera);
+    registry.add<FlyCamera>(camera, FlyCamera{2.0f});
+    register_fly_camera(scheduler);
+  }
+  InputState& input() { return registry.resource<InputState>(); }
+  Transform& transform() { return registry.get<Transform>(camera); }
+  CameraAngles& angles() { return registry.get<CameraAngles>(camera); }
+};
+
+TEST(FlyCameraSystem, WMovesForwardAlongTheViewAtItsSpeedAndShiftIsFaster) {
+  FlyRig rig;
+  rig.input().held.set(GLFW_KEY_W);
+  rig.scheduler.run_frame(rig.registry, 0.5);
+  EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(0, 0, -1), 1e-5f)));  // yaw 0 looks along -Z
+  rig.angles().yaw_degrees = 90.0f;  // now along +X
+  rig.input().held.set(GLFW_KEY_LEFT_SHIFT);
+  rig.scheduler.run_frame(rig.registry, 0.5);
+  EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(4, 0, -1), 1e-4f)));
+}
+
+TEST(FlyCameraSystem, QAndEMoveStraightDownAndUpWhateverThePitch) {
+  FlyRig rig;
+  rig.angles().pitch_degrees = 60.0f;
+  rig.input().held.set(GLFW_KEY_E);
+  rig.scheduler.run_frame(rig.registry, 1.0);
+  EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(0, 2, 0), 1e-5f)));
+}
+
+TEST(FlyCameraSystem, MouseDragAndArrowsTurnAndPitchStopsShortOfVertical) {
+  FlyRig rig;
+  rig.input().looking = true;
+  rig.input().cursor_delta = {100.0, -2000.0};  // right, and far up
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_NEAR(rig.angles().yaw_degrees, 15.0f, 1e-4f);
+  EXPECT_EQ(rig.angles().pitch_degrees, kMaxPitchDegrees);
+  rig.input().looking = false;
+  rig.input().held.set(GLFW_KEY_LEFT);
+  rig.scheduler.run_frame(rig.registry, 0.5);
+  EXPECT_NEAR(rig.angles().yaw_degrees, 15.0f - 45.0f, 1e-4f);
+  const glm::quat expected = camera_rotation(rig.angles().yaw_degrees, rig.angles().pitch_degrees);
+  EXPECT_NEAR(glm::abs(glm::dot(rig.transform().rotation, expected)), 1.0f, 1e-5f) << "the Transform follows the angles";
+}
+
+TEST(FlyCameraSystem, ScrollScalesTheSpeedWithinLimitsAndTheOverlayKeepsItsEvents) {
+  FlyRig rig;
+  rig.input().scroll = 2.0;
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_NEAR(rig.registry.get<FlyCamera>(rig.camera).speed, 2.0f * 1.5625f, 1e-5f);
+  rig.input().scroll = -1000.0;
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_EQ(rig.registry.get<FlyCamera>(rig.camera).speed, kMinFlySpeed);
+  // While the overlay has the keyboard, w does not move the camera.
+  rig.input().scroll = 0.0;
+  rig.input().ui_wants_keyboard = true;
+  rig.input().held.set(GLFW_KEY_W);
+  rig.scheduler.run_frame(rig.registry, 1.0);
+  EXPECT_EQ(rig.transform().position, glm::vec3(0.0f));
+}
+
+TEST(LightAnimationSystem, MovesAnimatedLightsFromWhereTheyStartedAndPauses) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  registry.set_resource<LightAnimationSettings>();
+  register_light_animation(scheduler);
+  const ecs::Entity moving = registry.create();
+  registry.add<Transform>(moving, Transform{glm::vec3(1, 2, 3)});
+  registry.add<LightAnimation>(moving, glm::vec3(1, 2, 3), 0.7f, 0.5f, 1.0f);
+  const ecs::Entity placed = registry.create();
+  registry.add<Transform>(placed, Transform{glm::vec3(5, 5, 5)});
+
+  EXPECT_EQ(animated_position(registry.get<LightAnimation>(moving), 0.0), glm::vec3(1, 2, 3)) << "starts at its origin";
+  scheduler.run_frame(registry, 0.25);
+  const glm::vec3 after = registry.get<Transform>(moving).position;
+  EXPECT_GT(glm::distance(after, glm::vec3(1, 2, 3)), 0.05f);
+  EXPECT_LE(glm::distance(glm::vec2(after.x, after.z), glm::vec2(1, 3)), 2.0f * 0.5f + 1e-5f) << "stays on its circle";
+  EXPECT_EQ(registry.get<Transform>(placed).position, glm::vec3(5, 5, 5)) << "lights without LightAnimation stay put";
+
+  registry.resource<LightAnimationSettings>().paused = true;
+  scheduler.run_frame(registry, 1.0);
+  EXPECT_EQ(registry.get<Transform>(moving).position, after);
+  registry.resource<LightAnimationSettings>().paused = false;
+  scheduler.run_frame(registry, 2.0 * 3.14159265 - 0.25);  // a full turn at 1 rad/s
+  EXPECT_LT(glm::distance(registry.get<Transform>(moving).position, glm::vec3(1, 2, 3)), 1e-4f) << "a circle comes back";
+}
+
+}  // namespace
+}  // namespace atrium
