@@ -12,6 +12,7 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libimgui-dev libmeshoptimizer-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool python3 python3-matplotlib python3-numpy
+  clang libclang-rt-14-dev
 )
 mesa_packages=(libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgbm1)
 

@@ -63,6 +63,10 @@ bool read_regular_file(std::vector<unsigned char>* out, std::string* err, const 
 std::string first_line(const std::string& text) {
   std::string line = text.substr(0, text.find('\n'));
   while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+  // tinygltf passes on nlohmann's "[json.exception.out_of_range.406] " tags.
+  if (line.starts_with("[json.exception.") && line.find("] ") != std::string::npos) {
+    line = "not valid JSON (" + line.substr(line.find("] ") + 2) + ")";
+  }
   return line;
 }
 

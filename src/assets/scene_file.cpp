@@ -78,7 +78,8 @@ class Reader {
 
   void only_keys(const json& object, const std::string& pointer, std::initializer_list<const char*> keys) const {
     if (!object.is_object()) fail(pointer, "expected an object, got " + describe(object));
-    for (const auto& [key, value] : object.items()) {
+    for (const auto& item : object.items()) {
+      const std::string& key = item.key();
       if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) == keys.end()) {
         std::string known;
         for (const char* k : keys) known += (known.empty() ? "" : ", ") + std::string(k);
@@ -235,7 +236,8 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   json root;
   try {
     root = json::parse(in);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {
+    // parse_error, and out_of_range for numbers beyond a double (1e400).
     std::string what = e.what();
     throw SceneFileError(file + ": not valid JSON (" + what.substr(what.find(']') + 2) + ")");
   }

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets with clang (build-fuzz/) and runs each for
+# SECONDS (default 60), seeded with ../shared/testdata/gltf, scenes/ and the
+# regression inputs in tests/fuzz/regressions/. A crash leaves its input in
+# build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
+# to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
+#   scripts/fuzz.sh [SECONDS]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seconds=${1:-60}
+./scripts/install-deps.sh
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DATRIUM_FUZZ=ON >/dev/null
+cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer
+testdata=../shared/testdata/gltf
+mkdir -p build-fuzz/crashes
+status=0
+for target in scene_file gltf; do
+  corpus=build-fuzz/corpus/$target
+  seeds=build-fuzz/seeds/$target
+  rm -rf "$seeds" && mkdir -p "$corpus" "$seeds"
+  cp tests/fuzz/regressions/$target/* "$seeds"/ 2>/dev/null || true
+  if [ "$target" = scene_file ]; then
+    cp scenes/*.json tests/data/*.json "$seeds"/
+  elif [ -d "$testdata" ]; then
+    find "$testdata" \( -name '*.gltf' -o -name '*.glb' \) -size -2M -exec cp --backup=numbered {} "$seeds"/ \;
+  fi
+  echo "fuzzing $target for ${seconds}s ($(ls "$seeds" | wc -l) seeds)"
+  # The seeds are read once; new inputs go to the working corpus. Inputs that
+  # allocate beyond 2 GiB count as bugs too.
+  if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+      build-fuzz/fuzz/${target}_fuzzer "$corpus" "$seeds" -max_total_time="$seconds" -rss_limit_mb=3072 \
+      -malloc_limit_mb=2048 -timeout=30 -print_final_stats=1 -artifact_prefix=build-fuzz/crashes/${target}- \
+      > build-fuzz/${target}.log 2>&1; then
+    echo "FAIL: $target crashed; input and log:" >&2
+    ls build-fuzz/crashes/ >&2
+    grep -E "ERROR|SUMMARY|==[0-9]+==|#[0-9]+ " build-fuzz/${target}.log | head -40 >&2
+    status=1
+  else
+    grep -E "stat::number_of_executed_units|stat::peak_rss_mb" build-fuzz/${target}.log || true
+  fi
+done
+exit $status
