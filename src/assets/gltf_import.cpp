@@ -385,6 +385,11 @@ class Importer {
         for (std::size_t i = 0; i < count; ++i) out.indices[i] = static_cast<std::uint32_t>(i);
       }
       out.indices.resize(out.indices.size() / 3 * 3);
+      const std::size_t triangles = out.indices.size() / 3;
+      if (const std::size_t dropped = drop_unusable_triangles(out)) {
+        warn(what + ": " + std::to_string(dropped) + " of " + std::to_string(triangles) +
+             " triangles have NaN or infinite positions; they are skipped");
+      }
       if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= materials.size()) {
         fail(what + " refers to material " + std::to_string(prim.material) + ", which does not exist");
       }
@@ -404,6 +409,27 @@ class Importer {
       mesh.primitives.push_back(std::move(out));
     }
     return mesh;
+  }
+
+  // Removes triangles with a corner at a NaN or infinite position (or whose
+  // normal overflows): they would rasterise garbage and poison normals. Triangles
+  // of zero area stay: they cover no pixel, and real exports have them (the
+  // teapot's lid has 8), so dropping them would only change counts the files
+  // declare. Returns how many went.
+  static std::size_t drop_unusable_triangles(Primitive& p) {
+    auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    std::size_t kept = 0;
+    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
+      const glm::vec3 a = p.vertices[p.indices[t]].position, b = p.vertices[p.indices[t + 1]].position,
+                      c = p.vertices[p.indices[t + 2]].position;
+      const glm::vec3 n = glm::cross(b - a, c - a);
+      if (!finite(a) || !finite(b) || !finite(c) || !finite(n)) continue;
+      for (int k = 0; k < 3; ++k) p.indices[kept * 3 + static_cast<std::size_t>(k)] = p.indices[t + static_cast<std::size_t>(k)];
+      ++kept;
+    }
+    const std::size_t dropped = p.indices.size() / 3 - kept;
+    p.indices.resize(kept * 3);
+    return dropped;
   }
 
   // Normalises given normals; where one is zero-length or not finite, uses the
@@ -698,6 +724,22 @@ class Importer {
       light.outer_cone = static_cast<float>(src.spot.outerConeAngle);
     } else if (src.type != "point") {
       warn("light " + std::to_string(index) + " has the unknown type '" + src.type + "' and is skipped");
+      return;
+    }
+    // A light that would poison every pixel it reaches (NaN, infinity) or give
+    // nothing (zero, negative) is dropped; the rest of the model still loads.
+    const auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+    const std::string name = "light " + std::to_string(index) + (src.name.empty() ? "" : " '" + src.name + "'");
+    if (!std::isfinite(light.intensity) || light.intensity <= 0.0f) {
+      warn(name + " has intensity " + std::to_string(src.intensity) + " (expected a positive number) and is skipped");
+      return;
+    }
+    if (!finite(light.color) || glm::any(glm::lessThan(light.color, glm::vec3(0.0f)))) {
+      warn(name + " has a negative or non-finite colour and is skipped");
+      return;
+    }
+    if (!finite(light.position) || !finite(light.direction) || (light.radius && !std::isfinite(*light.radius))) {
+      warn(name + " ends up at a non-finite position, direction or range (its node transforms) and is skipped");
       return;
     }
     result_.lights.push_back(light);

@@ -1,5 +1,6 @@
 #include "assets/scene_file.hpp"
 
+#include <cstdio>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -37,6 +38,13 @@ class Reader {
     return object.at(key);
   }
 
+  // 10000000, 0.5, -1: the shortest form that reads back the same.
+  static std::string compact_number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.10g", v);
+    return text;
+  }
+
   double number(const json& value, const std::string& pointer, double min, double max, const char* expected) const {
     if (!value.is_number()) fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
     const double v = value.get<double>();
@@ -47,7 +55,10 @@ class Reader {
   glm::vec3 vec3(const json& value, const std::string& pointer, double min = -1e7, double max = 1e7) const {
     if (!value.is_array() || value.size() != 3) fail(pointer, "expected an array of 3 numbers, got " + describe(value));
     glm::vec3 out;
-    for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(number(value[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i), min, max, "a number"));
+    const std::string expected = "a number from " + compact_number(min) + " to " + compact_number(max);
+    for (int i = 0; i < 3; ++i) {
+      out[i] = static_cast<float>(number(value[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i), min, max, expected.c_str()));
+    }
     return out;
   }
 
@@ -114,7 +125,7 @@ SceneLight read_light(const Reader& r, const json& j, const std::string& p, cons
   else if (type != "point") r.fail(p + "/type", "expected \"point\", \"spot\" or \"directional\", got \"" + type + "\"");
   if (light.kind != LightKind::Directional) light.position = read_point(r, j, p, scene);
   if (j.contains("color")) light.color = r.color(j["color"], p + "/color");
-  light.intensity = static_cast<float>(r.number(r.member(j, p, "intensity"), p + "/intensity", 0.0, 1e9, "a non-negative number"));
+  light.intensity = static_cast<float>(r.number(r.member(j, p, "intensity"), p + "/intensity", 1e-9, 1e9, "a positive number"));
   if (j.contains("radius")) light.radius = static_cast<float>(r.number(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number"));
   if (light.kind != LightKind::Point) {
     const glm::vec3 direction = r.vec3(r.member(j, p, "direction"), p + "/direction");
@@ -151,7 +162,7 @@ LightGenerator read_generator(const Reader& r, const json& j, const std::string&
     if (glm::any(glm::greaterThan(g.box_min, g.box_max))) r.fail(p + "/box", "expected min <= max in every axis");
   }
   if (j.contains("color") && !(j["color"].is_string() && j["color"] == "random")) g.color = r.color(j["color"], p + "/color");
-  const glm::vec2 intensity = r.range(r.member(j, p, "intensity"), p + "/intensity", 0.0, 1e9, "a non-negative number");
+  const glm::vec2 intensity = r.range(r.member(j, p, "intensity"), p + "/intensity", 1e-9, 1e9, "a positive number");
   g.intensity_min = intensity.x;
   g.intensity_max = intensity.y;
   if (j.contains("radius")) g.radius_range = r.range(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number");

@@ -120,10 +120,18 @@ TEST_F(SceneFile, MistakesNameThePathAndWhatWasExpected) {
   EXPECT_EQ(error(R"({"lights": [{"position": [0, 0], "intensity": 1}]})"),
             file + ": /lights/0/position: expected an array of 3 numbers, got [0,0]");
   EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, "x"], "intensity": 1}]})"),
-            file + ": /lights/0/position/2: expected a number, got \"x\"");
+            file + ": /lights/0/position/2: expected a number from -10000000 to 10000000, got \"x\"");
   EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, 0]}]})"), file + ": /lights/0/intensity: is missing");
   EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, 0], "intensity": -1}]})"),
-            file + ": /lights/0/intensity: expected a non-negative number, got -1");
+            file + ": /lights/0/intensity: expected a positive number, got -1");
+  EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, 0], "intensity": 1}, {"position": [0, 0, 0], "intensity": 0}]})"),
+            file + ": /lights/1/intensity: expected a positive number, got 0");
+  EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, 0], "intensity": 1, "radius": 0}]})"),
+            file + ": /lights/0/radius: expected a positive number, got 0");
+  EXPECT_EQ(error(R"({"lights": [{"position": [0, 1e308, 0], "intensity": 1}]})"),
+            file + ": /lights/0/position/1: expected a number from -10000000 to 10000000, got 1e+308");
+  EXPECT_EQ(error(R"({"lights": [{"position": [0, 1e999, 0], "intensity": 1}]})"),
+            file + ": not valid JSON (number overflow parsing '1e999')");
   EXPECT_EQ(error(R"({"lights": {"position": [0, 0, 0]}})"), file + ": /lights: expected an array, got {\"position\":[0,0,0]}");
   EXPECT_EQ(error(R"({"lights": [{"type": "area", "position": [0, 0, 0], "intensity": 1}]})"),
             file + ": /lights/0/type: expected \"point\", \"spot\" or \"directional\", got \"area\"");
