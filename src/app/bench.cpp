@@ -106,8 +106,8 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   result.options.warmup = warmup;
   const std::string previous = world.mode();
   const double reaching = count_evaluations(world, "deferred-radius");
-  for (const auto& info : lighting::technique_table()) {
-    result.rows.push_back(measure_mode(world, std::string(info.name), frames, warmup, reaching));
+  for (const std::string& mode : lighting::mode_names()) {
+    result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching));
     result.rows.back().view_name = "current camera";
   }
   describe_renderer(result, world);
@@ -118,10 +118,7 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
 BenchResult run_bench(const BenchOptions& options, const std::function<void(std::size_t, std::size_t)>& progress) {
   BenchResult result;
   result.options = options;
-  std::vector<std::string> modes = options.modes;
-  if (modes.empty()) {
-    for (const auto& info : lighting::technique_table()) modes.emplace_back(info.name);
-  }
+  const std::vector<std::string> modes = options.modes.empty() ? lighting::mode_names() : options.modes;
   const std::size_t total = options.light_counts.size() * modes.size() * std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {

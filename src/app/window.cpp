@@ -43,12 +43,6 @@ std::string step_name(const std::vector<std::string>& names, const std::string& 
   return names[static_cast<std::size_t>(((index + step) % count + count) % count)];
 }
 
-std::vector<std::string> mode_names() {
-  std::vector<std::string> names;
-  for (const auto& info : lighting::technique_table()) names.emplace_back(info.name);
-  return names;
-}
-
 void set_debug_view(World& world, const std::string& view) {
   world.registry().resource<RendererSettings>().debug_view = view;
   say("debug view: " + (view.empty() ? std::string("off") : view));
@@ -65,7 +59,7 @@ void handle_keys(World& world, gfx::WindowContext& context) {
     const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
     switch (press.key) {
       case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(context.window(), GLFW_TRUE); break;
-      case GLFW_KEY_T: requests.mode = step_name(mode_names(), world.mode(), shift ? -1 : 1); break;
+      case GLFW_KEY_T: requests.mode = step_name(lighting::mode_names(), world.mode(), shift ? -1 : 1); break;
       case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: case GLFW_KEY_5:
         requests.view = press.key - GLFW_KEY_0;
         break;

@@ -133,8 +133,8 @@ void Overlay::statistics(ecs::Registry& registry) {
 void Overlay::controls(ecs::Registry& registry) {
   auto& settings = registry.resource<RendererSettings>();
   auto& requests = registry.resource<DemoRequests>();
-  std::vector<std::string> modes, models, views{"(none)"};
-  for (const auto& info : lighting::technique_table()) modes.emplace_back(info.name);
+  const std::vector<std::string> modes = lighting::mode_names();
+  std::vector<std::string> models, views{"(none)"};
   for (const auto name : lighting::kShadingModels) models.emplace_back(name);
   for (const auto name : lighting::kDebugViews) views.emplace_back(name);
   ImGui::PushItemWidth(220);

@@ -12,10 +12,8 @@
 namespace atrium::testing {
 
 inline std::vector<std::string> non_forward_modes() {
-  std::vector<std::string> modes;
-  for (const auto& info : lighting::technique_table()) {
-    if (info.name != "forward") modes.emplace_back(info.name);
-  }
+  std::vector<std::string> modes = lighting::mode_names();
+  std::erase(modes, "forward");
   return modes;
 }
 

@@ -65,31 +65,28 @@ void DebugViews::begin_counting() {
 
 void DebugViews::draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
                       GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
+  // Every view is a full-screen pass into the output; the G-buffer, depth and
+  // outline views first fill their own G-buffer (and the depth buffer).
+  const bool reads_gbuffer = view != kHeatmapView && view != kLightListView && view != kDepthSliceView;
+  if (reads_gbuffer) gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
+  glViewport(0, 0, size_.x, size_.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
   if (view == kHeatmapView) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gfx::ShaderProgram& heatmap = gpu_.shaders().get({"post/fullscreen.vert", "debug/heatmap.frag"});
-    // Red at twice the light count: forward's overdraw can exceed one pass over all lights.
+    // The top of the map at twice the light count: forward's overdraw can exceed one pass over all lights.
     heatmap.set("u_scale_max", 2.0f * static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
     glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
-    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
-    glViewport(0, 0, size_.x, size_.y);
     heatmap.use();
     fullscreen_.draw();
     return;
   }
   if (view == kLightListView || view == kDepthSliceView) {
-    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
-    glViewport(0, 0, size_.x, size_.y);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
     draw_light_bins(view, technique, frame, targets);
     return;
   }
-  gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
-  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
-  glViewport(0, 0, size_.x, size_.y);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
   gbuffer_.bind_textures();
   if (view == kOutlineView) {
     gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}).use();

@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -87,6 +88,8 @@ struct TechniqueInfo {
 [[nodiscard]] std::span<const TechniqueInfo> technique_table();
 // nullptr when no technique has that name.
 [[nodiscard]] const TechniqueInfo* find_technique(std::string_view name);
+// The mode names in table order (for `t`, menus and sweeps).
+[[nodiscard]] std::vector<std::string> mode_names();
 // "forward, deferred, ..." for messages.
 [[nodiscard]] std::string technique_names();
 

@@ -44,9 +44,15 @@ const TechniqueInfo* find_technique(std::string_view name) {
   return nullptr;
 }
 
+std::vector<std::string> mode_names() {
+  std::vector<std::string> names;
+  for (const TechniqueInfo& info : kTechniques) names.emplace_back(info.name);
+  return names;
+}
+
 std::string technique_names() {
   std::string names;
-  for (const TechniqueInfo& info : kTechniques) names += (names.empty() ? "" : ", ") + std::string(info.name);
+  for (const std::string& name : mode_names()) names += (names.empty() ? "" : ", ") + name;
   return names;
 }
 
