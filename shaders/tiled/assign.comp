@@ -77,7 +77,7 @@ void main() {
   }
   barrier();
   if (gl_LocalInvocationIndex == 0u) {
-    s_offset = s_count > 0u ? atomicAdd(u_light_total, s_count) : 0u;
+    s_offset = reserve_light_range(s_count);
     u_light_ranges[tile_index] = LightRange(s_offset, s_count);
   }
   barrier();

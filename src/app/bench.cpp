@@ -26,19 +26,13 @@ double percentile(std::vector<double> values, double p) {
   return values[low] + (values[high] - values[low]) * (position - static_cast<double>(low));
 }
 
-// --light-radius and --constant-density: every light gets the same radius, and
-// an intensity whose derived radius is that radius, so brightness stays sane.
-void apply_radius(World& world, const BenchOptions& options, std::uint32_t lights) {
-  if (!options.light_radius && !options.constant_density) return;
+// --light-radius and --constant-density: every light gets the same radius
+// (World::set_light_radius); with constant density it shrinks as lights grow.
+std::optional<float> bench_radius(const BenchOptions& options, std::uint32_t lights) {
+  if (!options.light_radius && !options.constant_density) return std::nullopt;
   float radius = options.light_radius.value_or(4.0f);
   if (options.constant_density) radius *= std::cbrt(1024.0f / static_cast<float>(std::max(lights, 1u)));
-  ecs::Registry& registry = world.registry();
-  registry.view<LightColor>().each([&](ecs::Entity e, LightColor& light) {
-    if (registry.has<DirectionalLight>(e)) return;
-    const float brightest = std::max({light.color.r, light.color.g, light.color.b, 1e-6f});
-    light.intensity = radius * radius * lighting::kRadiusThreshold / brightest;
-    registry.add<LightRadius>(e, radius);
-  });
+  return radius;
 }
 
 // Light evaluations per pixel that `mode` performs, from the heatmap counters.
@@ -122,8 +116,8 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   const std::size_t total = options.light_counts.size() * modes.size() * std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
-    World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options});
-    apply_radius(world, options, lights);
+    World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
+                 bench_radius(options, lights)});
     std::vector<int> views = options.views;
     if (views.empty()) {
       for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);

@@ -94,14 +94,6 @@ bool parse_bench_option(std::string_view arg, Value&& value, CliOptions& options
     bench.frames = parse_number<int>("--frames", value(), 1, 100000);
   } else if (arg == "--warmup") {
     bench.warmup = parse_number<int>("--warmup", value(), 0, 100000);
-  } else if (arg == "--light-radius") {
-    const std::string text(value());
-    char* end = nullptr;
-    const float radius = std::strtof(text.c_str(), &end);
-    if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
-      throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
-    }
-    bench.light_radius = radius;
   } else if (arg == "--constant-density") {
     bench.constant_density = true;
   } else if (arg == "--csv") {
@@ -134,7 +126,7 @@ std::string help_text() {
          "                                           every mode at every view against forward (PSNR,\n"
          "                                           largest difference); exit 1 under 40 dB\n"
          "  atrium bench [SCENE] [--modes all|LIST] [--lights LIST] [--views all|LIST] [--size WxH]\n"
-         "               [--frames N] [--warmup N] [--light-radius R] [--constant-density]\n"
+         "               [--frames N] [--warmup N] [--constant-density]\n"
          "               [--csv FILE] [--md FILE] [--plot FILE.png]\n"
          "                                           frame and pass times over modes, light counts\n"
          "                                           and views (default: all modes, 10,50,110,1024\n"
@@ -158,6 +150,8 @@ std::string help_text() {
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
+         "  --light-radius R  every point and spot light reaches R metres (its intensity\n"
+         "                  scaled to match); bench --constant-density shrinks R as lights grow\n"
          "  --view K        stored view 1..5 (default 1)\n"
          "  --size WxH      image or window size in pixels (default 1280x720)\n"
          "  --out FILE.png  render: where to write the image\n"
@@ -235,6 +229,14 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
       }
     } else if (arg == "--lights") {
       options.lights = parse_number<std::uint32_t>("--lights", value(), 0, kMaxLights);
+    } else if (arg == "--light-radius") {
+      const std::string text(value());
+      char* end = nullptr;
+      const float radius = std::strtof(text.c_str(), &end);
+      if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
+        throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
+      }
+      options.light_radius = radius;
     } else if (arg == "--view") {
       options.view = parse_number<int>("--view", value(), 1, 1000);
     } else if (arg == "--size") {
@@ -277,7 +279,8 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
 
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
-          options.size,  options.shading,    options.debug_view, options.technique_options};
+          options.size,  options.shading,    options.debug_view, options.technique_options,
+          options.light_radius};
 }
 
 namespace {
@@ -375,6 +378,7 @@ void plot(const std::string& csv, const std::string& png) {
 int run_bench_command(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
   BenchOptions bench = options.bench;
+  bench.light_radius = options.light_radius;
   bench.scene = options.scene;
   bench.size = options.size;
   bench.shading = options.shading;

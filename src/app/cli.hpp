@@ -39,6 +39,7 @@ struct CliOptions {
   std::string debug_view;  // empty: the lit image
   lighting::TechniqueOptions technique_options;  // --cluster-grid, --active-clusters
   std::optional<std::uint32_t> lights;
+  std::optional<float> light_radius;  // --light-radius: one radius for every point and spot light
   int view = 1;
   glm::ivec2 size{1280, 720};
   std::string out;                 // render: PNG path

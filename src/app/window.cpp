@@ -18,6 +18,7 @@
 #include "gfx/context.hpp"
 #include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
+#include "gfx/limits.hpp"
 #include "systems/fly_camera.hpp"
 #include "systems/input.hpp"
 #include "systems/light_animation.hpp"
@@ -155,6 +156,28 @@ void carry_out(World& world) {
   requests = {};
 }
 
+// The last mode and light count that rendered.
+struct Settings {
+  std::string mode;
+  std::uint32_t lights = 0;
+};
+
+// A frame asked for more than the driver allows: the window goes back to the
+// settings that last rendered, or, where those are the ones refused (a larger
+// window, a wider light radius), halves the lights. Only a refusal with no
+// lights left ends the program.
+void step_back(World& world, Settings& settled, const gfx::ResourceLimitError& e) {
+  const bool changed = world.mode() != settled.mode || world.light_count() != settled.lights;
+  if (!changed && world.light_count() == 0) throw;
+  if (!changed) settled.lights /= 2;
+  std::fprintf(stderr, "atrium: %s\n", e.what());
+  world.set_mode(settled.mode);
+  if (world.light_count() != settled.lights) world.set_light_count(settled.lights);
+  const std::string line = "refused: back to " + settled.mode + " with " + std::to_string(settled.lights) + " lights";
+  world.registry().resource<OverlayState>().message = std::string(e.what()) + "\n" + line;
+  say(line);
+}
+
 }  // namespace
 
 int run_window(const CliOptions& options) {
@@ -175,6 +198,7 @@ int run_window(const CliOptions& options) {
   say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
   say("lights: " + std::to_string(world.light_count()) + " (press h for the keys)");
 
+  Settings settled{world.mode(), world.light_count()};
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
   auto title_time = last;
@@ -191,7 +215,13 @@ int run_window(const CliOptions& options) {
     }
     world.set_size({width, height});
     const auto now = Clock::now();
-    world.frame(std::chrono::duration<double>(now - last).count());
+    try {
+      world.frame(std::chrono::duration<double>(now - last).count());
+      settled = {world.mode(), world.light_count()};
+    } catch (const gfx::ResourceLimitError& e) {
+      step_back(world, settled, e);
+      continue;
+    }
     last = now;
     glfwSwapBuffers(window);
     handle_keys(world, *context);

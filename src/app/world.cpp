@@ -20,6 +20,7 @@
 #include "components/mesh_instance.hpp"
 #include "systems/camera.hpp"
 #include "systems/light_buffer.hpp"
+#include "systems/lighting/light_falloff.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
@@ -61,7 +62,7 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
                    "', a scene file .json, or a glTF model .gltf/.glb)");
 }
 
-void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene) {
+void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene, std::optional<float> radius) {
   // Animated lights start at different points of their circles, spread by the
   // golden angle so that neighbours do not move in step.
   constexpr float kGoldenAngle = 2.39996323f;
@@ -74,23 +75,30 @@ void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene
     if (glm::dot(forward, light.direction) < -0.9999f) transform.rotation = glm::angleAxis(glm::pi<float>(), glm::vec3(0, 1, 0));
     else transform.rotation = glm::rotation(forward, glm::normalize(light.direction));
     registry.add<Transform>(e, transform);
-    registry.add<LightColor>(e, light.color, light.intensity);
-    if (light.radius) registry.add<LightRadius>(e, *light.radius);
+    const bool directional = light.kind == assets::LightKind::Directional;
+    if (radius && !directional) {
+      const float brightest = std::max({light.color.r, light.color.g, light.color.b, 1e-6f});
+      registry.add<LightColor>(e, light.color, *radius * *radius * lighting::kRadiusThreshold / brightest);
+      registry.add<LightRadius>(e, *radius);
+    } else {
+      registry.add<LightColor>(e, light.color, light.intensity);
+      if (light.radius) registry.add<LightRadius>(e, *light.radius);
+    }
     if (light.kind == assets::LightKind::Spot) registry.add<SpotCone>(e, light.inner_cone, light.outer_cone);
-    if (light.kind == assets::LightKind::Directional) registry.add<DirectionalLight>(e);
+    if (directional) registry.add<DirectionalLight>(e);
     if (light.generated && light.kind == assets::LightKind::Point) {
       registry.add<LightAnimation>(e, light.position, kGoldenAngle * static_cast<float>(animated++));
     }
   }
 }
 
-void spawn(ecs::Registry& registry, const assets::SceneDescription& scene) {
+void spawn(ecs::Registry& registry, const assets::SceneDescription& scene, std::optional<float> light_radius) {
   for (const auto& instance : scene.instances) {
     const ecs::Entity e = registry.create();
     registry.add<Transform>(e, instance.transform);
     registry.add<MeshInstance>(e, instance.asset, instance.mesh);
   }
-  spawn_lights(registry, scene);
+  spawn_lights(registry, scene, light_radius);
   const ecs::Entity camera = registry.create();
   registry.add<Transform>(camera);
   registry.add<Camera>(camera);
@@ -129,7 +137,8 @@ void World::start(const WorldOptions& options) {
   registry_.set_resource<RendererSettings>();
   registry_.set_resource<LightAnimationSettings>();
   registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
-  spawn(registry_, scene_);
+  light_radius_ = options.light_radius;
+  spawn(registry_, scene_, light_radius_);
 
   set_mode(options.mode.value_or(scene_.default_mode));
   auto& settings = registry_.resource<RendererSettings>();
@@ -166,7 +175,12 @@ void World::set_light_count(std::uint32_t count) {
   registry_.view<LightColor>().each([&](ecs::Entity e, const LightColor&) { lights.push_back(e); });
   for (const ecs::Entity e : lights) registry_.destroy(e);
   assets::resize_lights(scene_, count);
-  spawn_lights(registry_, scene_);
+  spawn_lights(registry_, scene_, light_radius_);
+}
+
+void World::set_light_radius(std::optional<float> radius) {
+  light_radius_ = radius;
+  set_light_count(light_count());
 }
 
 std::uint32_t World::light_count() const { return static_cast<std::uint32_t>(scene_.lights.size()); }

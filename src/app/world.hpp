@@ -33,6 +33,9 @@ struct WorldOptions {
   std::string shading = "pbr";          // a name from systems/lighting/shading_model.hpp
   std::string debug_view;               // empty, or a name from systems/lighting/debug_views.hpp
   lighting::TechniqueOptions technique_options;
+  // Every point and spot light gets this radius, and the intensity whose derived
+  // radius it is (so brightness stays sane); absent: the scene's own.
+  std::optional<float> light_radius;
 };
 
 class World {
@@ -55,6 +58,10 @@ class World {
   // (assets::resize_lights: generated lights fill up, growing keeps the rest).
   void set_light_count(std::uint32_t count);
   [[nodiscard]] std::uint32_t light_count() const;
+  // Respawns the lights with one radius for all (WorldOptions::light_radius) or
+  // their own (nullopt).
+  void set_light_radius(std::optional<float> radius);
+  [[nodiscard]] std::optional<float> light_radius() const { return light_radius_; }
   // Recompiles every shader; a failing program keeps its old version and its
   // error comes back (one string per failing program).
   std::vector<std::string> reload_shaders();
@@ -76,6 +83,7 @@ class World {
   ecs::Scheduler scheduler_;
   assets::SceneDescription scene_;
   int view_ = 1;
+  std::optional<float> light_radius_;
   assets::LoadReport report_;
   double upload_seconds_ = 0.0;
 

@@ -1,19 +1,10 @@
 #include "gfx/pass_timer.hpp"
 
-#include <string_view>
+#include "gfx/limits.hpp"
 
 namespace atrium::gfx {
-namespace {
-TimingMethod detect() {
-  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const std::string_view name = renderer ? renderer : "";
-  const bool software = name.find("llvmpipe") != std::string_view::npos || name.find("softpipe") != std::string_view::npos ||
-                        name.find("lavapipe") != std::string_view::npos;
-  return software ? TimingMethod::CpuFinish : TimingMethod::GpuQueries;
-}
-}  // namespace
 
-PassTimer::PassTimer() : PassTimer(detect()) {}
+PassTimer::PassTimer() : PassTimer(is_software_renderer() ? TimingMethod::CpuFinish : TimingMethod::GpuQueries) {}
 PassTimer::PassTimer(TimingMethod method) : method_(method) {}
 
 const char* PassTimer::method_name() const {

@@ -1,10 +1,14 @@
 // The LightBuffer system (Render phase, before the MeshRenderer): mirrors every
 // light entity (Transform + LightColor; optional LightRadius, SpotCone,
 // DirectionalLight) into one shader storage buffer each frame. The buffer grows
-// geometrically; there is no cap.
+// geometrically up to what one storage buffer may hold (gfx::storage_block_limit),
+// beyond which the frame is refused with gfx::ResourceLimitError. Lights whose
+// values cannot be drawn (NaN, infinite, negative) are left out with a warning.
 #pragma once
 
 #include <cstdint>
+#include <string>
+#include <unordered_set>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -30,10 +34,26 @@ struct LightBuffer {
   std::size_t capacity = 0;  // lights the buffer can hold
   std::uint32_t count = 0;   // lights written this frame
   std::vector<GpuLight> staging;
+  std::uint32_t rejected = 0;  // light entities left out this frame
+  std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
 };
 
-// Collects the lights of the registry in GPU layout (radius derived when absent).
-[[nodiscard]] std::vector<GpuLight> gather_lights(ecs::Registry& registry);
+// A light entity that cannot be drawn and why, e.g. "position (nan, 0, 1) is not finite".
+struct RejectedLight {
+  ecs::Entity entity;
+  std::string problem;
+};
+
+struct GatheredLights {
+  std::vector<GpuLight> lights;
+  std::vector<RejectedLight> rejected;
+};
+
+// Collects the lights of the registry in GPU layout (radius derived when
+// absent). Lights that a system left with a non-finite position or direction,
+// or a colour, intensity or radius that is negative, zero where it must not be,
+// or not finite, are rejected rather than poisoning every pixel they reach.
+[[nodiscard]] GatheredLights gather_lights(ecs::Registry& registry);
 
 void register_light_buffer(ecs::Scheduler& scheduler);
 

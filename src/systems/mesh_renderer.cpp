@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/frame_uniforms.hpp"
@@ -87,6 +88,19 @@ void MeshRenderer::recreate_technique() {
   debug_views_.reset();
 }
 
+void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const {
+  const std::uint32_t limit = gfx::shader_loop_limit();
+  if (!limit || light_count <= limit) return;
+  const std::string why = lighting::find_technique(mode_)->loops_over_every_light ? "each pixel loops over every light"
+                          : !draws.blended.empty() ? "the scene's blended surfaces are shaded forward over every light"
+                                                   : "";
+  if (why.empty()) return;
+  throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(light_count) + " lights: " + why +
+                                ", and this driver ends a shader's loops after " + std::to_string(limit) +
+                                " iterations (llvmpipe), so pixels would leave lights out; use at most " + std::to_string(limit) +
+                                " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ""));
+}
+
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
@@ -142,7 +156,13 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                      timer_,     view.view, view.projection, view.near_plane,
                                      view.far_plane};
   if (counting) debug_views().begin_counting();
-  technique_->execute(frame, targets());
+  refuse_unbounded_loops(draws, lights.count);
+  try {
+    technique_->execute(frame, targets());
+  } catch (const gfx::ResourceLimitError& e) {
+    throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
+                                  std::to_string(size.y) + ": " + e.what());
+  }
   stats_.light_list_entries = technique_->light_lists().entries;
   stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
 

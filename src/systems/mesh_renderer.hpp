@@ -68,6 +68,9 @@ class MeshRenderer {
   lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);
   [[nodiscard]] lighting::FrameTargets targets() const;
+  // Throws gfx::ResourceLimitError when the driver limits shader loops and a
+  // pixel of this frame would loop over more lights than that limit.
+  void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
 
   glm::ivec2 size_{0};
   std::string mode_;

@@ -7,33 +7,15 @@
 # Esc with no GL errors.
 set -u
 atrium=$1 out=$2
+. "$(dirname "$0")/window_driver.sh"
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
-fail() { echo "FAIL: $*" >&2; echo "--- stdout"; cat log; echo "--- stderr"; cat err; kill "$pid" 2>/dev/null; exit 1; }
 
-"$atrium" --size 320x180 --lights 16 --gl-debug > log 2> err &
-pid=$!
-lines_seen=0
-# Waits for the next stdout line after the ones already checked to match $1.
-expect_line() {
-  for _ in $(seq 1 600); do
-    if [ "$(wc -l < log)" -gt "$lines_seen" ]; then
-      lines_seen=$((lines_seen + 1))
-      if sed -n "${lines_seen}p" log | grep -Eq -- "$1"; then return 0; fi
-      continue
-    fi
-    kill -0 "$pid" 2>/dev/null || fail "atrium exited while waiting for '$1'"
-    sleep 0.2
-  done
-  fail "no line matching '$1'"
-}
-press() { xdotool key --window "$wid" "$1"; }
-
+start_atrium --size 320x180 --lights 16 --gl-debug
 expect_line "^renderer: "
 expect_line "^mode: forward$"
 expect_line "^view: 1 court$"
 expect_line "^lights: 16 "
-wid=$(xdotool search --name "^Atrium" | head -1)
-[ -n "$wid" ] || fail "no window named Atrium"
+find_window
 
 press p; expect_line "^light animation: paused$"
 modes=$("$atrium" --help | sed -n '/^Modes:/,/^$/p' | awk 'NF > 1 && $1 != "Modes:" {print $1}')
@@ -70,10 +52,7 @@ xdotool getwindowname "$wid" | grep -Eq "^Atrium - deferred - [0-9]+ fps$" || fa
 xdotool windowsize "$wid" 400 240
 sleep 2
 press F12; expect_line "^screenshot: "; resized=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
-press Escape
-wait "$pid"; code=$?
-[ "$code" -eq 0 ] || fail "exit code $code on Esc"
-grep -q "^GL errors: 0$" log || fail "GL errors reported"
+quit_cleanly
 
 /usr/bin/python3 - "$forward_view1" "$deferred_view1" "$deferred_view3" "$normal_view1" "$resized" <<'PY' || fail "screenshots"
 import sys

@@ -1,6 +1,8 @@
 // The cluster grid: the GPU's light lists equal a CPU computation of the same
 // grid (as sets), every depth maps to a valid slice in GLSL and C++ alike, lists
 // grow instead of dropping lights, and --active-clusters changes no pixel.
+#include <algorithm>
+
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
@@ -37,6 +39,28 @@ TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
   }
   EXPECT_GT(assignments, 300u) << "lights overlap several clusters";
   EXPECT_EQ(grid.list().last_total(), assignments);
+}
+
+TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder) {
+  // More lights than one assignment invocation tests (kAssignLightChunk), small
+  // enough to keep the lists short: the chunks' ranges must join up in order.
+  constexpr std::uint32_t kLights = 2 * lighting::kAssignLightChunk + 5000;
+  World world({"atrium", kLights, "clustered-forward", 1, {96, 54}, "pbr", "", {}, 0.4f});
+  world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
+  world.frame(0.0);
+  const lighting::ClusterGrid& grid = grid_of(world);
+  const auto gpu = grid.read_lists();
+  const auto cpu = grid.assign_on_cpu(world.registry().resource<LightBuffer>().staging,
+                                      world.registry().resource<ViewState>().view);
+  ASSERT_EQ(gpu.size(), cpu.size());
+  std::size_t from_last_chunk = 0;
+  for (std::size_t c = 0; c < gpu.size(); ++c) {
+    EXPECT_EQ(gpu[c], cpu[c]) << "cluster " << c;
+    EXPECT_TRUE(std::is_sorted(gpu[c].begin(), gpu[c].end())) << "cluster " << c << " lists its lights in order";
+    from_last_chunk += static_cast<std::size_t>(std::count_if(cpu[c].begin(), cpu[c].end(),
+                                                              [](std::uint32_t l) { return l >= 2 * lighting::kAssignLightChunk; }));
+  }
+  EXPECT_GT(from_last_chunk, 100u) << "the third chunk's lights reach clusters too";
 }
 
 TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {

@@ -1,3 +1,5 @@
+#include <gmock/gmock.h>
+
 #include "components/light.hpp"
 #include "components/transform.hpp"
 #include "ecs/scheduler.hpp"
@@ -85,6 +87,42 @@ TEST_F(LightBufferSystem, SpotAndDirectionalLightsCarryTheirKindDirectionAndCone
   EXPECT_NEAR(lights[0].spot.y, -std::cos(0.5f) * scale, 1e-3f);
   EXPECT_EQ(lights[1].color_kind.w, static_cast<float>(GpuLightKind::Directional));
   EXPECT_EQ(lights[1].position_radius.w, 0.0f);
+}
+
+TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  constexpr float kNan = std::numeric_limits<float>::quiet_NaN(), kInf = std::numeric_limits<float>::infinity();
+  add_light(registry, {0, 1, 0}, {1, 1, 1}, 1.0f);
+  const ecs::Entity nan_position = add_light(registry, {kNan, 0, 0}, {1, 1, 1}, 1.0f);
+  add_light(registry, {0, 0, 0}, {1, 1, 1}, kInf);
+  add_light(registry, {0, 0, 0}, {1, 1, 1}, -2.0f);
+  add_light(registry, {0, 0, 0}, {1, -1, 1}, 1.0f);
+  registry.add<LightRadius>(add_light(registry, {0, 0, 0}, {1, 1, 1}, 1.0f), 0.0f);
+  registry.add<LightRadius>(add_light(registry, {0, 0, 0}, {1, 1, 1}, 1.0f), kNan);
+  const ecs::Entity sun = add_light(registry, {kInf, 0, 0}, {1, 1, 1}, 1.0f);
+  registry.add<DirectionalLight>(sun);  // a direction has no position to break
+
+  const GatheredLights gathered = gather_lights(registry);
+  EXPECT_EQ(gathered.lights.size(), 2u);
+  ASSERT_EQ(gathered.rejected.size(), 6u);
+  EXPECT_EQ(gathered.rejected[0].entity, nan_position);
+  EXPECT_THAT(gathered.rejected[0].problem, ::testing::HasSubstr("position (nan, 0, 0) is not finite"));
+  EXPECT_THAT(gathered.rejected[1].problem, ::testing::HasSubstr("intensity inf"));
+  EXPECT_THAT(gathered.rejected[2].problem, ::testing::HasSubstr("intensity -2"));
+  EXPECT_THAT(gathered.rejected[3].problem, ::testing::HasSubstr("colour (1, -1, 1)"));
+  EXPECT_THAT(gathered.rejected[4].problem, ::testing::HasSubstr("radius 0"));
+  EXPECT_THAT(gathered.rejected[5].problem, ::testing::HasSubstr("radius nan"));
+
+  ::testing::internal::CaptureStderr();
+  scheduler.run_frame(registry, 0.0);
+  scheduler.run_frame(registry, 0.0);
+  const std::string warnings = ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(registry.resource<LightBuffer>().count, 2u);
+  EXPECT_EQ(registry.resource<LightBuffer>().rejected, 6u);
+  EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 6) << "one warning per light, not per frame:\n" << warnings;
+  EXPECT_THAT(warnings, ::testing::HasSubstr("warning: light entity " + std::to_string(nan_position.index) + " left out: position"));
 }
 
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {

@@ -2,11 +2,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kBoundsBinding = 4, kActiveBinding = 6;
+constexpr GLuint kBoundsBinding = 4, kActiveBinding = 6, kChunkCountsBinding = 7;
 }  // namespace
+
+ClusterAssignPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, bool active_only) {
+  auto step = [&](const char* name) -> gfx::ShaderProgram& {
+    std::vector<gfx::ShaderDefine> defines{{"LIGHT_CHUNK", std::to_string(kAssignLightChunk) + "u"}};
+    if (name[0] != '\0') defines.push_back({name});
+    if (active_only) defines.push_back({"ACTIVE_ONLY"});
+    return shaders.get({"clustered/assign.comp"}, defines);
+  };
+  return {step(""), step("STEP_RESERVE"), step("STEP_WRITE")};
+}
 
 ClusterGrid::ClusterGrid(glm::uvec3 dims)
     : dims_(glm::max(dims, glm::uvec3(1, 1, 2))),
@@ -73,14 +84,28 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
   return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
 }
 
-void ClusterGrid::assign(gfx::ShaderProgram& assign, GLuint active) {
+void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint active) {
+  const std::uint32_t chunks = std::max<std::uint32_t>((light_count + kAssignLightChunk - 1) / kAssignLightChunk, 1);
+  if (chunks > chunk_capacity_) {
+    chunk_capacity_ = chunks;
+    chunk_counts_ = gfx::create_buffer();
+    glNamedBufferStorage(chunk_counts_.id(), static_cast<GLsizeiptr>(std::uint64_t{chunks} * cluster_count() * sizeof(std::uint32_t)), nullptr, 0);
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkCountsBinding, chunk_counts_.id());
   if (active) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveBinding, active);
-  assign.use();
+  const GLuint groups = (cluster_count() + 63) / 64;
   list_.assign(
       [&] {
         bind();
-        glDispatchCompute((cluster_count() + 63) / 64, 1, 1);
+        programs.count.use();
+        glDispatchCompute(groups, chunks, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        programs.reserve.use();
+        glDispatchCompute(groups, 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+        programs.write.use();
+        glDispatchCompute(groups, chunks, 1);
       },
       [&](std::uint32_t) { upload_uniforms(); });
 }

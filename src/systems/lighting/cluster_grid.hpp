@@ -1,8 +1,9 @@
 // The cluster grid of the clustered techniques: the view frustum cut into
 // screen tiles and depth slices (a first slice from the near plane, then
 // logarithmic slices to the far plane), each cluster's view-space bounds
-// (rebuilt only when the projection changes), and the light assignment pass
-// that fills one global light index list (LightIndexList: no cap per cluster).
+// (rebuilt only when the projection changes), and the light assignment
+// (count, reserve, write over cluster and light-chunk pairs) that fills one
+// global light index list (LightIndexList: no cap per cluster).
 // GLSL twin: shaders/common/clusters.glsl.
 #pragma once
 
@@ -12,6 +13,7 @@
 #include <glm/glm.hpp>
 
 #include "gfx/gl_object.hpp"
+#include "gfx/shader_library.hpp"
 #include "gfx/shader_program.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/light_index_list.hpp"
@@ -34,15 +36,29 @@ struct ClusterBox {
 };
 static_assert(sizeof(ClusterBox) == 32, "must match ClusterBounds in shaders/clustered/assign.comp");
 
+// Lights one assignment invocation tests (LIGHT_CHUNK in shaders/clustered/assign.comp).
+inline constexpr std::uint32_t kAssignLightChunk = 16384;
+
+// The three steps of shaders/clustered/assign.comp.
+struct ClusterAssignPrograms {
+  gfx::ShaderProgram& count;
+  gfx::ShaderProgram& reserve;
+  gfx::ShaderProgram& write;
+};
+
 class ClusterGrid {
  public:
   explicit ClusterGrid(glm::uvec3 dims);
 
+  // The assignment programs; with `active_only`, clusters flagged inactive get no lights.
+  [[nodiscard]] static ClusterAssignPrograms assign_programs(gfx::ShaderLibrary& shaders, bool active_only);
+
   // Recomputes the slicing and the clusters' bounds if the projection changed.
   void update(const glm::mat4& projection, float near_plane, float far_plane);
-  // Runs `assign` (shaders/clustered/assign.comp) over `lights`; `active` is a
-  // buffer of per-cluster flags when only active clusters receive lights.
-  void assign(gfx::ShaderProgram& assign, GLuint active = 0);
+  // Assigns the first `light_count` lights of the bound light buffer; `active`
+  // is a buffer of per-cluster flags when only active clusters receive lights.
+  // Throws gfx::ResourceLimitError when the lists cannot fit.
+  void assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint active = 0);
   // Binds the uniform block and the range and index buffers for shading.
   void bind() const;
 
@@ -68,6 +84,8 @@ class ClusterGrid {
   glm::mat4 projection_{0.0f};
   float near_ = 0.0f, far_ = 0.0f;
   gfx::Buffer uniform_buffer_, bounds_, active_;
+  gfx::Buffer chunk_counts_;  // per light chunk and cluster
+  std::uint32_t chunk_capacity_ = 0;
   LightIndexList list_;
   std::uint32_t rebuilds_ = 0;
 };

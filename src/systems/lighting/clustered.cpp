@@ -1,17 +1,11 @@
 #include "systems/lighting/clustered.hpp"
 
 namespace atrium::lighting {
-namespace {
-std::vector<gfx::ShaderDefine> active_define(bool active) {
-  return active ? std::vector<gfx::ShaderDefine>{{"ACTIVE_ONLY"}} : std::vector<gfx::ShaderDefine>{};
-}
-}  // namespace
-
 ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
       active_only_(options.active_clusters),
       grid_(options.cluster_grid),
-      assign_(gpu.shaders().get({"clustered/assign.comp"}, active_define(options.active_clusters))),
+      assign_(ClusterGrid::assign_programs(gpu.shaders(), options.active_clusters)),
       mark_active_(gpu.shaders().get({"clustered/mark_active.comp"})),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
       shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
@@ -49,7 +43,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
   {
     const auto pass = frame.timer.scope("light assignment");
     if (active_only_) mark_active_clusters(targets);
-    grid_.assign(assign_, active_only_ ? grid_.active_buffer() : 0);
+    grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), active_only_ ? grid_.active_buffer() : 0);
   }
   {
     const auto pass = frame.timer.scope(deferred_ ? "lighting" : "shading");

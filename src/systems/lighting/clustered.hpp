@@ -34,7 +34,7 @@ class ClusteredTechnique final : public LightingTechnique {
   bool deferred_;
   bool active_only_;
   ClusterGrid grid_;
-  gfx::ShaderProgram& assign_;
+  ClusterAssignPrograms assign_;
   gfx::ShaderProgram& mark_active_;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass
   gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading

@@ -1,14 +1,43 @@
 #include "systems/lighting/light_index_list.hpp"
 
 #include <algorithm>
+#include <string>
+
+#include "gfx/limits.hpp"
 
 namespace atrium::lighting {
 
+namespace {
+
+// The running total, a flag the pass sets when the total wrapped past 2^32,
+// and the longest list.
+struct ListTotal {
+  std::uint32_t entries = 0;
+  std::uint32_t wrapped = 0;
+  std::uint32_t longest = 0;  // lights in the fullest bin
+};
+static_assert(sizeof(ListTotal) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
+
+std::string with_commas(std::uint64_t n) {
+  const std::string digits = std::to_string(n);
+  std::string grouped;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) grouped += ',';
+    grouped += digits[i];
+  }
+  return grouped;
+}
+
+}  // namespace
+
 LightIndexList::LightIndexList(std::uint32_t bins)
-    : bins_(bins), ranges_(gfx::create_buffer()), total_(gfx::create_buffer()) {
+    : bins_(bins),
+      max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
+      ranges_(gfx::create_buffer()),
+      total_(gfx::create_buffer()) {
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(bins, 1) * 2 * sizeof(std::uint32_t)), nullptr, 0);
-  glNamedBufferStorage(total_.id(), sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  resize(4096);
+  glNamedBufferStorage(total_.id(), sizeof(ListTotal), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
@@ -20,17 +49,33 @@ void LightIndexList::resize(std::uint32_t capacity) {
 void LightIndexList::assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize) {
   overflow_capacity_ = 0;
   for (int attempt = 0; attempt < 2; ++attempt) {
-    const std::uint32_t zero = 0;
+    const ListTotal zero;
     glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
     bind();
     dispatch();
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    glGetNamedBufferSubData(total_.id(), 0, sizeof last_total_, &last_total_);
+    ListTotal total;
+    glGetNamedBufferSubData(total_.id(), 0, sizeof total, &total);
+    last_total_ = total.entries;
+    if (total.wrapped || total.entries > max_entries_) {
+      const std::string entries = total.wrapped ? "more than 4,294,967,295" : with_commas(total.entries);
+      const std::string bytes = total.wrapped ? "over 16 GiB" : gfx::format_bytes(std::uint64_t{total.entries} * sizeof(std::uint32_t));
+      throw gfx::ResourceLimitError("the light lists need " + entries + " entries (" + bytes + "), more than one storage buffer may hold here (" +
+                                    gfx::format_bytes(max_entries_ * sizeof(std::uint32_t)) +
+                                    ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights (--lights), smaller ones (--light-radius), "
+                                    "fewer clusters (--cluster-grid) or, for tiles, a smaller image (--size)");
+    }
+    const std::uint32_t loop_limit = gfx::shader_loop_limit();
+    if (loop_limit && total.longest > loop_limit) {
+      throw gfx::ResourceLimitError("one tile or cluster holds " + with_commas(total.longest) + " lights, and this driver ends a shader's loops after " +
+                                    with_commas(loop_limit) + " iterations (llvmpipe), so its pixels would leave lights out; use fewer "
+                                    "lights (--lights), smaller ones (--light-radius) or more bins (--cluster-grid, or a larger --size for tiles)");
+    }
     if (last_total_ <= capacity_) return;
     // Too small for this frame: grow with room to spare and assign again.
     ++overflow_frames_;
     overflow_capacity_ = capacity_;
-    resize(last_total_ + last_total_ / 4 + 64);
+    resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{last_total_} + last_total_ / 4 + 64, max_entries_)));
     on_resize(capacity_);
   }
 }

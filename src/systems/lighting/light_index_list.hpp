@@ -3,6 +3,8 @@
 // bin's lights, reserves its range with an atomic add on a total, and writes.
 // The array is sized from the previous frame's total; when a frame's total does
 // not fit, the array grows and the pass runs again (counted as an overflow).
+// A total beyond what one storage buffer may hold (or beyond 2^32 entries, which
+// the pass flags) raises gfx::ResourceLimitError naming the memory needed.
 #pragma once
 
 #include <functional>
@@ -19,7 +21,8 @@ class LightIndexList {
   explicit LightIndexList(std::uint32_t bins);
 
   // Runs `dispatch` (which must read the capacity through `capacity()` or the
-  // uniform set by `on_resize`) until the whole list fits.
+  // uniform set by `on_resize`) until the whole list fits. Throws
+  // gfx::ResourceLimitError when it cannot fit.
   void assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize);
   void bind() const;
 
@@ -36,6 +39,7 @@ class LightIndexList {
   void resize(std::uint32_t capacity);
 
   std::uint32_t bins_;
+  std::uint64_t max_entries_;  // what GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows
   gfx::Buffer ranges_, indices_, total_;
   std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, overflow_capacity_ = 0;
 };

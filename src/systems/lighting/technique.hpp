@@ -81,6 +81,7 @@ class LightingTechnique {
 struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
+  bool loops_over_every_light;   // each pixel's shader loops over all lights (see gfx::shader_loop_limit)
   // Makes the technique; it takes its shader programs from gpu.shaders().
   std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu, const TechniqueOptions& options);
 };

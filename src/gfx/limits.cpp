@@ -1,0 +1,52 @@
+#include "gfx/limits.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <string_view>
+
+#include "gfx/gl.hpp"
+
+namespace atrium::gfx {
+
+std::uint64_t storage_block_limit() {
+  GLint64 bytes = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
+  return static_cast<std::uint64_t>(std::max<GLint64>(bytes, 0));
+}
+
+int max_texture_size() {
+  GLint size = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &size);
+  return size;
+}
+
+glm::ivec2 max_render_size() {
+  GLint viewport[2] = {0, 0}, width = 0, height = 0, renderbuffer = 0;
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
+  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  const int texture = max_texture_size();
+  return {std::min({viewport[0], width, renderbuffer, texture}), std::min({viewport[1], height, renderbuffer, texture})};
+}
+
+bool is_software_renderer() {
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const std::string_view name = renderer ? renderer : "";
+  return name.find("llvmpipe") != std::string_view::npos || name.find("softpipe") != std::string_view::npos ||
+         name.find("lavapipe") != std::string_view::npos;
+}
+
+std::uint32_t shader_loop_limit() { return is_software_renderer() ? 65535u : 0u; }
+
+std::string format_bytes(std::uint64_t bytes) {
+  char text[32];
+  const double b = static_cast<double>(bytes);
+  if (bytes < 1024) std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
+  else if (b < 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", b / 1024.0);
+  else if (b < 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", b / (1024.0 * 1024.0));
+  else std::snprintf(text, sizeof text, "%.2f GiB", b / (1024.0 * 1024.0 * 1024.0));
+  return text;
+}
+
+}  // namespace atrium::gfx

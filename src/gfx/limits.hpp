@@ -1,0 +1,40 @@
+// What the current GL context allows, asked of the driver, and the error raised
+// when a frame would need more: the CLI exits 1 with its message, the window
+// undoes the change that caused it.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+
+#include <glm/glm.hpp>
+
+namespace atrium::gfx {
+
+class ResourceLimitError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// GL_MAX_SHADER_STORAGE_BLOCK_SIZE: the most bytes one storage buffer may expose
+// to a shader (16 MiB at least; 128 MiB on llvmpipe).
+[[nodiscard]] std::uint64_t storage_block_limit();
+// GL_MAX_TEXTURE_SIZE: the widest and tallest 2D texture.
+[[nodiscard]] int max_texture_size();
+// The largest render size: the smallest of the viewport, framebuffer,
+// renderbuffer and texture limits, per axis.
+[[nodiscard]] glm::ivec2 max_render_size();
+
+// Mesa's software rasterisers (llvmpipe, lavapipe, softpipe).
+[[nodiscard]] bool is_software_renderer();
+// The most loop iterations one shader invocation may run, all its loops
+// together, or 0 for no limit. llvmpipe silently leaves every loop once a
+// shader's SIMD vector has run 65,535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS;
+// tests/gfx/limits_test.cpp measures it): a pixel looping over more lights than
+// that would drop the rest, so such frames are refused instead.
+[[nodiscard]] std::uint32_t shader_loop_limit();
+
+// "12.0 KiB", "496.1 MiB", "1.50 GiB".
+[[nodiscard]] std::string format_bytes(std::uint64_t bytes);
+
+}  // namespace atrium::gfx
