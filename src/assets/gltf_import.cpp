@@ -84,6 +84,8 @@ class Importer {
     asset.name = path_.filename().string();
     asset.materials = read_materials();
     for (std::size_t m = 0; m < model_.meshes.size(); ++m) asset.meshes.push_back(read_mesh(m, asset.materials));
+    warn_skipped(non_finite_, "have NaN or infinite positions");
+    warn_skipped(zero_area_, "have zero area");
     result_.timings.parse_seconds = seconds_since(start);
     const auto decode_start = Clock::now();
     decode_images(asset.materials);
@@ -94,6 +96,17 @@ class Importer {
   }
 
  private:
+  // Triangles left out, counted over every primitive (see drop_unusable_triangles).
+  struct SkippedTriangles {
+    std::size_t triangles = 0, primitives = 0;
+    std::string first;  // "mesh 3 primitive 0"
+    void add(std::size_t count, const std::string& primitive) {
+      if (count == 0) return;
+      if (primitives++ == 0) first = primitive;
+      triangles += count;
+    }
+  };
+
   [[noreturn]] void fail(const std::string& problem) const { throw ImportError(name_ + ": " + problem); }
   void warn(const std::string& problem) { result_.warnings.push_back(name_ + ": " + problem); }
 
@@ -385,11 +398,8 @@ class Importer {
         for (std::size_t i = 0; i < count; ++i) out.indices[i] = static_cast<std::uint32_t>(i);
       }
       out.indices.resize(out.indices.size() / 3 * 3);
-      const std::size_t triangles = out.indices.size() / 3;
-      if (const std::size_t dropped = drop_unusable_triangles(out)) {
-        warn(what + ": " + std::to_string(dropped) + " of " + std::to_string(triangles) +
-             " triangles have NaN or infinite positions; they are skipped");
-      }
+      triangles_read_ += out.indices.size() / 3;
+      drop_unusable_triangles(out, what);
       if (prim.material >= 0 && static_cast<std::size_t>(prim.material) >= materials.size()) {
         fail(what + " refers to material " + std::to_string(prim.material) + ", which does not exist");
       }
@@ -412,24 +422,40 @@ class Importer {
   }
 
   // Removes triangles with a corner at a NaN or infinite position (or whose
-  // normal overflows): they would rasterise garbage and poison normals. Triangles
-  // of zero area stay: they cover no pixel, and real exports have them (the
-  // teapot's lid has 8), so dropping them would only change counts the files
-  // declare. Returns how many went.
-  static std::size_t drop_unusable_triangles(Primitive& p) {
+  // normal overflows), which would rasterise garbage and poison normals, and
+  // triangles of zero area (a repeated corner, or three corners on one line),
+  // which cover no pixel but would give generated normals and tangents a zero
+  // vector. Real exports have the latter (the teapot's lid has 8).
+  void drop_unusable_triangles(Primitive& p, const std::string& what) {
     auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
-    std::size_t kept = 0;
+    std::size_t kept = 0, non_finite = 0, zero_area = 0;
     for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
       const glm::vec3 a = p.vertices[p.indices[t]].position, b = p.vertices[p.indices[t + 1]].position,
                       c = p.vertices[p.indices[t + 2]].position;
       const glm::vec3 n = glm::cross(b - a, c - a);
-      if (!finite(a) || !finite(b) || !finite(c) || !finite(n)) continue;
+      if (!finite(a) || !finite(b) || !finite(c) || !finite(n)) {
+        ++non_finite;
+        continue;
+      }
+      if (n == glm::vec3(0.0f)) {
+        ++zero_area;
+        continue;
+      }
       for (int k = 0; k < 3; ++k) p.indices[kept * 3 + static_cast<std::size_t>(k)] = p.indices[t + static_cast<std::size_t>(k)];
       ++kept;
     }
-    const std::size_t dropped = p.indices.size() / 3 - kept;
     p.indices.resize(kept * 3);
-    return dropped;
+    non_finite_.add(non_finite, what);
+    zero_area_.add(zero_area, what);
+  }
+
+  // One warning per reason for the whole file, however many primitives it hits.
+  void warn_skipped(const SkippedTriangles& skipped, const char* reason) {
+    if (skipped.triangles == 0) return;
+    const std::string where = skipped.primitives > 1 ? skipped.first + " and " + std::to_string(skipped.primitives - 1) + " more primitives"
+                                                     : skipped.first;
+    warn(where + ": " + std::to_string(skipped.triangles) + " of " + std::to_string(triangles_read_) + " triangles " + reason +
+         "; they are skipped");
   }
 
   // Normalises given normals; where one is zero-length or not finite, uses the
@@ -762,6 +788,8 @@ class Importer {
   std::vector<std::vector<std::uint8_t>> decoded_;
   std::vector<PendingSlot> pending_slots_;
   std::optional<std::uint32_t> default_material_;
+  SkippedTriangles non_finite_, zero_area_;
+  std::size_t triangles_read_ = 0;
   GltfImport result_;
 };
 
