@@ -152,6 +152,8 @@ std::string help_text() {
          "                  model, N generated lights are added to the model's own\n"
          "  --light-radius R  every point and spot light reaches R metres (its intensity\n"
          "                  scaled to match); bench --constant-density shrinks R as lights grow\n"
+         "  --max-texture-size N  textures wider or taller than N pixels are downscaled\n"
+         "                  (default: what the GL context allows, GL_MAX_TEXTURE_SIZE)\n"
          "  --view K        stored view 1..5 (default 1)\n"
          "  --size WxH      image or window size in pixels (default 1280x720)\n"
          "  --out FILE.png  render: where to write the image\n"
@@ -237,6 +239,8 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
         throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
       }
       options.light_radius = radius;
+    } else if (arg == "--max-texture-size") {
+      options.max_texture_size = parse_number<int>("--max-texture-size", value(), 1, 65536);
     } else if (arg == "--view") {
       options.view = parse_number<int>("--view", value(), 1, 1000);
     } else if (arg == "--size") {
@@ -280,7 +284,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius};
+          options.light_radius, options.max_texture_size};
 }
 
 namespace {

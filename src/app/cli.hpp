@@ -40,6 +40,7 @@ struct CliOptions {
   lighting::TechniqueOptions technique_options;  // --cluster-grid, --active-clusters
   std::optional<std::uint32_t> lights;
   std::optional<float> light_radius;  // --light-radius: one radius for every point and spot light
+  int max_texture_size = 0;           // --max-texture-size; 0: the context's limit
   int view = 1;
   glm::ivec2 size{1280, 720};
   std::string out;                 // render: PNG path

@@ -127,7 +127,11 @@ World::World(assets::AssetManager assets, assets::SceneDescription scene, const 
 
 void World::start(const WorldOptions& options) {
   const auto upload_start = std::chrono::steady_clock::now();
-  registry_.set_resource<assets::GpuAssets>().upload(registry_.resource<assets::AssetManager>());
+  auto& gpu = registry_.set_resource<assets::GpuAssets>(options.max_texture_size);
+  for (std::string& warning : gpu.upload(registry_.resource<assets::AssetManager>())) {
+    std::fprintf(stderr, "warning: %s\n", warning.c_str());
+    report_.warnings.push_back(std::move(warning));
+  }
   upload_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - upload_start).count();
 
   registry_.set_resource<Viewport>(Viewport{options.size});

@@ -36,6 +36,9 @@ struct WorldOptions {
   // Every point and spot light gets this radius, and the intensity whose derived
   // radius it is (so brightness stays sane); absent: the scene's own.
   std::optional<float> light_radius;
+  // The widest and tallest texture uploaded (larger ones are downscaled); 0:
+  // what the context allows.
+  int max_texture_size = 0;
 };
 
 class World {

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstddef>
 
+#include "gfx/limits.hpp"
+
 namespace atrium::assets {
 namespace {
 
@@ -23,16 +25,29 @@ gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_
 
 }  // namespace
 
-void GpuAssets::upload(const AssetManager& assets) {
+std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
+  std::vector<std::string> warnings;
   if (!white_) {
     const Image white{1, 1, {255, 255, 255, 255}};
     std::size_t ignored = 0;
     white_ = upload_image(white, ColorSpace::Linear, ignored);
     make_sampler(SamplerDesc{});
   }
+  const int context_limit = gfx::max_texture_size();
+  const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
     const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
-    textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
+    if (data.image.width <= limit && data.image.height <= limit) {
+      textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
+      continue;
+    }
+    const Image smaller = downscale_to_fit(data.image, limit, data.color_space == ColorSpace::Srgb);
+    warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.image.width) + "x" +
+                       std::to_string(data.image.height) + ", more than " +
+                       (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
+                                              : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
+                       "; it is downscaled to " + std::to_string(smaller.width) + "x" + std::to_string(smaller.height));
+    textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
   }
   for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
     const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
@@ -84,6 +99,7 @@ void GpuAssets::upload(const AssetManager& assets) {
     }
     mesh_assets_.push_back(std::move(gpu));
   }
+  return warnings;
 }
 
 GLuint GpuAssets::sampler(const SamplerDesc& desc) const {

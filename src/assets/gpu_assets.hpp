@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <map>
+#include <string>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
@@ -29,9 +30,14 @@ struct GpuMeshAsset {
 
 class GpuAssets {
  public:
-  // Uploads everything the AssetManager holds that is not on the GPU yet.
-  // Needs a current GL 4.5 context.
-  void upload(const AssetManager& assets);
+  // `max_texture_size`: the widest and tallest texture to upload (0: as large as
+  // the context allows, GL_MAX_TEXTURE_SIZE); larger images are downscaled.
+  explicit GpuAssets(int max_texture_size = 0) : max_texture_size_(max_texture_size) {}
+
+  // Uploads everything the AssetManager holds that is not on the GPU yet and
+  // returns a warning for each texture it had to downscale. Needs a current GL
+  // 4.5 context.
+  std::vector<std::string> upload(const AssetManager& assets);
 
   [[nodiscard]] const GpuMeshAsset& mesh_asset(MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
   // The texture's GL name, or the white default for an empty handle.
@@ -46,6 +52,7 @@ class GpuAssets {
  private:
   void make_sampler(const SamplerDesc& desc);
 
+  int max_texture_size_;
   std::vector<GpuMeshAsset> mesh_assets_;
   std::vector<gfx::Texture> textures_;
   gfx::Texture white_;

@@ -3,7 +3,10 @@
 #include <cmath>
 #include <limits>
 
+#include <algorithm>
+
 #include <stb_image.h>
+#include <stb_image_resize.h>
 #include <stb_image_write.h>
 
 namespace atrium::assets {
@@ -29,6 +32,21 @@ Image read_png(const std::filesystem::path& path) {
   Image image{width, height, std::vector<std::uint8_t>(data, data + static_cast<std::size_t>(width) * height * 4)};
   stbi_image_free(data);
   return image;
+}
+
+Image downscale_to_fit(const Image& image, int max_size, bool srgb) {
+  if (image.width <= max_size && image.height <= max_size) return image;
+  const double scale = static_cast<double>(max_size) / std::max(image.width, image.height);
+  Image out;
+  out.width = std::clamp(static_cast<int>(std::lround(image.width * scale)), 1, max_size);
+  out.height = std::clamp(static_cast<int>(std::lround(image.height * scale)), 1, max_size);
+  out.rgba.resize(static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height) * 4);
+  constexpr int kAlpha = 3;
+  const int ok = srgb ? stbir_resize_uint8_srgb(image.rgba.data(), image.width, image.height, 0, out.rgba.data(), out.width,
+                                                out.height, 0, 4, kAlpha, 0)
+                      : stbir_resize_uint8(image.rgba.data(), image.width, image.height, 0, out.rgba.data(), out.width, out.height, 0, 4);
+  if (!ok) throw ImageError("cannot downscale a " + std::to_string(image.width) + "x" + std::to_string(image.height) + " image");
+  return out;
 }
 
 double psnr(const Image& a, const Image& b) {

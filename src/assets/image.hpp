@@ -28,6 +28,11 @@ class ImageError : public std::runtime_error {
 void write_png(const std::filesystem::path& path, const Image& image);
 [[nodiscard]] Image read_png(const std::filesystem::path& path);
 
+// `image` scaled down, keeping its aspect ratio, so that neither side exceeds
+// `max_size`; filtered in linear light when `srgb` says the colour channels are
+// sRGB-encoded (alpha is always linear). An image that fits comes back as is.
+[[nodiscard]] Image downscale_to_fit(const Image& image, int max_size, bool srgb);
+
 // Peak signal-to-noise ratio over the RGB channels in dB; +infinity for identical images.
 [[nodiscard]] double psnr(const Image& a, const Image& b);
 // Largest absolute difference of any RGB channel of any pixel (0..255).
