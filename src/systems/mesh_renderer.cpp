@@ -43,6 +43,13 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
 MeshRenderer::~MeshRenderer() = default;
 
 void MeshRenderer::resize(glm::ivec2 size) {
+  const glm::ivec2 limit = gfx::max_render_size();
+  if (size.x > limit.x || size.y > limit.y) {
+    throw gfx::ResourceLimitError(std::to_string(size.x) + "x" + std::to_string(size.y) + " is larger than this context can render (" +
+                                  std::to_string(limit.x) + "x" + std::to_string(limit.y) +
+                                  ": the smallest of GL_MAX_VIEWPORT_DIMS, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT, "
+                                  "GL_MAX_RENDERBUFFER_SIZE and GL_MAX_TEXTURE_SIZE); use a smaller --size");
+  }
   size_ = size;
   hdr_color_ = make_target(GL_RGBA16F, size);
   depth_stencil_ = make_target(GL_DEPTH24_STENCIL8, size);

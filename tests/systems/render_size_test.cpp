@@ -1,0 +1,84 @@
+// Extreme image sizes, headless: one pixel renders in every mode as forward
+// does, an 8192x8192 image renders the picture a small one does, and a size
+// beyond what the context can render is refused naming the limit.
+#include <gmock/gmock.h>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "gfx/limits.hpp"
+#include "support/gl_test.hpp"
+#include "support/modes.hpp"
+
+namespace atrium {
+namespace {
+
+using RenderSize = testing::GlTest;
+
+// Averages each `factor` x `factor` block of stored values.
+assets::Image shrink(const assets::Image& image, int factor) {
+  assets::Image out{image.width / factor, image.height / factor, {}};
+  out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        std::uint64_t sum = 0;
+        for (int v = 0; v < factor; ++v) {
+          for (int u = 0; u < factor; ++u) sum += image.pixel(x * factor + u, y * factor + v)[c];
+        }
+        out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] =
+            static_cast<std::uint8_t>((sum + factor * factor / 2) / (factor * factor));
+      }
+    }
+  }
+  return out;
+}
+
+TEST_F(RenderSize, OnePixelRendersInEveryModeAsForwardDoes) {
+  World world({"atrium", 24u, "forward", 1, {1, 1}});
+  for (int view = 1; view <= 5; ++view) {
+    world.set_view(view);
+    world.set_mode("forward");
+    world.frame(0.0);
+    const assets::Image reference = world.renderer().read_output();
+    for (const std::string& mode : testing::non_forward_modes()) {
+      world.set_mode(mode);
+      world.frame(0.0);
+      EXPECT_LE(assets::max_channel_difference(reference, world.renderer().read_output()), 2) << mode << " view " << view;
+    }
+  }
+}
+
+TEST_F(RenderSize, An8192SquareImageShowsWhatASmallOneShowsInForwardAndDeferred) {
+  const std::string scene = std::string(ATRIUM_BIG_TEXTURE_DIR) + "/small-texture.gltf";
+  World small({.scene = scene, .lights = 0u, .size = {2048, 2048}});
+  small.frame(0.0);
+  World big({.scene = scene, .lights = 0u, .size = {8192, 8192}});
+  big.frame(0.0);
+  const assets::Image image = big.renderer().read_output();
+  ASSERT_EQ(image.width, 8192);
+  ASSERT_EQ(image.height, 8192);
+  // Only the edges differ: a pixel of the smaller image is either in or out.
+  EXPECT_GE(assets::psnr(small.renderer().read_output(), shrink(image, 4)), 35.0);
+  big.set_mode("clustered-deferred");  // a G-buffer of 8192x8192 and the most bins
+  big.frame(0.0);
+  EXPECT_GE(assets::psnr(image, big.renderer().read_output()), 40.0) << "clustered-deferred against forward";
+}
+
+TEST_F(RenderSize, ASizeBeyondWhatTheContextRendersIsRefusedNamingTheLimit) {
+  World world({"atrium", 4u, "deferred", 1, {32, 18}});
+  const glm::ivec2 limit = gfx::max_render_size();
+  world.set_size({limit.x + 1, 8});
+  try {
+    world.frame(0.0);
+    FAIL() << "no refusal";
+  } catch (const gfx::ResourceLimitError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr(std::to_string(limit.x + 1) + "x8 is larger than this context can render (" +
+                                               std::to_string(limit.x) + "x" + std::to_string(limit.y)));
+  }
+  world.set_size({32, 18});
+  world.frame(0.0);
+  EXPECT_EQ(world.renderer().read_output().width, 32);
+}
+
+}  // namespace
+}  // namespace atrium
