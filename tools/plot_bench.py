@@ -24,6 +24,8 @@ def main() -> int:
     renderer, size = "", ""
     with open(source, newline="") as f:
         for row in csv.DictReader(f):
+            if row.get("refused"):  # the driver refused this mode at this light count: no time
+                continue
             times[row["mode"]][int(row["lights"])].append(float(row["median_ms"]))
             renderer, size = row["renderer"], f'{row["width"]}x{row["height"]}'
     if not times:

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -11,6 +12,7 @@
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "gfx/gl.hpp"
+#include "gfx/limits.hpp"
 #include "systems/lighting/light_falloff.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -35,14 +37,19 @@ std::optional<float> bench_radius(const BenchOptions& options, std::uint32_t lig
   return radius;
 }
 
-// Light evaluations per pixel that `mode` performs, from the heatmap counters.
+// Light evaluations per pixel that `mode` performs, from the heatmap counters;
+// NaN where the driver refuses the mode at this light count.
 double count_evaluations(World& world, const std::string& mode) {
   auto& settings = world.registry().resource<RendererSettings>();
   const std::string previous = world.mode();
   world.set_mode(mode);
   settings.debug_view = "heatmap";
-  world.frame(0.0);
-  const double count = world.renderer().stats().light_evaluations_per_pixel;
+  double count = std::numeric_limits<double>::quiet_NaN();
+  try {
+    world.frame(0.0);
+    count = world.renderer().stats().light_evaluations_per_pixel;
+  } catch (const gfx::ResourceLimitError&) {
+  }
   settings.debug_view.clear();
   world.set_mode(previous);
   return count;
@@ -51,13 +58,25 @@ double count_evaluations(World& world, const std::string& mode) {
 // Frame and pass times of `mode` from the world's current camera.
 BenchRow measure_mode(World& world, const std::string& mode, int frames, int warmup, double reaching) {
   world.set_mode(mode);
+  BenchRow row;
+  row.mode = mode;
+  row.lights = world.light_count();
+  row.view = world.view();
+  row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
+  row.reaching_per_pixel = reaching;
   std::vector<double> frame_ms;
   std::map<std::string, std::vector<double>> pass_ms;
   std::vector<std::string> pass_order;
   for (int f = 0; f < warmup + frames; ++f) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
-    world.frame(1.0 / 60.0);
+    try {
+      world.frame(1.0 / 60.0);
+    } catch (const gfx::ResourceLimitError& e) {
+      row.refused = e.what();
+      row.median_ms = row.p5_ms = row.p95_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+      return row;
+    }
     glFinish();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if (f < warmup) continue;
@@ -67,17 +86,11 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
       pass_ms[pass.name].push_back(pass.milliseconds);
     }
   }
-  BenchRow row;
-  row.mode = mode;
-  row.lights = world.light_count();
-  row.view = world.view();
-  row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
   row.median_ms = percentile(frame_ms, 0.5);
   row.p5_ms = percentile(frame_ms, 0.05);
   row.p95_ms = percentile(frame_ms, 0.95);
   for (const std::string& name : pass_order) row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5)});
   row.evaluated_per_pixel = count_evaluations(world, mode);
-  row.reaching_per_pixel = reaching;
   return row;
 }
 
@@ -138,12 +151,15 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
 
 namespace {
 
-// Median over views of each (lights, mode) frame time.
+// Median over views of each (lights, mode) frame time; NaN where every view was refused.
 std::map<std::pair<std::uint32_t, std::string>, double> median_over_views(const BenchResult& result) {
   std::map<std::pair<std::uint32_t, std::string>, std::vector<double>> times;
-  for (const BenchRow& row : result.rows) times[{row.lights, row.mode}].push_back(row.median_ms);
+  for (const BenchRow& row : result.rows) {
+    auto& values = times[{row.lights, row.mode}];
+    if (row.refused.empty()) values.push_back(row.median_ms);
+  }
   std::map<std::pair<std::uint32_t, std::string>, double> medians;
-  for (const auto& [key, values] : times) medians[key] = percentile(values, 0.5);
+  for (const auto& [key, values] : times) medians[key] = values.empty() ? std::numeric_limits<double>::quiet_NaN() : percentile(values, 0.5);
   return medians;
 }
 
@@ -155,7 +171,9 @@ std::vector<std::string> modes_in_order(const BenchResult& result) {
   return modes;
 }
 
+// NaN (a refused row, an uncountable value) prints as "-".
 std::string fixed(double value, int decimals) {
+  if (std::isnan(value)) return "-";
   std::ostringstream out;
   out.setf(std::ios::fixed);
   out.precision(decimals);
@@ -187,7 +205,10 @@ std::string bench_markdown(const BenchResult& result) {
   }
   for (const std::uint32_t lights : counts) {
     md << "| " << lights << " |";
-    for (const auto& mode : modes) md << " " << fixed(1000.0 / medians.at({lights, mode}), 1) << " fps |";
+    for (const auto& mode : modes) {
+      const double ms = medians.at({lights, mode});
+      md << " " << (std::isnan(ms) ? std::string("refused") : fixed(1000.0 / ms, 1) + " fps") << " |";
+    }
     md << "\n";
   }
   if (std::find(modes.begin(), modes.end(), "forward") != modes.end()) {
@@ -198,7 +219,10 @@ std::string bench_markdown(const BenchResult& result) {
     md << "\n";
     for (const std::uint32_t lights : counts) {
       md << "| " << lights << " |";
-      for (const auto& mode : modes) md << " " << fixed(medians.at({lights, "forward"}) / medians.at({lights, mode}), 2) << "x |";
+      for (const auto& mode : modes) {
+        const double ratio = medians.at({lights, "forward"}) / medians.at({lights, mode});
+        md << " " << (std::isnan(ratio) ? std::string("-") : fixed(ratio, 2) + "x") << " |";
+      }
       md << "\n";
     }
   }
@@ -208,6 +232,7 @@ std::string bench_markdown(const BenchResult& result) {
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
+    if (!row.refused.empty()) passes = "refused: " + row.refused;
     md << "| " << row.mode << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
@@ -219,7 +244,7 @@ std::string bench_markdown(const BenchResult& result) {
 std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
-         "reaching_per_pixel,efficiency,passes,timing_method,renderer\n";
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
@@ -227,7 +252,7 @@ std::string bench_csv(const BenchResult& result) {
         << result.options.size.y << "," << result.options.frames << "," << fixed(row.median_ms, 4) << "," << fixed(row.p5_ms, 4)
         << "," << fixed(row.p95_ms, 4) << "," << fixed(row.fps(), 3) << "," << fixed(row.evaluated_per_pixel, 4) << ","
         << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
-        << result.timing_method << "\",\"" << result.renderer << "\"\n";
+        << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"\n";
   }
   return csv.str();
 }

@@ -4,7 +4,9 @@
 // table, CSV and a plot.
 #pragma once
 
+#include <cmath>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,10 +40,17 @@ struct BenchRow {
   double median_ms = 0, p5_ms = 0, p95_ms = 0;
   std::vector<gfx::PassTime> pass_medians;
   double evaluated_per_pixel = 0;  // light evaluations the mode performed
-  double reaching_per_pixel = 0;   // lights whose radius covers the pixel
-  [[nodiscard]] double fps() const { return median_ms > 0 ? 1000.0 / median_ms : 0.0; }
+  double reaching_per_pixel = 0;   // lights whose radius covers the pixel; NaN where not countable
+  // Why the driver refused this mode at this light count (gfx::ResourceLimitError),
+  // or empty; a refused row has no times.
+  std::string refused;
+  [[nodiscard]] double fps() const { return median_ms > 0 ? 1000.0 / median_ms : std::numeric_limits<double>::quiet_NaN(); }
   // 1.0: the mode evaluates only lights that reach; lower: wasted evaluations.
-  [[nodiscard]] double efficiency() const { return evaluated_per_pixel > 0 ? reaching_per_pixel / evaluated_per_pixel : 1.0; }
+  // NaN where either count is unknown (a refused mode).
+  [[nodiscard]] double efficiency() const {
+    if (std::isnan(evaluated_per_pixel) || std::isnan(reaching_per_pixel)) return std::numeric_limits<double>::quiet_NaN();
+    return evaluated_per_pixel > 0 ? reaching_per_pixel / evaluated_per_pixel : 1.0;
+  }
 };
 
 struct BenchResult {

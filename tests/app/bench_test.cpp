@@ -49,9 +49,10 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 17u);
+  ASSERT_EQ(header.size(), 18u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
+  EXPECT_EQ(header[17], "refused");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -61,6 +62,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_LE(std::stod(f[8]), std::stod(f[7])) << "p5 <= median";
     EXPECT_GE(std::stod(f[9]), std::stod(f[7])) << "p95 >= median";
     EXPECT_NE(f[14].find("tonemap="), std::string::npos) << "per-pass medians";
+    EXPECT_EQ(f[17], "") << "nothing refused";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
