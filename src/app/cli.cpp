@@ -165,7 +165,8 @@ std::string help_text() {
          "Modes:\n" + modes +
          "\n"
          "Window keys:\n" + key_help() +
-         "\nExit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.\n";
+         "\nExit codes: 0 success, 1 runtime failure (no GL context, shader error, a frame the\n"
+         "driver cannot hold: the message names the limit), 2 bad usage or bad input.\n";
 }
 
 CliOptions parse_cli(std::span<const std::string_view> args) {
