@@ -29,7 +29,7 @@ double percentile(std::vector<double> values, double p) {
 }
 
 // --light-radius and --constant-density: every light gets the same radius
-// (World::set_light_radius); with constant density it shrinks as lights grow.
+// (WorldOptions::light_radius); with constant density it shrinks as lights grow.
 std::optional<float> bench_radius(const BenchOptions& options, std::uint32_t lights) {
   if (!options.light_radius && !options.constant_density) return std::nullopt;
   float radius = options.light_radius.value_or(4.0f);

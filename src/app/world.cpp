@@ -77,8 +77,7 @@ void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene
     registry.add<Transform>(e, transform);
     const bool directional = light.kind == assets::LightKind::Directional;
     if (radius && !directional) {
-      const float brightest = std::max({light.color.r, light.color.g, light.color.b, 1e-6f});
-      registry.add<LightColor>(e, light.color, *radius * *radius * lighting::kRadiusThreshold / brightest);
+      registry.add<LightColor>(e, light.color, lighting::intensity_for_radius(light.color, *radius));
       registry.add<LightRadius>(e, *radius);
     } else {
       registry.add<LightColor>(e, light.color, light.intensity);

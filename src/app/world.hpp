@@ -64,7 +64,6 @@ class World {
   // Respawns the lights with one radius for all (WorldOptions::light_radius) or
   // their own (nullopt).
   void set_light_radius(std::optional<float> radius);
-  [[nodiscard]] std::optional<float> light_radius() const { return light_radius_; }
   // Recompiles every shader; a failing program keeps its old version and its
   // error comes back (one string per failing program).
   std::vector<std::string> reload_shaders();

@@ -63,5 +63,14 @@ TEST(LightFalloffCpp, DerivedRadiusIsWhereTheBrightestChannelFallsToTheThreshold
   EXPECT_EQ(light_radius_from_intensity(glm::vec3(1.0f), 0.0f), 0.0f);
 }
 
+TEST(LightFalloffCpp, IntensityForRadiusIsTheInverseOfTheDerivedRadius) {
+  for (const glm::vec3 color : {glm::vec3(0.2f, 1.0f, 0.5f), glm::vec3(3.0f, 0.1f, 0.1f), glm::vec3(0.01f)}) {
+    for (const float radius : {0.1f, 1.0f, 4.0f, 40.0f}) {
+      EXPECT_NEAR(light_radius_from_intensity(color, intensity_for_radius(color, radius)), radius, radius * 1e-5f);
+    }
+  }
+  EXPECT_TRUE(std::isfinite(intensity_for_radius(glm::vec3(0.0f), 2.0f)));
+}
+
 }  // namespace
 }  // namespace atrium::lighting

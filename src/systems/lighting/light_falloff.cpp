@@ -19,4 +19,9 @@ float light_radius_from_intensity(const glm::vec3& color, float intensity) {
   return brightest > 0.0f ? std::sqrt(brightest / kRadiusThreshold) : 0.0f;
 }
 
+float intensity_for_radius(const glm::vec3& color, float radius) {
+  const float brightest = std::max({color.r, color.g, color.b, 1e-6f});
+  return radius * radius * kRadiusThreshold / brightest;
+}
+
 }  // namespace atrium::lighting

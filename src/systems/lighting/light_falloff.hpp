@@ -21,5 +21,8 @@ inline constexpr float kMinLightDistance = 0.01f;
 // The distance at which color * intensity / d^2 falls to kRadiusThreshold in
 // the brightest channel. 0 for a black light.
 [[nodiscard]] float light_radius_from_intensity(const glm::vec3& color, float intensity);
+// Its inverse: the intensity whose derived radius is `radius` (a black light is
+// treated as a faint white one, so the result stays finite).
+[[nodiscard]] float intensity_for_radius(const glm::vec3& color, float radius);
 
 }  // namespace atrium::lighting
