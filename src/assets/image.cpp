@@ -1,9 +1,8 @@
 #include "assets/image.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
-
-#include <algorithm>
 
 #include <stb_image.h>
 #include <stb_image_resize.h>

@@ -19,7 +19,11 @@ std::string describe(float value) {
   return text;
 }
 
-std::string describe(const glm::vec3& v) { return "(" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) + ")"; }
+std::string describe(const glm::vec3& v) {
+  char text[96];
+  std::snprintf(text, sizeof text, "(%g, %g, %g)", v.x, v.y, v.z);
+  return text;
+}
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
@@ -80,11 +84,12 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     }
     state->count = static_cast<std::uint32_t>(state->staging.size());
     const std::size_t needed = std::max<std::size_t>(state->staging.size(), 1);
-    const std::size_t limit = gfx::storage_block_limit() / sizeof(GpuLight);
+    const std::uint64_t block = gfx::storage_block_limit();
+    const std::size_t limit = block / sizeof(GpuLight);
     if (needed > limit) {
       throw gfx::ResourceLimitError(std::to_string(state->staging.size()) + " lights need a " +
                                     gfx::format_bytes(needed * sizeof(GpuLight)) + " light buffer, more than one storage buffer may hold here (" +
-                                    gfx::format_bytes(gfx::storage_block_limit()) + ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights");
+                                    gfx::format_bytes(block) + ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights");
     }
     if (!state->buffer || needed > state->capacity) {
       state->capacity = std::min(std::max(needed, state->capacity * 2), limit);

@@ -36,7 +36,8 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
-      tonemap_(gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})) {
+      tonemap_(gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
+      loop_limit_(gfx::shader_loop_limit()) {
   glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -96,15 +97,14 @@ void MeshRenderer::recreate_technique() {
 }
 
 void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const {
-  const std::uint32_t limit = gfx::shader_loop_limit();
-  if (!limit || light_count <= limit) return;
+  if (!loop_limit_ || light_count <= loop_limit_) return;
   const std::string why = lighting::find_technique(mode_)->loops_over_every_light ? "each pixel loops over every light"
                           : !draws.blended.empty() ? "the scene's blended surfaces are shaded forward over every light"
                                                    : "";
   if (why.empty()) return;
   throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(light_count) + " lights: " + why +
-                                ", and this driver ends a shader's loops after " + std::to_string(limit) +
-                                " iterations (llvmpipe), so pixels would leave lights out; use at most " + std::to_string(limit) +
+                                ", and this driver ends a shader's loops after " + std::to_string(loop_limit_) +
+                                " iterations (llvmpipe), so pixels would leave lights out; use at most " + std::to_string(loop_limit_) +
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ""));
 }
 

@@ -91,6 +91,7 @@ class MeshRenderer {
   gfx::ShaderProgram& tonemap_;
   FrameStats stats_;
   gfx::PassTimer timer_;
+  std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
 };
 
 // Adds the MeshRenderer to the Render phase. The world must hold the resources

@@ -33,6 +33,7 @@ std::string with_commas(std::uint64_t n) {
 LightIndexList::LightIndexList(std::uint32_t bins)
     : bins_(bins),
       max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
+      loop_limit_(gfx::shader_loop_limit()),
       ranges_(gfx::create_buffer()),
       total_(gfx::create_buffer()) {
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(bins, 1) * 2 * sizeof(std::uint32_t)), nullptr, 0);
@@ -65,10 +66,9 @@ void LightIndexList::assign(const std::function<void()>& dispatch, const std::fu
                                     ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights (--lights), smaller ones (--light-radius), "
                                     "fewer clusters (--cluster-grid) or, for tiles, a smaller image (--size)");
     }
-    const std::uint32_t loop_limit = gfx::shader_loop_limit();
-    if (loop_limit && total.longest > loop_limit) {
+    if (loop_limit_ && total.longest > loop_limit_) {
       throw gfx::ResourceLimitError("one tile or cluster holds " + with_commas(total.longest) + " lights, and this driver ends a shader's loops after " +
-                                    with_commas(loop_limit) + " iterations (llvmpipe), so its pixels would leave lights out; use fewer "
+                                    with_commas(loop_limit_) + " iterations (llvmpipe), so its pixels would leave lights out; use fewer "
                                     "lights (--lights), smaller ones (--light-radius) or more bins (--cluster-grid, or a larger --size for tiles)");
     }
     if (last_total_ <= capacity_) return;

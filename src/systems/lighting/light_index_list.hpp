@@ -40,6 +40,7 @@ class LightIndexList {
 
   std::uint32_t bins_;
   std::uint64_t max_entries_;  // what GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows
+  std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest list shading may loop over
   gfx::Buffer ranges_, indices_, total_;
   std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, overflow_capacity_ = 0;
 };
