@@ -13,6 +13,6 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   float depth = texelFetch(u_depth, pixel, 0).r;
-  if (depth >= 1.0) return;
+  if (depth <= kDepthFar) return;
   u_active[cluster_index(vec2(pixel) + 0.5, u_viewport_size, view_depth_from_depth(depth))] = 1u;
 }

@@ -16,9 +16,13 @@ layout(std140, binding = 0) uniform FrameBlock {
   vec2 u_frame_padding;
 };
 
+// The depth convention (C++ twin: src/gfx/depth.hpp): reversed Z, the near
+// plane at depth 1, the far plane and the cleared background at 0.
+const float kDepthFar = 0.0;
+const float kDepthNear = 1.0;
+
 // View depth (metres in front of the camera) of a depth-buffer value, for the
 // perspective projection built from u_near and u_far.
 float view_depth_from_depth(float depth) {
-  float ndc = depth * 2.0 - 1.0;
-  return 2.0 * u_near * u_far / (u_far + u_near - ndc * (u_far - u_near));
+  return u_near * u_far / (u_near + depth * (u_far - u_near));
 }

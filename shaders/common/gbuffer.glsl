@@ -8,7 +8,7 @@
 //   2 normal             RGBA16       xyz world-space shading normal * 0.5 + 0.5 (16-bit
 //                                     unorm: 3e-5 steps; half floats' 1e-3 near 1 moved
 //                                     sharp GGX highlights visibly)
-//   3 metal-rough        RGBA8        r metallic, g roughness
+//   3 metal-rough        RGBA8        r metallic, g roughness, b 1 for unlit surfaces
 //   4 emissive           RGBA16F      rgb emitted radiance
 #else
 // Compact layout (--gbuffer compact, two targets, 24 B/px with depth):
@@ -18,7 +18,8 @@
 //                                     z emissive b (half, low 16 bits), metallic and
 //                                       roughness (8-bit unorm each, high 16 bits)
 //                                     w distance from the camera, 32-bit float; 0 = no
-//                                       geometry. Position = camera + view ray * distance.
+//                                       geometry; negative for unlit surfaces.
+//                                       Position = camera + view ray * |distance|.
 // The distance sits in the spare fourth word instead of being read from the depth
 // buffer: light-volumes writes stencil into that buffer while lighting, and
 // sampling a texture that is being written is a feedback loop. It also keeps 32
@@ -38,10 +39,12 @@ vec3 octahedral_decode(vec2 p) {
   return normalize(n);
 }
 
-// World-space direction from the camera through the centre of `pixel`.
+// World-space direction from the camera through the centre of `pixel`, through
+// the far plane's point: the near plane's lies too close to the camera for its
+// difference with the camera's position to keep float precision.
 vec3 view_ray(ivec2 pixel) {
   vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
-  vec4 far_point = u_inverse_view_projection * vec4(ndc, 1.0, 1.0);
+  vec4 far_point = u_inverse_view_projection * vec4(ndc, kDepthFar, 1.0);
   return normalize(far_point.xyz / far_point.w - u_camera_position.xyz);
 }
 #endif
@@ -58,7 +61,7 @@ void write_gbuffer(Surface s) {
   out_position = vec4(s.position, 1.0);
   out_albedo = vec4(s.albedo, s.occlusion);
   out_normal = vec4(s.normal * 0.5 + 0.5, 0.0);
-  out_metallic_roughness = vec4(s.metallic, s.roughness, 0.0, 0.0);
+  out_metallic_roughness = vec4(s.metallic, s.roughness, s.unlit ? 1.0 : 0.0, 0.0);
   out_emissive = vec4(s.emissive, 0.0);
 }
 #else
@@ -71,7 +74,8 @@ void write_gbuffer(Surface s) {
   out_words.y = packHalf2x16(s.emissive.rg);
   out_words.z = (packHalf2x16(vec2(s.emissive.b, 0.0)) & 0xffffu) |
                  (packUnorm4x8(vec4(0.0, 0.0, s.metallic, s.roughness)) & 0xffff0000u);
-  out_words.w = floatBitsToUint(max(length(s.position - u_camera_position.xyz), 1e-30));
+  float distance = max(length(s.position - u_camera_position.xyz), 1e-30);
+  out_words.w = floatBitsToUint(s.unlit ? -distance : distance);
 }
 #endif
 #else
@@ -95,6 +99,7 @@ bool read_gbuffer(ivec2 pixel, out Surface s) {
   s.occlusion = albedo.a;
   s.metallic = mr.r;
   s.roughness = mr.g;
+  s.unlit = mr.b > 0.5;
   s.emissive = texelFetch(u_gbuffer_emissive, pixel, 0).rgb;
   return true;
 }
@@ -107,7 +112,9 @@ bool read_gbuffer(ivec2 pixel, out Surface s) {
   if (words.w == 0u) return false;
   vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
   vec4 mr = unpackUnorm4x8(words.z);
-  s.position = u_camera_position.xyz + view_ray(pixel) * uintBitsToFloat(words.w);
+  float distance = uintBitsToFloat(words.w);
+  s.position = u_camera_position.xyz + view_ray(pixel) * abs(distance);
+  s.unlit = distance < 0.0;
   s.normal = octahedral_decode(unpackUnorm2x16(words.x) * 2.0 - 1.0);
   s.albedo = albedo.rgb;
   s.alpha = 1.0;

@@ -18,6 +18,7 @@ uniform float u_occlusion_strength;
 uniform float u_alpha_cutoff;       // < 0 when the material is not alpha-masked
 uniform int u_has_normal_texture;
 uniform int u_double_sided;
+uniform int u_unlit;                // KHR_materials_unlit
 // Per texture slot (base colour, metallic-roughness, normal, occlusion, emissive):
 // the UV set it reads and its KHR_texture_transform matrix.
 uniform mat3 u_uv_transform[5];
@@ -27,12 +28,13 @@ vec2 slot_uv(int slot, vec2 uv0, vec2 uv1) {
   return (u_uv_transform[slot] * vec3(u_uv_set[slot] == 1 ? uv1 : uv0, 1.0)).xy;
 }
 
-Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, bool front_facing) {
+Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec2 uv1, vec4 color, bool front_facing) {
   Surface s;
   s.position = position;
-  vec4 base = texture(u_base_color_texture, slot_uv(0, uv0, uv1)) * u_base_color_factor;
+  vec4 base = texture(u_base_color_texture, slot_uv(0, uv0, uv1)) * u_base_color_factor * color;
   s.albedo = base.rgb;
   s.alpha = base.a;
+  s.unlit = u_unlit != 0;
   vec3 n = normalize(normal);
   if (u_double_sided != 0 && !front_facing) n = -n;
   if (u_has_normal_texture != 0) {
@@ -48,5 +50,11 @@ Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec
   s.metallic = clamp(mr.b * u_metallic_factor, 0.0, 1.0);
   s.occlusion = mix(1.0, texture(u_occlusion_texture, slot_uv(3, uv0, uv1)).r, u_occlusion_strength);
   s.emissive = texture(u_emissive_texture, slot_uv(4, uv0, uv1)).rgb * u_emissive_factor;
+  if (s.unlit) {
+    // The base colour is the result: it travels as emission, with nothing to reflect.
+    s.emissive = s.albedo;
+    s.albedo = vec3(0.0);
+    s.metallic = 0.0;
+  }
   return s;
 }

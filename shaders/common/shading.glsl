@@ -43,6 +43,7 @@ vec3 shade_light(Surface s, vec3 v, Light light) {
 #ifdef COUNT_LIGHTS
   imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u);
 #endif
+  if (s.unlit) return vec3(0.0);
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);
   if (all(lessThanEqual(radiance, vec3(0.0)))) return vec3(0.0);

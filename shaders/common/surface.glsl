@@ -9,4 +9,5 @@ struct Surface {
   float roughness;
   float occlusion;
   vec3 emissive;
+  bool unlit;  // KHR_materials_unlit: lights add nothing; the colour is in emissive
 };

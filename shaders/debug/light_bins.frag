@@ -34,5 +34,5 @@ void main() {
   vec3 color = overflowed ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
 #endif
   // The background reads no list; it is drawn dimmed grey to set it apart.
-  out_color = vec4(depth < 1.0 ? color : vec3(0.15), 1.0);
+  out_color = vec4(depth > kDepthFar ? color : vec3(0.15), 1.0);
 }

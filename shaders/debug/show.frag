@@ -25,7 +25,7 @@ void main() {
 #if DEBUG_VIEW == 5
   // Linear view depth, near white, far black, on a log scale.
   float d = texelFetch(u_depth, pixel, 0).r;
-  color = vec3(d < 1.0 ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
+  color = vec3(d > kDepthFar ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
 #else
   if (covered) {
 #if DEBUG_VIEW == 0

@@ -18,11 +18,12 @@ in vec3 v_normal;
 in vec4 v_tangent;
 in vec2 v_uv0;
 in vec2 v_uv1;
+in vec4 v_color;
 
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, gl_FrontFacing);
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
   if (s.alpha < u_alpha_cutoff) discard;
   out_color = vec4(shade_all_lights(s), s.alpha);
 }

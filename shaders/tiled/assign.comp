@@ -24,7 +24,7 @@ shared vec4 s_planes[4];
 // The view-space direction of the ray through a pixel corner (at depth 1).
 vec3 corner_ray(vec2 pixel) {
   vec2 ndc = pixel / u_viewport_size * 2.0 - 1.0;
-  vec4 point = inverse(u_projection) * vec4(ndc, -1.0, 1.0);
+  vec4 point = inverse(u_projection) * vec4(ndc, kDepthNear, 1.0);
   vec3 on_near = point.xyz / point.w;
   return on_near / -on_near.z;
 }
@@ -60,7 +60,7 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (all(lessThan(pixel, ivec2(u_viewport_size)))) {
     float depth = texelFetch(u_depth, pixel, 0).r;
-    if (depth < 1.0) {
+    if (depth > kDepthFar) {
       float view_depth = view_depth_from_depth(depth);
       atomicMin(s_min_depth, floatBitsToUint(view_depth));
       atomicMax(s_max_depth, floatBitsToUint(view_depth));

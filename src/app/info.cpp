@@ -19,6 +19,7 @@ SceneInfo gather_info(World& world, const std::string& scene) {
   for (std::size_t a = 0; a < assets.mesh_asset_count(); ++a) {
     const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
     info.meshes += asset.meshes.size();
+    info.vertices += asset.vertex_count();
     for (const auto& mesh : asset.meshes) info.primitives += mesh.primitives.size();
     for (const auto& m : asset.materials) {
       (m.alpha_mode == assets::AlphaMode::Blend ? info.materials_blend
@@ -30,10 +31,7 @@ SceneInfo gather_info(World& world, const std::string& scene) {
     ++info.mesh_instances;
     const auto& asset = assets.mesh_asset(instance.asset);
     if (instance.mesh >= asset.meshes.size()) return;
-    for (const auto& p : asset.meshes[instance.mesh].primitives) {
-      info.triangles += p.indices.size() / 3;
-      info.vertices += p.vertices.size();
-    }
+    for (const auto& p : asset.meshes[instance.mesh].primitives) info.triangles += p.indices.size() / 3;
   });
   info.textures = assets.texture_count();
   for (std::size_t t = 0; t < assets.texture_count(); ++t) {
@@ -54,24 +52,31 @@ SceneInfo gather_info(World& world, const std::string& scene) {
 }
 
 std::string format_info_text(const SceneInfo& i) {
+  char bounds[256];
+  if (i.empty()) {
+    std::snprintf(bounds, sizeof bounds, "none: the scene is empty (nothing to draw)");
+  } else {
+    std::snprintf(bounds, sizeof bounds, "(%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i.bounds_min.x, i.bounds_min.y, i.bounds_min.z,
+                  i.bounds_max.x, i.bounds_max.y, i.bounds_max.z);
+  }
   char buffer[2048];
   std::snprintf(buffer, sizeof buffer,
                 "scene        %s\n"
                 "entities     %zu (%zu mesh instances, %zu lights, 1 camera)\n"
-                "mesh assets  %zu with %zu meshes and %zu primitives\n"
-                "drawn        %zu triangles, %zu vertices\n"
+                "mesh assets  %zu with %zu meshes, %zu primitives and %zu vertices\n"
+                "drawn        %zu triangles\n"
                 "materials    %zu: %zu opaque, %zu mask, %zu blend\n"
                 "textures     %zu (%.1f MiB decoded)\n"
                 "lights       %zu: %zu point, %zu spot, %zu directional\n"
-                "bounds       (%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)\n"
+                "bounds       %s\n"
                 "load time    parse %.3f s, decode %.3f s, upload %.3f s\n"
                 "warnings     %zu\n",
                 i.scene.c_str(), i.entities, i.mesh_instances, i.point_lights + i.spot_lights + i.directional_lights,
-                i.mesh_assets, i.meshes, i.primitives, i.triangles, i.vertices,
+                i.mesh_assets, i.meshes, i.primitives, i.vertices, i.triangles,
                 i.materials_opaque + i.materials_mask + i.materials_blend, i.materials_opaque, i.materials_mask,
                 i.materials_blend, i.textures, static_cast<double>(i.texture_bytes) / (1024.0 * 1024.0),
                 i.point_lights + i.spot_lights + i.directional_lights, i.point_lights, i.spot_lights, i.directional_lights,
-                i.bounds_min.x, i.bounds_min.y, i.bounds_min.z, i.bounds_max.x, i.bounds_max.y, i.bounds_max.z,
+                bounds,
                 i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings);
   return buffer;
 }
@@ -90,7 +95,10 @@ std::string format_info_json(const SceneInfo& i) {
       {"textures", i.textures},
       {"texture_bytes", i.texture_bytes},
       {"lights", {{"point", i.point_lights}, {"spot", i.spot_lights}, {"directional", i.directional_lights}}},
-      {"bounds", {{"min", {i.bounds_min.x, i.bounds_min.y, i.bounds_min.z}}, {"max", {i.bounds_max.x, i.bounds_max.y, i.bounds_max.z}}}},
+      {"empty", i.empty()},
+      {"bounds", i.empty() ? nlohmann::json(nullptr)
+                           : nlohmann::json{{"min", {i.bounds_min.x, i.bounds_min.y, i.bounds_min.z}},
+                                            {"max", {i.bounds_max.x, i.bounds_max.y, i.bounds_max.z}}}},
       {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
       {"warnings", i.warnings}};
   return j.dump(2) + "\n";

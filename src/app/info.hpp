@@ -13,13 +13,17 @@ struct SceneInfo {
   std::string scene;
   std::size_t entities = 0, mesh_instances = 0;
   std::size_t mesh_assets = 0, meshes = 0, primitives = 0;
-  std::size_t triangles = 0, vertices = 0;  // of the instances drawn
+  std::size_t triangles = 0;  // of the instances drawn
+  std::size_t vertices = 0;   // held by the mesh assets (shared ones once), as uploaded
   std::size_t materials_opaque = 0, materials_mask = 0, materials_blend = 0;
   std::size_t textures = 0, texture_bytes = 0;
   std::size_t point_lights = 0, spot_lights = 0, directional_lights = 0;
-  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};
+  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // meaningless when empty()
   double parse_seconds = 0, decode_seconds = 0, upload_seconds = 0;
   std::size_t warnings = 0;
+
+  // Nothing to draw: no instance, or instances without triangles.
+  [[nodiscard]] bool empty() const { return triangles == 0; }
 };
 
 [[nodiscard]] SceneInfo gather_info(World& world, const std::string& scene);

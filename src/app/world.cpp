@@ -18,6 +18,7 @@
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
+#include "systems/bounds.hpp"
 #include "systems/camera.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/light_falloff.hpp"
@@ -150,6 +151,7 @@ void World::start(const WorldOptions& options) {
   settings.technique_options = options.technique_options;
   set_view(options.view);
 
+  register_bounds(scheduler_);
   register_camera(scheduler_);
   register_light_buffer(scheduler_);
   register_mesh_renderer(scheduler_);

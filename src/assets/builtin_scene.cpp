@@ -79,38 +79,37 @@ std::vector<Material> make_materials(AssetManager& assets) {
   return materials;
 }
 
-Primitive with_material(Primitive p, std::uint32_t material) {
-  p.material = material;
-  return p;
+Primitive with_material(MeshAsset& asset, Geometry geometry, std::uint32_t material) {
+  return add_geometry(asset, std::move(geometry), material);
 }
 
 glm::mat4 translate(glm::vec3 t) { return glm::translate(glm::mat4(1.0f), t); }
 
-Mesh floor_mesh() {
-  Primitive floor = shapes::grid(glm::vec3(-kHalfLength, 0.0f, kHalfWidth), glm::vec3(2.0f * kHalfLength, 0, 0),
+Mesh floor_mesh(MeshAsset& a) {
+  Geometry floor = shapes::grid(glm::vec3(-kHalfLength, 0.0f, kHalfWidth), glm::vec3(2.0f * kHalfLength, 0, 0),
                                  glm::vec3(0, 0, -2.0f * kHalfWidth), 136, 112, 0.25f);
   // Upper gallery floors, paved like the court.
   for (float side : {-1.0f, 1.0f}) {
     const float z0 = side > 0 ? kHalfWidth : -kColonnadeZ + 0.3f;
-    Primitive gallery = shapes::grid(glm::vec3(-kHalfLength, kStorey + 0.02f, z0), glm::vec3(2.0f * kHalfLength, 0, 0),
+    Geometry gallery = shapes::grid(glm::vec3(-kHalfLength, kStorey + 0.02f, z0), glm::vec3(2.0f * kHalfLength, 0, 0),
                                      glm::vec3(0, 0, -(kHalfWidth - kColonnadeZ + 0.3f)), 68, 8, 0.25f);
     shapes::append(floor, gallery, glm::mat4(1.0f));
   }
-  return {"floor", {with_material(std::move(floor), kFloor)}};
+  return {"floor", {with_material(a, std::move(floor), kFloor)}};
 }
 
-Mesh walls_mesh() {
-  Primitive walls;
+Mesh walls_mesh(MeshAsset& a) {
+  Geometry walls;
   const float h = kWallHeight + kSlabThickness;
   // Inner faces of the four outer walls, facing the court.
   shapes::append(walls, shapes::grid(glm::vec3(-kHalfLength, 0, -kHalfWidth), glm::vec3(2 * kHalfLength, 0, 0), glm::vec3(0, h, 0), 34, 15, 0.5f), glm::mat4(1.0f));
   shapes::append(walls, shapes::grid(glm::vec3(kHalfLength, 0, kHalfWidth), glm::vec3(-2 * kHalfLength, 0, 0), glm::vec3(0, h, 0), 34, 15, 0.5f), glm::mat4(1.0f));
   shapes::append(walls, shapes::grid(glm::vec3(-kHalfLength, 0, kHalfWidth), glm::vec3(0, 0, -2 * kHalfWidth), glm::vec3(0, h, 0), 28, 15, 0.5f), glm::mat4(1.0f));
   shapes::append(walls, shapes::grid(glm::vec3(kHalfLength, 0, -kHalfWidth), glm::vec3(0, 0, 2 * kHalfWidth), glm::vec3(0, h, 0), 28, 15, 0.5f), glm::mat4(1.0f));
-  return {"walls", {with_material(std::move(walls), kBrick)}};
+  return {"walls", {with_material(a, std::move(walls), kBrick)}};
 }
 
-Mesh column_mesh() {
+Mesh column_mesh(MeshAsset& a) {
   std::vector<glm::vec2> profile{{0.0f, 0.0f}, {0.48f, 0.0f}, {0.48f, 0.14f}, {0.44f, 0.18f}, {0.42f, 0.24f}, {0.38f, 0.30f}, {0.34f, 0.34f}};
   // The shaft, with a slight entasis (it swells, then narrows towards the top).
   const int shaft_points = 14;
@@ -124,16 +123,16 @@ Mesh column_mesh() {
                             glm::vec2(0.52f, 5.06f), glm::vec2(0.52f, 5.20f), glm::vec2(0.0f, 5.20f)}) {
     profile.push_back(p);
   }
-  return {"column", {with_material(shapes::lathe(profile, 48, 0.5f), kMarble)}};
+  return {"column", {with_material(a, shapes::lathe(profile, 48, 0.5f), kMarble)}};
 }
 
-Mesh arch_mesh() {
-  Primitive panel = shapes::arch_panel(kColumnSpacing * 0.5f - 0.42f, kColumnSpacing * 0.5f, kArchHeight, 0.7f, 40, 0.5f);
-  return {"arch", {with_material(std::move(panel), kSandstone)}};
+Mesh arch_mesh(MeshAsset& a) {
+  Geometry panel = shapes::arch_panel(kColumnSpacing * 0.5f - 0.42f, kColumnSpacing * 0.5f, kArchHeight, 0.7f, 40, 0.5f);
+  return {"arch", {with_material(a, std::move(panel), kSandstone)}};
 }
 
-Mesh slab_mesh() {
-  Primitive slabs;
+Mesh slab_mesh(MeshAsset& a) {
+  Geometry slabs;
   for (int storey = 1; storey <= 2; ++storey) {
     const float y0 = storey * kStorey - kSlabThickness;
     for (float side : {-1.0f, 1.0f}) {
@@ -142,15 +141,15 @@ Mesh slab_mesh() {
                      glm::mat4(1.0f));
     }
   }
-  return {"slabs", {with_material(std::move(slabs), kSandstone)}};
+  return {"slabs", {with_material(a, std::move(slabs), kSandstone)}};
 }
 
-Mesh balustrade_mesh() {
+Mesh balustrade_mesh(MeshAsset& a) {
   // Balusters and a wooden rail between the upper columns, on both galleries.
   const std::vector<glm::vec2> baluster{{0.0f, 0.0f}, {0.09f, 0.0f}, {0.09f, 0.08f}, {0.06f, 0.12f}, {0.05f, 0.2f}, {0.08f, 0.32f},
                                         {0.1f, 0.42f}, {0.08f, 0.52f}, {0.05f, 0.62f}, {0.045f, 0.72f}, {0.07f, 0.78f}, {0.07f, 0.86f}, {0.0f, 0.86f}};
-  const Primitive one = shapes::lathe(baluster, 16, 2.0f);
-  Primitive balusters, rails;
+  const Geometry one = shapes::lathe(baluster, 16, 2.0f);
+  Geometry balusters, rails;
   for (float side : {-1.0f, 1.0f}) {
     const float z = side * kColonnadeZ;
     for (int bay = 0; bay + 1 < kColumnsPerSide; ++bay) {
@@ -161,56 +160,55 @@ Mesh balustrade_mesh() {
     }
     shapes::append(rails, shapes::box(glm::vec3(-15.0f, kStorey + 0.86f, z - 0.12f), glm::vec3(15.0f, kStorey + 0.96f, z + 0.12f), 1.0f), glm::mat4(1.0f));
   }
-  return {"balustrade", {with_material(std::move(balusters), kMarble), with_material(std::move(rails), kWood)}};
+  return {"balustrade", {with_material(a, std::move(balusters), kMarble), with_material(a, std::move(rails), kWood)}};
 }
 
-Mesh doors_mesh() {
-  Primitive doors;
+Mesh doors_mesh(MeshAsset& a) {
+  Geometry doors;
   for (float side : {-1.0f, 1.0f}) {
     const float x = side * kHalfLength;
     shapes::append(doors, shapes::box(glm::vec3(x - 0.08f, 0.0f, -1.6f), glm::vec3(x + 0.08f, 4.2f, 1.6f), 0.35f), glm::mat4(1.0f));
   }
-  return {"doors", {with_material(std::move(doors), kWood)}};
+  return {"doors", {with_material(a, std::move(doors), kWood)}};
 }
 
-Mesh banner_mesh(std::uint32_t material) {
-  Primitive cloth = shapes::grid(glm::vec3(-0.6f, 0.0f, 0.0f), glm::vec3(1.2f, 0, 0), glm::vec3(0, 3.6f, 0), 8, 32, 1.0f);
+Mesh banner_mesh(MeshAsset& a, std::uint32_t material) {
+  Geometry cloth = shapes::grid(glm::vec3(-0.6f, 0.0f, 0.0f), glm::vec3(1.2f, 0, 0), glm::vec3(0, 3.6f, 0), 8, 32, 1.0f);
   for (Vertex& v : cloth.vertices) {
     v.uv0 = v.uv1;  // one banner shows the whole pattern once
     v.position.z += 0.05f * std::sin(v.position.y * 2.2f + v.position.x * 3.0f);
   }
   generate_normals(cloth);
   generate_tangents(cloth);
-  compute_bounds(cloth);
-  return {kMaterials[material].name, {with_material(std::move(cloth), material)}};
+  return {kMaterials[material].name, {with_material(a, std::move(cloth), material)}};
 }
 
 constexpr float kPostLampHeight = 3.25f;
 constexpr float kHangingLampDrop = 1.35f;  // below the arch's crown
 
-Mesh lamp_post_mesh() {
+Mesh lamp_post_mesh(MeshAsset& a) {
   const std::vector<glm::vec2> post{{0.0f, 0.0f}, {0.22f, 0.0f}, {0.22f, 0.12f}, {0.1f, 0.25f}, {0.06f, 0.4f}, {0.05f, 2.8f},
                                     {0.09f, 2.95f}, {0.16f, 3.02f}, {0.0f, 3.02f}};
-  Primitive placed;
+  Geometry placed;
   shapes::append(placed, shapes::sphere(0.24f, 24, 16), translate(glm::vec3(0, kPostLampHeight, 0)));
-  return {"lamp_post", {with_material(shapes::lathe(post, 24, 1.0f), kBronze), with_material(std::move(placed), kLampGlass)}};
+  return {"lamp_post", {with_material(a, shapes::lathe(post, 24, 1.0f), kBronze), with_material(a, std::move(placed), kLampGlass)}};
 }
 
-Mesh hanging_lamp_mesh() {
+Mesh hanging_lamp_mesh(MeshAsset& a) {
   // Origin at the arch's crown; the rod hangs down to the glass.
-  Primitive rod = shapes::lathe({{0.0f, -kHangingLampDrop + 0.18f}, {0.02f, -kHangingLampDrop + 0.18f}, {0.02f, 0.0f}, {0.0f, 0.0f}}, 12, 1.0f);
-  Primitive cap = shapes::lathe({{0.0f, -kHangingLampDrop + 0.12f}, {0.15f, -kHangingLampDrop + 0.12f}, {0.05f, -kHangingLampDrop + 0.22f}, {0.0f, -kHangingLampDrop + 0.22f}}, 24, 1.0f);
+  Geometry rod = shapes::lathe({{0.0f, -kHangingLampDrop + 0.18f}, {0.02f, -kHangingLampDrop + 0.18f}, {0.02f, 0.0f}, {0.0f, 0.0f}}, 12, 1.0f);
+  Geometry cap = shapes::lathe({{0.0f, -kHangingLampDrop + 0.12f}, {0.15f, -kHangingLampDrop + 0.12f}, {0.05f, -kHangingLampDrop + 0.22f}, {0.0f, -kHangingLampDrop + 0.22f}}, 24, 1.0f);
   shapes::append(rod, cap, glm::mat4(1.0f));
-  Primitive glass;
+  Geometry glass;
   shapes::append(glass, shapes::sphere(0.18f, 24, 16), translate(glm::vec3(0, -kHangingLampDrop, 0)));
-  return {"hanging_lamp", {with_material(std::move(rod), kBronze), with_material(std::move(glass), kLampGlass)}};
+  return {"hanging_lamp", {with_material(a, std::move(rod), kBronze), with_material(a, std::move(glass), kLampGlass)}};
 }
 
-Mesh fountain_mesh() {
+Mesh fountain_mesh(MeshAsset& a) {
   const std::vector<glm::vec2> outer{{2.6f, 0.0f}, {2.6f, 0.55f}, {2.45f, 0.7f}, {2.2f, 0.7f}, {2.2f, 0.1f}, {0.45f, 0.1f},
                                      {0.3f, 0.3f}, {0.24f, 1.2f}, {0.35f, 1.35f}, {0.9f, 1.45f}, {1.05f, 1.6f}, {0.95f, 1.68f},
                                      {0.5f, 1.62f}, {0.2f, 1.7f}, {0.14f, 2.3f}, {0.25f, 2.45f}, {0.12f, 2.6f}, {0.0f, 2.65f}};
-  return {"fountain", {with_material(shapes::lathe(outer, 96, 0.5f), kMarble)}};
+  return {"fountain", {with_material(a, shapes::lathe(outer, 96, 0.5f), kMarble)}};
 }
 
 float column_x(int index) { return -15.0f + kColumnSpacing * static_cast<float>(index); }
@@ -260,9 +258,9 @@ SceneDescription build_builtin_scene(AssetManager& assets, std::optional<std::ui
   courtyard.materials = make_materials(assets);
   enum MeshSlot : std::uint32_t { kFloorMesh, kWalls, kColumn, kArch, kSlabs, kBalustrade, kDoors, kBannerR, kBannerB, kBannerG,
                                   kLampPost, kHangingLamp, kFountain };
-  courtyard.meshes = {floor_mesh(), walls_mesh(), column_mesh(), arch_mesh(), slab_mesh(), balustrade_mesh(), doors_mesh(),
-                      banner_mesh(kBannerRed), banner_mesh(kBannerBlue), banner_mesh(kBannerGreen), lamp_post_mesh(),
-                      hanging_lamp_mesh(), fountain_mesh()};
+  courtyard.meshes = {floor_mesh(courtyard), walls_mesh(courtyard), column_mesh(courtyard), arch_mesh(courtyard), slab_mesh(courtyard), balustrade_mesh(courtyard), doors_mesh(courtyard),
+                      banner_mesh(courtyard, kBannerRed), banner_mesh(courtyard, kBannerBlue), banner_mesh(courtyard, kBannerGreen), lamp_post_mesh(courtyard),
+                      hanging_lamp_mesh(courtyard), fountain_mesh(courtyard)};
   const MeshAssetHandle handle = assets.add_mesh_asset(std::move(courtyard), "builtin:atrium");
 
   SceneDescription scene;

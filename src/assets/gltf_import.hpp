@@ -1,26 +1,23 @@
-// glTF 2.0 import (.gltf and .glb) through tinygltf, CPU only: meshes,
-// materials, textures, the node hierarchy and KHR_lights_punctual lights become
-// a MeshAsset in the AssetManager plus instances and lights for a scene. Images
-// decode on worker threads. Broken files fail with an ImportError naming the
-// file and the problem; recoverable trouble (an undecodable image, an unknown
-// optional extension, a non-triangle primitive) becomes a warning.
+// glTF 2.0 import (.gltf and .glb), CPU only: the checked document
+// (gltf_document.hpp) becomes a MeshAsset in the AssetManager plus instances
+// and lights for a scene. Compressed geometry is decoded (gltf_compression.hpp),
+// primitives that share vertex accessors share one vertex buffer, and
+// EXT_mesh_gpu_instancing instances become instances. Images decode on worker
+// threads. Broken files fail with an ImportError naming the file and the
+// problem; recoverable trouble (an undecodable image, an optional extension
+// Atrium cannot use, a point or line primitive) becomes a warning.
 #pragma once
 
 #include <filesystem>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
+#include "assets/gltf_document.hpp"
 #include "assets/progress.hpp"
 #include "assets/scene.hpp"
 
 namespace atrium::assets {
-
-class ImportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 // glTF's photometric light units to Atrium's: point and spot intensities in
 // candela (lm/sr) and directional illuminance in lux divide by 683 lm/W, the
@@ -37,10 +34,14 @@ struct ImportTimings {
 
 struct GltfImport {
   MeshAssetHandle asset;
-  std::vector<SceneInstance> instances;  // one per node that has a mesh
+  // One per node that has a mesh, and one per EXT_mesh_gpu_instancing instance.
+  std::vector<SceneInstance> instances;
   std::vector<SceneLight> lights;        // KHR_lights_punctual, placed by their nodes
-  glm::vec3 bounds_min{0.0f};            // of all instances, world space
+  // Of every instance's triangles, world space; a zero box at the origin when
+  // the model has none (`empty`).
+  glm::vec3 bounds_min{0.0f};
   glm::vec3 bounds_max{0.0f};
+  bool empty = true;
   std::vector<std::string> warnings;     // each names the file
   ImportTimings timings;
   std::size_t images = 0;
@@ -50,12 +51,13 @@ struct GltfImport {
 struct ImportOptions {
   ProgressCallback progress;     // hears about image decoding as it happens
   unsigned decode_threads = 0;   // 0: one per core (at most 16)
+  // The largest single allocation a load may make (the file's sizes are
+  // checked against it first); 0: the memory the system has available.
+  std::size_t memory_limit = 0;
 };
 
 [[nodiscard]] GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets,
                                      const ImportOptions& options = {});
 
-// Extensions whose presence in extensionsRequired is accepted.
-[[nodiscard]] const std::vector<std::string>& supported_gltf_extensions();
 
 }  // namespace atrium::assets

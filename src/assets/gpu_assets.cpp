@@ -57,25 +57,43 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
         make_sampler(slot->sampler);
       }
     }
+    // Every vertex buffer once, primitives as index ranges with the base
+    // vertex of the buffer they index: shared vertices stay shared.
     GpuMeshAsset gpu;
-    std::vector<Vertex> vertices;
-    std::vector<std::uint32_t> indices;
+    std::vector<std::int32_t> base_vertex(asset.vertex_buffers.size());
+    std::size_t vertex_total = 0, index_total = 0;
+    for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
+      base_vertex[b] = static_cast<std::int32_t>(vertex_total);
+      vertex_total += asset.vertex_buffers[b].size();
+    }
     for (const Mesh& mesh : asset.meshes) {
-      auto& ranges = gpu.meshes.emplace_back();
-      for (const Primitive& p : mesh.primitives) {
-        ranges.push_back({static_cast<std::uint32_t>(indices.size()), static_cast<std::uint32_t>(p.indices.size()),
-                          static_cast<std::int32_t>(vertices.size())});
-        vertices.insert(vertices.end(), p.vertices.begin(), p.vertices.end());
-        indices.insert(indices.end(), p.indices.begin(), p.indices.end());
-      }
+      for (const Primitive& p : mesh.primitives) index_total += p.indices.size();
     }
     gpu.vertices = gfx::create_buffer();
     gpu.indices = gfx::create_buffer();
-    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertices.size()) * sizeof(Vertex)),
-                         vertices.empty() ? nullptr : vertices.data(), 0);
-    glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, indices.size()) * sizeof(std::uint32_t)),
-                         indices.empty() ? nullptr : indices.data(), 0);
-    buffer_bytes_ += vertices.size() * sizeof(Vertex) + indices.size() * sizeof(std::uint32_t);
+    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(Vertex)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
+      const auto& vertices = asset.vertex_buffers[b];
+      if (vertices.empty()) continue;
+      glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(Vertex)),
+                           static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
+    }
+    std::size_t first_index = 0;
+    for (const Mesh& mesh : asset.meshes) {
+      auto& ranges = gpu.meshes.emplace_back();
+      for (const Primitive& p : mesh.primitives) {
+        ranges.push_back({static_cast<std::uint32_t>(first_index), static_cast<std::uint32_t>(p.indices.size()), base_vertex.at(p.vertex_buffer)});
+        if (!p.indices.empty()) {
+          glNamedBufferSubData(gpu.indices.id(), static_cast<GLintptr>(first_index * sizeof(std::uint32_t)),
+                               static_cast<GLsizeiptr>(p.indices.size() * sizeof(std::uint32_t)), p.indices.data());
+        }
+        first_index += p.indices.size();
+      }
+    }
+    buffer_bytes_ += vertex_total * sizeof(Vertex) + index_total * sizeof(std::uint32_t);
 
     gpu.vertex_array = gfx::create_vertex_array();
     const GLuint vao = gpu.vertex_array.id();
@@ -84,22 +102,45 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
     struct Attribute {
       GLuint location;
       GLint components;
+      GLenum type;
+      GLboolean normalized;
       std::size_t offset;
     };
-    const Attribute attributes[] = {{0, 3, offsetof(Vertex, position)},
-                                    {1, 3, offsetof(Vertex, normal)},
-                                    {2, 4, offsetof(Vertex, tangent)},
-                                    {3, 2, offsetof(Vertex, uv0)},
-                                    {4, 2, offsetof(Vertex, uv1)}};
+    const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position)},
+                                    {1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal)},
+                                    {2, 4, GL_FLOAT, GL_FALSE, offsetof(Vertex, tangent)},
+                                    {3, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv0)},
+                                    {4, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv1)},
+                                    {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(Vertex, color)}};
     for (const auto& attribute : attributes) {
       glEnableVertexArrayAttrib(vao, attribute.location);
-      glVertexArrayAttribFormat(vao, attribute.location, attribute.components, GL_FLOAT, GL_FALSE,
+      glVertexArrayAttribFormat(vao, attribute.location, attribute.components, attribute.type, attribute.normalized,
                                 static_cast<GLuint>(attribute.offset));
       glVertexArrayAttribBinding(vao, attribute.location, 0);
     }
+    // Location 6: which instance record a vertex belongs to, from the
+    // instance-index buffer (binding 1, one value per instance). Instanced
+    // draws offset it by their base instance.
+    glEnableVertexArrayAttrib(vao, kInstanceIndexLocation);
+    glVertexArrayAttribIFormat(vao, kInstanceIndexLocation, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao, kInstanceIndexLocation, 1);
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    if (instance_indices_) glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
     mesh_assets_.push_back(std::move(gpu));
   }
   return warnings;
+}
+
+void GpuAssets::reserve_instances(std::size_t count) {
+  if (count <= instance_capacity_ && instance_indices_) return;
+  instance_capacity_ = std::max<std::size_t>({count, 2 * instance_capacity_, 1024});
+  std::vector<std::uint32_t> identity(instance_capacity_);
+  for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<std::uint32_t>(i);
+  instance_indices_ = gfx::create_buffer();
+  glNamedBufferStorage(instance_indices_.id(), static_cast<GLsizeiptr>(identity.size() * sizeof(std::uint32_t)), identity.data(), 0);
+  for (const GpuMeshAsset& asset : mesh_assets_) {
+    glVertexArrayVertexBuffer(asset.vertex_array.id(), 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
+  }
 }
 
 GLuint GpuAssets::sampler(const SamplerDesc& desc) const {

@@ -1,5 +1,6 @@
 // GPU copies of the AssetManager's contents: one vertex and one index buffer per
-// mesh asset (primitives are ranges in them), one mipmapped texture per image,
+// mesh asset (primitives are ranges in them; vertex buffers that primitives
+// share are uploaded once), one mipmapped texture per image,
 // neutral 1x1 defaults for the texture slots a material leaves empty, sampler
 // objects, and the shader programs (cached by files and defines).
 #pragma once
@@ -14,6 +15,9 @@
 #include "gfx/shader_library.hpp"
 
 namespace atrium::assets {
+
+// The vertex attribute that carries the instance index (see reserve_instances).
+inline constexpr GLuint kInstanceIndexLocation = 6;
 
 struct GpuPrimitive {
   std::uint32_t first_index = 0;  // in the asset's index buffer
@@ -40,6 +44,11 @@ class GpuAssets {
   std::vector<std::string> upload(const AssetManager& assets);
 
   [[nodiscard]] const GpuMeshAsset& mesh_asset(MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
+  // Every mesh asset's vertex array feeds attribute kInstanceIndexLocation from
+  // one buffer holding 0, 1, 2, ... with a divisor of 1, so an instanced draw
+  // with base instance B gives its instances B, B+1, ...: the index of their
+  // record in the frame's instance buffer. Grows that buffer to `count`.
+  void reserve_instances(std::size_t count);
   // The texture's GL name, or the white default for an empty handle.
   [[nodiscard]] GLuint texture(TextureHandle handle) const;
   // The sampler object for `desc` (made by upload for every material slot).
@@ -56,6 +65,8 @@ class GpuAssets {
   std::vector<GpuMeshAsset> mesh_assets_;
   std::vector<gfx::Texture> textures_;
   gfx::Texture white_;
+  gfx::Buffer instance_indices_;
+  std::size_t instance_capacity_ = 0;
   std::map<SamplerDesc, gfx::Sampler> samplers_;
   gfx::ShaderLibrary shaders_;
   std::size_t texture_bytes_ = 0;

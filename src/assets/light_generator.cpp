@@ -2,7 +2,6 @@
 #include <cmath>
 #include <random>
 
-
 #include "assets/scene.hpp"
 
 namespace atrium::assets {
@@ -56,7 +55,7 @@ void resize_lights(SceneDescription& scene, std::uint32_t count) {
     // distance)^2), so radii of three diagonals light everything clearly.
     const float diagonal = glm::length(scene.bounds_max - scene.bounds_min);
     const glm::vec3 margin(0.25f * diagonal);
-    const float radius = std::max(3.0f * diagonal, 0.1f);
+    const float radius = std::max(3.0f * diagonal, 1e-6f);
     generator.box_min = scene.bounds_min - margin;
     generator.box_max = scene.bounds_max + margin;
     generator.intensity_min = generator.intensity_max = radius * radius * 5.0f / 256.0f;

@@ -4,44 +4,76 @@
 
 namespace atrium::assets {
 
-void compute_bounds(Primitive& primitive) {
-  if (primitive.vertices.empty()) {
+std::size_t MeshAsset::vertex_count() const {
+  std::size_t count = 0;
+  for (const auto& buffer : vertex_buffers) count += buffer.size();
+  return count;
+}
+
+void Bounds::add(glm::vec3 point) {
+  min = empty ? point : glm::min(min, point);
+  max = empty ? point : glm::max(max, point);
+  empty = false;
+}
+
+void Bounds::add_box(const glm::mat4& transform, glm::vec3 lo, glm::vec3 hi) {
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::vec3 local((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
+    add(glm::vec3(transform * glm::vec4(local, 1.0f)));
+  }
+}
+
+Primitive add_geometry(MeshAsset& asset, Geometry geometry, std::uint32_t material) {
+  Primitive p;
+  p.vertex_buffer = static_cast<std::uint32_t>(asset.vertex_buffers.size());
+  p.indices = std::move(geometry.indices);
+  p.material = material;
+  compute_bounds(geometry.vertices, p);
+  asset.vertex_buffers.push_back(std::move(geometry.vertices));
+  return p;
+}
+
+void compute_bounds(std::span<const Vertex> vertices, Primitive& primitive) {
+  if (primitive.indices.empty()) {
     primitive.bounds_min = primitive.bounds_max = glm::vec3(0.0f);
     return;
   }
-  primitive.bounds_min = primitive.bounds_max = primitive.vertices.front().position;
-  for (const auto& v : primitive.vertices) {
-    primitive.bounds_min = glm::min(primitive.bounds_min, v.position);
-    primitive.bounds_max = glm::max(primitive.bounds_max, v.position);
+  primitive.bounds_min = primitive.bounds_max = vertices[primitive.indices.front()].position;
+  for (const std::uint32_t i : primitive.indices) {
+    primitive.bounds_min = glm::min(primitive.bounds_min, vertices[i].position);
+    primitive.bounds_max = glm::max(primitive.bounds_max, vertices[i].position);
   }
 }
 
-void generate_normals(Primitive& primitive) {
-  std::vector<glm::vec3> sums(primitive.vertices.size(), glm::vec3(0.0f));
-  for (std::size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
-    const auto a = primitive.indices[i], b = primitive.indices[i + 1], c = primitive.indices[i + 2];
-    const glm::vec3 p0 = primitive.vertices[a].position;
+void generate_normals(std::span<Vertex> vertices, std::span<const std::uint32_t> indices) {
+  std::vector<glm::vec3> sums(vertices.size(), glm::vec3(0.0f));
+  std::vector<bool> reached(vertices.size(), false);
+  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+    const auto a = indices[i], b = indices[i + 1], c = indices[i + 2];
+    const glm::vec3 p0 = vertices[a].position;
     // The cross product's length is twice the area: larger faces weigh more.
-    const glm::vec3 n = glm::cross(primitive.vertices[b].position - p0, primitive.vertices[c].position - p0);
-    sums[a] += n;
-    sums[b] += n;
-    sums[c] += n;
+    const glm::vec3 n = glm::cross(vertices[b].position - p0, vertices[c].position - p0);
+    for (auto k : {a, b, c}) {
+      sums[k] += n;
+      reached[k] = true;
+    }
   }
   for (std::size_t i = 0; i < sums.size(); ++i) {
+    if (!reached[i]) continue;
     const float length = glm::length(sums[i]);
-    primitive.vertices[i].normal = length > 0.0f ? sums[i] / length : glm::vec3(0.0f, 1.0f, 0.0f);
+    vertices[i].normal = length > 0.0f ? sums[i] / length : glm::vec3(0.0f, 1.0f, 0.0f);
   }
 }
 
-void generate_tangents(Primitive& primitive) {
-  const std::size_t n = primitive.vertices.size();
+void generate_tangents(std::span<Vertex> vertices, std::span<const std::uint32_t> indices) {
+  const std::size_t n = vertices.size();
   std::vector<glm::vec3> tangents(n, glm::vec3(0.0f));
   std::vector<glm::vec3> bitangents(n, glm::vec3(0.0f));
-  for (std::size_t i = 0; i + 2 < primitive.indices.size(); i += 3) {
-    const std::uint32_t idx[3] = {primitive.indices[i], primitive.indices[i + 1], primitive.indices[i + 2]};
-    const Vertex& v0 = primitive.vertices[idx[0]];
-    const Vertex& v1 = primitive.vertices[idx[1]];
-    const Vertex& v2 = primitive.vertices[idx[2]];
+  for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+    const std::uint32_t idx[3] = {indices[i], indices[i + 1], indices[i + 2]};
+    const Vertex& v0 = vertices[idx[0]];
+    const Vertex& v1 = vertices[idx[1]];
+    const Vertex& v2 = vertices[idx[2]];
     const glm::vec3 e1 = v1.position - v0.position, e2 = v2.position - v0.position;
     const glm::vec2 d1 = v1.uv0 - v0.uv0, d2 = v2.uv0 - v0.uv0;
     const float det = d1.x * d2.y - d2.x * d1.y;
@@ -55,15 +87,15 @@ void generate_tangents(Primitive& primitive) {
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
-    const glm::vec3 normal = primitive.vertices[i].normal;
+    const glm::vec3 normal = vertices[i].normal;
     glm::vec3 t = tangents[i] - normal * glm::dot(normal, tangents[i]);
-    if (glm::dot(t, t) < 1e-20f) {
+    if (!(glm::dot(t, t) >= 1e-20f)) {
       // No usable UVs: any vector perpendicular to the normal keeps shading defined.
       t = std::abs(normal.x) < 0.9f ? glm::cross(normal, glm::vec3(1, 0, 0)) : glm::cross(normal, glm::vec3(0, 1, 0));
     }
     t = glm::normalize(t);
     const float handedness = glm::dot(glm::cross(normal, t), bitangents[i]) < 0.0f ? -1.0f : 1.0f;
-    primitive.vertices[i].tangent = glm::vec4(t, handedness);
+    vertices[i].tangent = glm::vec4(t, handedness);
   }
 }
 

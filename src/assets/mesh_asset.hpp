@@ -1,9 +1,13 @@
-// CPU-side mesh data, shaped like glTF: a MeshAsset holds meshes, each mesh holds
-// primitives (one draw call each), each primitive names one material. glTF import
-// and the procedural built-in scene both produce exactly this.
+// CPU-side mesh data, shaped like glTF: a MeshAsset holds vertex buffers and
+// meshes, each mesh holds primitives (one draw each), each primitive indexes one
+// vertex buffer and names one material. Primitives that share vertices in the
+// file (one accessor set) share one vertex buffer here and on the GPU. glTF
+// import and the procedural built-in scene both produce exactly this.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -19,8 +23,11 @@ struct Vertex {
   glm::vec4 tangent{1.0f, 0.0f, 0.0f, 1.0f};  // xyz tangent, w handedness of the bitangent
   glm::vec2 uv0{0.0f};
   glm::vec2 uv1{0.0f};
+  // glTF's COLOR_0 (linear RGBA, 16-bit unorm), which multiplies the base colour.
+  std::array<std::uint16_t, 4> color{kWhite, kWhite, kWhite, kWhite};
+  static constexpr std::uint16_t kWhite = 65535;
 };
-static_assert(sizeof(Vertex) == 56, "the GPU vertex layout in gpu_assets.cpp assumes tightly packed 56-byte vertices");
+static_assert(sizeof(Vertex) == 64, "the GPU vertex layout in gpu_assets.cpp assumes tightly packed 64-byte vertices");
 
 enum class AlphaMode : std::uint8_t { Opaque, Mask, Blend };
 
@@ -60,6 +67,9 @@ struct Material {
   AlphaMode alpha_mode = AlphaMode::Opaque;
   float alpha_cutoff = 0.5f;
   bool double_sided = false;
+  // KHR_materials_unlit: the base colour is the pixel's colour; no light,
+  // ambient or emission changes it.
+  bool unlit = false;
   TextureSlot base_color_texture;
   TextureSlot metallic_roughness_texture;
   TextureSlot normal_texture;
@@ -68,10 +78,10 @@ struct Material {
 };
 
 struct Primitive {
-  std::vector<Vertex> vertices;
-  std::vector<std::uint32_t> indices;  // triangle list
+  std::uint32_t vertex_buffer = 0;     // index into MeshAsset::vertex_buffers
+  std::vector<std::uint32_t> indices;  // triangle list into that vertex buffer
   std::uint32_t material = 0;          // index into MeshAsset::materials
-  glm::vec3 bounds_min{0.0f};
+  glm::vec3 bounds_min{0.0f};          // of the vertices the indices reach
   glm::vec3 bounds_max{0.0f};
 };
 
@@ -82,18 +92,45 @@ struct Mesh {
 
 struct MeshAsset {
   std::string name;
+  std::vector<std::vector<Vertex>> vertex_buffers;
   std::vector<Mesh> meshes;
   std::vector<Material> materials;
+
+  [[nodiscard]] const std::vector<Vertex>& vertices(const Primitive& p) const { return vertex_buffers.at(p.vertex_buffer); }
+  [[nodiscard]] std::size_t vertex_count() const;
 };
 
-// Recomputes a primitive's bounding box from its vertices.
-void compute_bounds(Primitive& primitive);
-// Area-weighted smooth vertex normals.
-void generate_normals(Primitive& primitive);
+// An axis-aligned box that starts empty and grows to hold what is added.
+struct Bounds {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  bool empty = true;
+
+  void add(glm::vec3 point);
+  // The eight corners of the box [lo, hi] placed by `transform`.
+  void add_box(const glm::mat4& transform, glm::vec3 lo, glm::vec3 hi);
+};
+
+// Vertices and indices with no asset yet, as shape builders make them.
+struct Geometry {
+  std::vector<Vertex> vertices;
+  std::vector<std::uint32_t> indices;  // triangle list
+};
+
+// Moves `geometry` into `asset` as a vertex buffer of its own and returns the
+// primitive that draws it with `material`, its bounds computed.
+[[nodiscard]] Primitive add_geometry(MeshAsset& asset, Geometry geometry, std::uint32_t material);
+
+// Sets a primitive's bounding box to that of the vertices its indices reach.
+void compute_bounds(std::span<const Vertex> vertices, Primitive& primitive);
+// Area-weighted smooth normals for every vertex the triangles reach.
+void generate_normals(std::span<Vertex> vertices, std::span<const std::uint32_t> indices);
 // Per-vertex tangents from UV derivatives (accumulated per triangle, then
 // Gram-Schmidt orthogonalised against the normal, with the bitangent sign in w),
 // the per-vertex result MikkTSpace also produces for well-formed meshes.
-void generate_tangents(Primitive& primitive);
+void generate_tangents(std::span<Vertex> vertices, std::span<const std::uint32_t> indices);
+inline void generate_normals(Geometry& g) { generate_normals(g.vertices, g.indices); }
+inline void generate_tangents(Geometry& g) { generate_tangents(g.vertices, g.indices); }
 
 [[nodiscard]] std::size_t triangle_count(const Mesh& mesh);
 

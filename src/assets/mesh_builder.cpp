@@ -7,19 +7,16 @@
 namespace atrium::assets::shapes {
 namespace {
 
-void finish(Primitive& p) {
-  generate_tangents(p);
-  compute_bounds(p);
-}
+void finish(Geometry& g) { generate_tangents(g); }
 
-void add_quad(Primitive& p, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
+void add_quad(Geometry& p, std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d) {
   p.indices.insert(p.indices.end(), {a, b, c, a, c, d});
 }
 
 }  // namespace
 
-Primitive grid(glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edge_v, int nu, int nv, float uv_scale) {
-  Primitive p;
+Geometry grid(glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edge_v, int nu, int nv, float uv_scale) {
+  Geometry p;
   const glm::vec3 normal = glm::normalize(glm::cross(edge_u, edge_v));
   const float length_u = glm::length(edge_u), length_v = glm::length(edge_v);
   for (int j = 0; j <= nv; ++j) {
@@ -45,11 +42,11 @@ Primitive grid(glm::vec3 origin, glm::vec3 edge_u, glm::vec3 edge_v, int nu, int
   return p;
 }
 
-Primitive box(glm::vec3 lo, glm::vec3 hi, float uv_scale) {
+Geometry box(glm::vec3 lo, glm::vec3 hi, float uv_scale) {
   const glm::vec3 size = hi - lo;
-  Primitive p;
+  Geometry p;
   const glm::vec3 x(size.x, 0, 0), y(0, size.y, 0), z(0, 0, size.z);
-  const Primitive faces[] = {
+  const Geometry faces[] = {
       grid(glm::vec3(lo.x, lo.y, hi.z), x, y, 1, 1, uv_scale),   // +Z
       grid(glm::vec3(hi.x, lo.y, lo.z), -x, y, 1, 1, uv_scale),  // -Z
       grid(glm::vec3(hi.x, lo.y, hi.z), -z, y, 1, 1, uv_scale),  // +X
@@ -61,8 +58,8 @@ Primitive box(glm::vec3 lo, glm::vec3 hi, float uv_scale) {
   return p;
 }
 
-Primitive lathe(const std::vector<glm::vec2>& profile, int segments, float uv_scale) {
-  Primitive p;
+Geometry lathe(const std::vector<glm::vec2>& profile, int segments, float uv_scale) {
+  Geometry p;
   const std::size_t n = profile.size();
   // Outward normal of each profile segment in the (radius, height) plane.
   std::vector<glm::vec2> segment_normals;
@@ -109,8 +106,8 @@ Primitive lathe(const std::vector<glm::vec2>& profile, int segments, float uv_sc
   return p;
 }
 
-Primitive sphere(float radius, int segments, int rings) {
-  Primitive p;
+Geometry sphere(float radius, int segments, int rings) {
+  Geometry p;
   for (int r = 0; r <= rings; ++r) {
     const float phi = glm::pi<float>() * static_cast<float>(r) / static_cast<float>(rings);
     for (int s = 0; s <= segments; ++s) {
@@ -134,8 +131,8 @@ Primitive sphere(float radius, int segments, int rings) {
   return p;
 }
 
-Primitive arch_panel(float inner_radius, float half_width, float height, float depth, int segments, float uv_scale) {
-  Primitive p;
+Geometry arch_panel(float inner_radius, float half_width, float height, float depth, int segments, float uv_scale) {
+  Geometry p;
   const float half_depth = depth * 0.5f;
   // Front (+Z) and back (-Z) faces: quads between the opening's rim and the
   // panel's outline, both sampled along the same rays from the centre.
@@ -186,7 +183,7 @@ Primitive arch_panel(float inner_radius, float half_width, float height, float d
   return p;
 }
 
-void append(Primitive& target, const Primitive& source, const glm::mat4& transform) {
+void append(Geometry& target, const Geometry& source, const glm::mat4& transform) {
   const auto offset = static_cast<std::uint32_t>(target.vertices.size());
   const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(transform)));
   for (Vertex v : source.vertices) {
@@ -196,7 +193,6 @@ void append(Primitive& target, const Primitive& source, const glm::mat4& transfo
     target.vertices.push_back(v);
   }
   for (auto index : source.indices) target.indices.push_back(index + offset);
-  compute_bounds(target);
 }
 
 }  // namespace atrium::assets::shapes

@@ -201,16 +201,10 @@ void add_model(SceneDescription& scene, const GltfImport& model, const glm::mat4
     light.direction = glm::normalize(glm::vec3(placement * glm::vec4(light.direction, 0.0f)));
     scene.lights.push_back(light);
   }
-  if (!model.instances.empty()) {
-    glm::vec3 lo(1e30f), hi(-1e30f);
-    for (int corner = 0; corner < 8; ++corner) {
-      const glm::vec3 local((corner & 1) ? model.bounds_max.x : model.bounds_min.x, (corner & 2) ? model.bounds_max.y : model.bounds_min.y,
-                            (corner & 4) ? model.bounds_max.z : model.bounds_min.z);
-      const glm::vec3 w(placement * glm::vec4(local, 1.0f));
-      lo = glm::min(lo, w);
-      hi = glm::max(hi, w);
-    }
-    grow_bounds(scene, lo, hi, any_bounds);
+  if (!model.empty) {
+    Bounds placed;
+    placed.add_box(placement, model.bounds_min, model.bounds_max);
+    grow_bounds(scene, placed.min, placed.max, any_bounds);
   }
 }
 
@@ -221,23 +215,39 @@ void merge_report(LoadReport& report, const GltfImport& model) {
   report.images += model.images;
 }
 
-// Five views framing a box: front, side, high corner, top, and inside its centre.
+}  // namespace
+
+// Each outside view looks at the centre from a direction with a part along
+// every axis (azimuth from +Z towards +X, elevation above the horizon), so a
+// flat model in any axis plane is never seen edge-on; the bounding sphere
+// fills the 60-degree field of view.
 std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
   const glm::vec3 centre = 0.5f * (lo + hi);
-  const glm::vec3 size = glm::max(hi - lo, glm::vec3(1e-3f));
-  const float reach = std::max({size.x, size.y, size.z});
+  const glm::vec3 size = hi - lo;
+  const float reach = std::max({size.x, size.y, size.z, 1e-6f});
+  const float radius = std::max(0.5f * glm::length(size), 1e-6f);
+  const float distance = radius / std::sin(glm::radians(30.0f)) * 1.05f;
   auto look_at = [&](const char* name, glm::vec3 from) {
     const glm::vec3 d = glm::normalize(centre - from);
     return NamedView{name, from, glm::degrees(std::atan2(d.x, -d.z)), glm::degrees(std::asin(glm::clamp(d.y, -1.0f, 1.0f)))};
   };
-  return {look_at("front", centre + glm::vec3(0.0f, size.y * 0.15f, size.z * 0.5f + reach)),
-          look_at("side", centre + glm::vec3(size.x * 0.5f + reach, size.y * 0.15f, 0.0f)),
-          look_at("corner", centre + glm::vec3(reach, reach * 0.7f, reach)),
-          NamedView{"top", centre + glm::vec3(0.0f, size.y * 0.5f + reach, 0.001f), 0.0f, -89.0f},
-          NamedView{"inside", centre, 0.0f, 0.0f}};
+  auto around = [&](const char* name, float azimuth_degrees, float elevation_degrees) {
+    const float a = glm::radians(azimuth_degrees), e = glm::radians(elevation_degrees);
+    return look_at(name, centre + distance * glm::vec3(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)));
+  };
+  // Inside a flat model there is nothing around the centre: stand off its
+  // plane instead, looking back at it.
+  const int thinnest = size.x <= size.y && size.x <= size.z ? 0 : size.y <= size.z ? 1 : 2;
+  NamedView inside{"inside", centre, 0.0f, 0.0f};
+  if (size[thinnest] < 0.02f * reach) {
+    glm::vec3 offset(0.0f);
+    offset[thinnest] = 0.35f * reach;
+    offset[(thinnest + 1) % 3] = 0.2f * reach;
+    inside = look_at("inside", centre + offset);
+  }
+  return {around("front", 20.0f, 25.0f), around("side", 70.0f, 20.0f), around("corner", 225.0f, 35.0f), around("top", 30.0f, 70.0f),
+          inside};
 }
-
-}  // namespace
 
 SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report,
                                  const ProgressCallback& progress) {

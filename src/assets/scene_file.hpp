@@ -31,6 +31,10 @@ struct LoadReport {
 [[nodiscard]] SceneDescription load_scene_file(const std::filesystem::path& path, AssetManager& assets, LoadReport& report,
                                                const ProgressCallback& progress = {});
 
+// Five views of a box: four from outside, looking at its centre obliquely
+// (front, side, corner, top), and one inside it (off the plane of a flat box).
+[[nodiscard]] std::vector<NamedView> framing_views(glm::vec3 bounds_min, glm::vec3 bounds_max);
+
 // A glTF model as a scene: its instances and KHR_lights_punctual lights, five
 // views framing its bounds, and `extra_lights` generated lights inside them.
 [[nodiscard]] SceneDescription load_model_scene(const std::filesystem::path& path, AssetManager& assets,

@@ -3,12 +3,16 @@
 // which set the Transform's rotation from them.
 #pragma once
 
+#include <optional>
+
 namespace atrium {
 
 struct Camera {
   float vertical_fov_degrees = 60.0f;
-  float near_plane = 0.05f;
-  float far_plane = 200.0f;
+  // Metres. Absent, the camera system fits them each frame to the scene's
+  // bounds and the camera's place in them (fit_depth_planes).
+  std::optional<float> near_plane;
+  std::optional<float> far_plane;
 };
 
 struct CameraAngles {

@@ -1,8 +1,11 @@
 #include "systems/mesh_renderer.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 #include "components/frame_resources.hpp"
+#include "gfx/depth.hpp"
 #include "gfx/limits.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/debug_views.hpp"
@@ -53,7 +56,7 @@ void MeshRenderer::resize(glm::ivec2 size) {
   }
   size_ = size;
   hdr_color_ = make_target(GL_RGBA16F, size);
-  depth_stencil_ = make_target(GL_DEPTH24_STENCIL8, size);
+  depth_stencil_ = make_target(gfx::kDepthStencilFormat, size);
   hdr_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
@@ -108,10 +111,26 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ""));
 }
 
+void MeshRenderer::upload_instances(const lighting::DrawList& draws) {
+  gpu_.reserve_instances(draws.instances.size());
+  const std::size_t bytes = std::max<std::size_t>(1, draws.instances.size()) * sizeof(lighting::InstanceData);
+  if (bytes > instance_bytes_) {
+    instance_bytes_ = std::max(bytes, 2 * instance_bytes_);
+    instances_ = gfx::create_buffer();
+    glNamedBufferStorage(instances_.id(), static_cast<GLsizeiptr>(instance_bytes_), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (!draws.instances.empty()) {
+    glNamedBufferSubData(instances_.id(), 0, static_cast<GLsizeiptr>(draws.instances.size() * sizeof(lighting::InstanceData)),
+                         draws.instances.data());
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.id());
+}
+
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
   if (size != size_) resize(size);
+  gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
   const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
   if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
@@ -141,6 +160,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   timer_.begin_frame();
   const lighting::DrawList draws = lighting::build_draw_list(registry, assets, gpu, view.view);
   stats_ = {draws.opaque.size() + draws.blended.size(), draws.triangles, lights.count};
+  upload_instances(draws);
 
   lighting::FrameUniforms uniforms{};
   uniforms.view = view.view;
@@ -153,6 +173,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   uniforms.viewport_size = glm::vec2(size);
   uniforms.exposure = scene.exposure;
   uniforms.light_count = lights.count;
+  planes_ = {view.near_plane, view.far_plane};
   uniforms.near_plane = view.near_plane;
   uniforms.far_plane = view.far_plane;
   glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
@@ -226,7 +247,7 @@ assets::Image MeshRenderer::read_output() const {
   return image;
 }
 
-std::vector<float> MeshRenderer::read_depth() const {
+std::vector<float> MeshRenderer::read_view_depth() const {
   const std::size_t count = static_cast<std::size_t>(size_.x) * size_.y;
   std::vector<float> bottom_up(count);
   if (count == 0) return bottom_up;
@@ -235,8 +256,11 @@ std::vector<float> MeshRenderer::read_depth() const {
                     bottom_up.data());
   std::vector<float> top_down(count);
   for (int y = 0; y < size_.y; ++y) {
-    std::copy_n(bottom_up.begin() + static_cast<std::ptrdiff_t>(y) * size_.x, size_.x,
-                top_down.begin() + static_cast<std::ptrdiff_t>(size_.y - 1 - y) * size_.x);
+    for (int x = 0; x < size_.x; ++x) {
+      const float depth = bottom_up[static_cast<std::size_t>(y) * static_cast<std::size_t>(size_.x) + static_cast<std::size_t>(x)];
+      top_down[static_cast<std::size_t>(size_.y - 1 - y) * static_cast<std::size_t>(size_.x) + static_cast<std::size_t>(x)] =
+          depth <= gfx::kDepthFar ? std::numeric_limits<float>::infinity() : gfx::view_depth_from_depth(depth, planes_.x, planes_.y);
+    }
   }
   return top_down;
 }

@@ -43,8 +43,9 @@ class MeshRenderer {
 
   // The last frame's display image (sRGB, top row first).
   [[nodiscard]] assets::Image read_output() const;
-  // The last frame's window-space depth in [0, 1], top row first.
-  [[nodiscard]] std::vector<float> read_depth() const;
+  // The last frame's view depth (metres along the view axis) per pixel, top
+  // row first; infinity where no geometry was drawn.
+  [[nodiscard]] std::vector<float> read_view_depth() const;
 
   [[nodiscard]] const std::string& mode() const { return mode_; }
   // The technique that drew the last frame (tests and tools inspect it).
@@ -71,6 +72,9 @@ class MeshRenderer {
   // Throws gfx::ResourceLimitError when the driver limits shader loops and a
   // pixel of this frame would loop over more lights than that limit.
   void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
+  // Copies the frame's instance records to the GPU and binds them at
+  // lighting::kInstanceStorageBinding.
+  void upload_instances(const lighting::DrawList& draws);
 
   glm::ivec2 size_{0};
   std::string mode_;
@@ -86,12 +90,15 @@ class MeshRenderer {
   gfx::Texture output_color_;
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
+  gfx::Buffer instances_;
+  std::size_t instance_bytes_ = 0;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram& tonemap_;
   FrameStats stats_;
   gfx::PassTimer timer_;
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
+  glm::vec2 planes_{0.05f, 200.0f};  // the last frame's near and far planes
 };
 
 // Adds the MeshRenderer to the Render phase. The world must hold the resources

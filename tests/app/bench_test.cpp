@@ -90,7 +90,8 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   assets::Material material;
   material.metallic_factor = 0.0f;
   plane.materials.push_back(material);
-  plane.meshes.push_back({"plane", {assets::shapes::grid(glm::vec3(-50, 0, 50), glm::vec3(100, 0, 0), glm::vec3(0, 0, -100), 4, 4, 1.0f)}});
+  plane.meshes.push_back(
+      {"plane", {assets::add_geometry(plane, assets::shapes::grid(glm::vec3(-50, 0, 50), glm::vec3(100, 0, 0), glm::vec3(0, 0, -100), 4, 4, 1.0f), 0)}});
   assets::SceneDescription scene;
   scene.instances.push_back({manager.add_mesh_asset(std::move(plane)), 0, Transform{}});
   scene.lights.push_back({glm::vec3(0, 1, 0), glm::vec3(1.0f), 1.0f, 100.0f});

@@ -45,9 +45,10 @@ TEST_P(ValidFile, LoadsWithItsTrianglesAndMaterials) {
   std::size_t named = 0;
   for (const Material& m : materials) named += m.name != "default";
   EXPECT_EQ(named, e.materials);
-  for (const Mesh& mesh : assets.mesh_asset(imported.asset).meshes) {
+  const MeshAsset& asset = assets.mesh_asset(imported.asset);
+  for (const Mesh& mesh : asset.meshes) {
     for (const Primitive& p : mesh.primitives) {
-      for (const Vertex& v : p.vertices) {
+      for (const Vertex& v : asset.vertices(p)) {
         ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-3f) << e.file;
         ASSERT_NEAR(glm::length(glm::vec3(v.tangent)), 1.0f, 1e-3f) << e.file;
       }

@@ -7,7 +7,7 @@ namespace atrium::assets {
 namespace {
 
 TEST(MeshBuilder, GridFacesAlongTheCrossProductOfItsEdges) {
-  const Primitive p = shapes::grid(glm::vec3(0), glm::vec3(2, 0, 0), glm::vec3(0, 0, -3), 4, 6, 1.0f);
+  const Geometry p = shapes::grid(glm::vec3(0), glm::vec3(2, 0, 0), glm::vec3(0, 0, -3), 4, 6, 1.0f);
   EXPECT_EQ(p.vertices.size(), 5u * 7u);
   EXPECT_EQ(p.indices.size(), 4u * 6u * 6u);
   for (const Vertex& v : p.vertices) EXPECT_NEAR(v.normal.y, 1.0f, 1e-6f);
@@ -15,12 +15,29 @@ TEST(MeshBuilder, GridFacesAlongTheCrossProductOfItsEdges) {
   const glm::vec3 a = p.vertices[p.indices[0]].position, b = p.vertices[p.indices[1]].position,
                   c = p.vertices[p.indices[2]].position;
   EXPECT_GT(glm::cross(b - a, c - a).y, 0.0f);
-  EXPECT_EQ(p.bounds_min, glm::vec3(0, 0, -3));
-  EXPECT_EQ(p.bounds_max, glm::vec3(2, 0, 0));
+  MeshAsset asset;
+  const Primitive added = add_geometry(asset, p, 0);
+  EXPECT_EQ(added.bounds_min, glm::vec3(0, 0, -3));
+  EXPECT_EQ(added.bounds_max, glm::vec3(2, 0, 0));
+}
+
+TEST(MeshAsset, PrimitivesSharingAVertexBufferHaveTheBoundsOfWhatTheyIndex) {
+  MeshAsset asset;
+  asset.vertex_buffers.push_back(shapes::grid(glm::vec3(0), glm::vec3(4, 0, 0), glm::vec3(0, 4, 0), 4, 4, 1.0f).vertices);
+  Primitive left, right;
+  left.indices = {0, 1, 5};    // (0,0) (1,0) (0,1)
+  right.indices = {3, 4, 9};   // (3,0) (4,0) (4,1)
+  compute_bounds(asset.vertex_buffers[0], left);
+  compute_bounds(asset.vertex_buffers[0], right);
+  EXPECT_EQ(left.bounds_min, glm::vec3(0, 0, 0));
+  EXPECT_EQ(left.bounds_max, glm::vec3(1, 1, 0));
+  EXPECT_EQ(right.bounds_min, glm::vec3(3, 0, 0));
+  EXPECT_EQ(right.bounds_max, glm::vec3(4, 1, 0));
+  EXPECT_EQ(asset.vertex_count(), 25u);
 }
 
 TEST(MeshBuilder, LatheNormalsPointAwayFromTheAxis) {
-  const Primitive p = shapes::lathe({{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 2.0f}, {0.0f, 2.0f}}, 16, 1.0f);
+  const Geometry p = shapes::lathe({{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 2.0f}, {0.0f, 2.0f}}, 16, 1.0f);
   for (const Vertex& v : p.vertices) {
     const glm::vec2 radial(v.position.x, v.position.z);
     if (glm::length(radial) > 0.99f && v.position.y > 0.01f && v.position.y < 1.99f) {
@@ -30,7 +47,7 @@ TEST(MeshBuilder, LatheNormalsPointAwayFromTheAxis) {
 }
 
 TEST(MeshAsset, GeneratedNormalsOfAFlatQuadAreItsFaceNormal) {
-  Primitive p;
+  Geometry p;
   p.vertices.resize(4);
   p.vertices[0].position = {0, 0, 0};
   p.vertices[1].position = {1, 0, 0};
@@ -42,7 +59,7 @@ TEST(MeshAsset, GeneratedNormalsOfAFlatQuadAreItsFaceNormal) {
 }
 
 TEST(MeshAsset, GeneratedTangentsFollowIncreasingUAndAreOrthonormal) {
-  Primitive p = shapes::grid(glm::vec3(0), glm::vec3(0, 0, -2), glm::vec3(0, 2, 0), 2, 2, 1.0f);
+  Geometry p = shapes::grid(glm::vec3(0), glm::vec3(0, 0, -2), glm::vec3(0, 2, 0), 2, 2, 1.0f);
   p.vertices[0].tangent = glm::vec4(0.0f);
   generate_tangents(p);
   for (const Vertex& v : p.vertices) {
@@ -54,14 +71,14 @@ TEST(MeshAsset, GeneratedTangentsFollowIncreasingUAndAreOrthonormal) {
 }
 
 TEST(MeshAsset, MirroredUvsFlipTheBitangentSign) {
-  Primitive p = shapes::grid(glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1, 1, 1.0f);
+  Geometry p = shapes::grid(glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1, 1, 1.0f);
   for (Vertex& v : p.vertices) v.uv0.y = -v.uv0.y;
   generate_tangents(p);
   for (const Vertex& v : p.vertices) EXPECT_EQ(v.tangent.w, -1.0f);
 }
 
 TEST(MeshAsset, TangentsStayDefinedWithoutUvs) {
-  Primitive p = shapes::grid(glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1, 1, 1.0f);
+  Geometry p = shapes::grid(glm::vec3(0), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), 1, 1, 1.0f);
   for (Vertex& v : p.vertices) v.uv0 = glm::vec2(0.0f);
   generate_tangents(p);
   for (const Vertex& v : p.vertices) {

@@ -32,8 +32,8 @@ void check_case(const Case& c) {
   material.metallic_factor = c.material.metallic;
   material.roughness_factor = c.material.roughness;
   plane.materials.push_back(material);
-  plane.meshes.push_back({"plane", {assets::shapes::grid(glm::vec3(-kHalf, 0, kHalf), glm::vec3(2 * kHalf, 0, 0),
-                                                         glm::vec3(0, 0, -2 * kHalf), 8, 8, 1.0f)}});
+  plane.meshes.push_back({"plane", {assets::add_geometry(plane, assets::shapes::grid(glm::vec3(-kHalf, 0, kHalf), glm::vec3(2 * kHalf, 0, 0),
+                                                                                     glm::vec3(0, 0, -2 * kHalf), 8, 8, 1.0f), 0)}});
   assets::SceneDescription scene;
   scene.instances.push_back({manager.add_mesh_asset(std::move(plane)), 0, Transform{}});
   scene.lights.push_back({c.light_position, c.light_color, c.intensity, c.radius});

@@ -2,6 +2,7 @@
 // picture is lit (not blank), the views differ, and surfaces close to a light are
 // brighter than surfaces far from every light.
 #include <cmath>
+#include <limits>
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
@@ -18,7 +19,8 @@ constexpr glm::ivec2 kSize{320, 180};
 struct ViewFrame {
   assets::Image image;
   std::vector<float> depth;
-  glm::mat4 inverse_view_projection;
+  glm::mat4 inverse_view;
+  glm::mat4 inverse_projection;
 };
 
 class BuiltinSceneRender : public testing::GlTest {
@@ -29,8 +31,9 @@ class BuiltinSceneRender : public testing::GlTest {
     for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) {
       world.set_view(v);
       world.frame(0.0);
-      frames_->push_back({world.renderer().read_output(), world.renderer().read_depth(),
-                          glm::inverse(world.registry().resource<ViewState>().view_projection)});
+      const auto& state = world.registry().resource<ViewState>();
+      frames_->push_back({world.renderer().read_output(), world.renderer().read_view_depth(), glm::inverse(state.view),
+                          glm::inverse(state.projection)});
       assets::write_png("builtin_view_" + std::to_string(v) + ".png", frames_->back().image);
     }
     world.registry().view<Transform, LightColor>().each([](const Transform& t, const LightColor&) {
@@ -58,7 +61,7 @@ TEST_F(BuiltinSceneRender, EveryViewIsLitAndNotBlank) {
         const double l = assets::luma(image, x, y);
         sum += l;
         sum_sq += l * l;
-        geometry += (*frames_)[v].depth[static_cast<std::size_t>(y * kSize.x + x)] < 1.0f;
+        geometry += (*frames_)[v].depth[static_cast<std::size_t>(y * kSize.x + x)] < std::numeric_limits<float>::infinity();
       }
     }
     const double n = kSize.x * kSize.y, mean = sum / n, stddev = std::sqrt(sum_sq / n - mean * mean);
@@ -85,10 +88,12 @@ TEST_F(BuiltinSceneRender, SurfacesNearLightsAreBrighterThanSurfacesFarFromThem)
     for (int y = 0; y < kSize.y; ++y) {
       for (int x = 0; x < kSize.x; ++x) {
         const float depth = frame.depth[static_cast<std::size_t>(y * kSize.x + x)];
-        if (depth >= 1.0f) continue;
-        const glm::vec4 ndc((x + 0.5f) / kSize.x * 2 - 1, 1 - (y + 0.5f) / kSize.y * 2, depth * 2 - 1, 1);
-        const glm::vec4 world = frame.inverse_view_projection * ndc;
-        const glm::vec3 p = glm::vec3(world) / world.w;
+        if (!std::isfinite(depth)) continue;
+        // The pixel's ray at view depth 1, scaled to the surface's depth.
+        const glm::vec4 ndc((x + 0.5f) / kSize.x * 2 - 1, 1 - (y + 0.5f) / kSize.y * 2, 0.5f, 1);
+        const glm::vec4 on_ray = frame.inverse_projection * ndc;
+        const glm::vec3 ray = glm::vec3(on_ray) / on_ray.w / (-on_ray.z / on_ray.w);
+        const glm::vec3 p = glm::vec3(frame.inverse_view * glm::vec4(ray * depth, 1.0f));
         float nearest = 1e9f;
         for (const glm::vec3& light : lights_) nearest = std::min(nearest, glm::distance(light, p));
         const double l = assets::luma(frame.image, x, y);

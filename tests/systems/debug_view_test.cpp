@@ -48,9 +48,9 @@ TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
 }
 
 double coverage(World& world) {
-  const std::vector<float> depth = world.renderer().read_depth();
+  const std::vector<float> depth = world.renderer().read_view_depth();
   double covered = 0;
-  for (float d : depth) covered += d < 1.0f;
+  for (float d : depth) covered += std::isfinite(d);
   return covered / static_cast<double>(depth.size());
 }
 
@@ -96,16 +96,10 @@ Rgb pixel(const assets::Image& image, int x, int y) {
 
 constexpr Rgb kMagenta{255, 0, 255}, kBlack{0, 0, 0};
 
-float view_depth(World& world, float depth) {
-  const auto& view = world.registry().resource<ViewState>();
-  const float ndc = depth * 2.0f - 1.0f;
-  return 2.0f * view.near_plane * view.far_plane / (view.far_plane + view.near_plane - ndc * (view.far_plane - view.near_plane));
-}
-
 // The bin each covered pixel (top-down image order) reads, -1 for background,
 // worked out on the CPU from the depth buffer and the technique's layout.
 std::vector<int> pixel_bins(World& world) {
-  const std::vector<float> depth = world.renderer().read_depth();
+  const std::vector<float> depth = world.renderer().read_view_depth();
   std::vector<int> bins(depth.size(), -1);
   const lighting::LightingTechnique* technique = world.renderer().technique();
   const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique);
@@ -113,7 +107,7 @@ std::vector<int> pixel_bins(World& world) {
   for (int y = 0; y < kSize.y; ++y) {
     for (int x = 0; x < kSize.x; ++x) {
       const std::size_t i = static_cast<std::size_t>(y * kSize.x + x);
-      if (depth[i] >= 1.0f) continue;
+      if (!std::isfinite(depth[i])) continue;
       const int gl_y = kSize.y - 1 - y;
       if (tiled) {
         bins[i] = gl_y / lighting::kTileSize * static_cast<int>(tiled->tiles().x) + x / lighting::kTileSize;
@@ -121,7 +115,7 @@ std::vector<int> pixel_bins(World& world) {
         const glm::uvec3 dims = clustered->grid().dims();
         const glm::uvec2 tile = glm::uvec2(glm::clamp(glm::vec2(x + 0.5f, gl_y + 0.5f) / glm::vec2(kSize) * glm::vec2(dims),
                                                       glm::vec2(0.0f), glm::vec2(dims) - 1.0f));
-        bins[i] = static_cast<int>((clustered->grid().slice_of(view_depth(world, depth[i])) * dims.y + tile.y) * dims.x + tile.x);
+        bins[i] = static_cast<int>((clustered->grid().slice_of(depth[i]) * dims.y + tile.y) * dims.x + tile.x);
       }
     }
   }
@@ -238,7 +232,7 @@ TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyMode) {
     world.frame(0.0);
     const assets::Image image = world.renderer().read_output();
     assets::write_png(std::string("debug_view_depth_slices_") + mode + ".png", image);
-    const std::vector<float> depth = world.renderer().read_depth();
+    const std::vector<float> depth = world.renderer().read_view_depth();
     lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid);
     const auto& view = world.registry().resource<ViewState>();
     grid.update(view.projection, view.near_plane, view.far_plane);
@@ -247,9 +241,9 @@ TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyMode) {
     for (int y = 0; y < kSize.y; ++y) {
       for (int x = 0; x < kSize.x; ++x) {
         const float d = depth[static_cast<std::size_t>(y * kSize.x + x)];
-        if (d >= 1.0f) continue;
+        if (!std::isfinite(d)) continue;
         ++covered;
-        ++colours[grid.slice_of(view_depth(world, d))][pixel(image, x, y)];
+        ++colours[grid.slice_of(d)][pixel(image, x, y)];
       }
     }
     EXPECT_GE(colours.size(), 4u) << mode << ": the view spans several slices";

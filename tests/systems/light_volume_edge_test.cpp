@@ -37,10 +37,10 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
   material.metallic_factor = 0.0f;
   material.roughness_factor = 0.5f;
   room.materials.push_back(material);
-  assets::Primitive geometry = assets::shapes::grid(glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), 20, 20, 1.0f);
+  assets::Geometry geometry = assets::shapes::grid(glm::vec3(-10, 0, 10), glm::vec3(20, 0, 0), glm::vec3(0, 0, -20), 20, 20, 1.0f);
   assets::shapes::append(geometry, assets::shapes::grid(glm::vec3(-10, 0, -10), glm::vec3(20, 0, 0), glm::vec3(0, 6, 0), 20, 6, 1.0f),
                          glm::mat4(1.0f));
-  room.meshes.push_back({"room", {geometry}});
+  room.meshes.push_back({"room", {assets::add_geometry(room, geometry, 0)}});
   // Two overlapping tinted panes; drawn after lighting, back to front.
   assets::Material glass = material;
   glass.alpha_mode = assets::AlphaMode::Blend;
@@ -50,10 +50,9 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
   glass.base_color_factor = glm::vec4(1.0f, 0.4f, 0.2f, 0.4f);
   room.materials.push_back(glass);
   for (std::uint32_t pane = 0; pane < 2; ++pane) {
-    assets::Primitive quad = assets::shapes::grid(glm::vec3(-1.0f + 0.8f * static_cast<float>(pane), 0.0f, 1.5f - static_cast<float>(pane)),
-                                                  glm::vec3(1.5f, 0, 0), glm::vec3(0, 1.2f, 0), 1, 1, 1.0f);
-    quad.material = 1 + pane;
-    room.meshes.push_back({"pane", {quad}});
+    assets::Geometry quad = assets::shapes::grid(glm::vec3(-1.0f + 0.8f * static_cast<float>(pane), 0.0f, 1.5f - static_cast<float>(pane)),
+                                                 glm::vec3(1.5f, 0, 0), glm::vec3(0, 1.2f, 0), 1, 1, 1.0f);
+    room.meshes.push_back({"pane", {assets::add_geometry(room, std::move(quad), 1 + pane)}});
   }
   assets::SceneDescription scene;
   const assets::MeshAssetHandle handle = manager.add_mesh_asset(std::move(room));

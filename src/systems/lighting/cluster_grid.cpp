@@ -1,8 +1,11 @@
 #include "systems/lighting/cluster_grid.hpp"
 
+
 #include <algorithm>
 #include <cmath>
 #include <string>
+
+#include "gfx/depth.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -64,7 +67,7 @@ void ClusterGrid::update(const glm::mat4& projection, float near_plane, float fa
         for (int corner = 0; corner < 4; ++corner) {
           const float ndc_x = -1.0f + 2.0f * static_cast<float>(x + (corner & 1)) / static_cast<float>(dims_.x);
           const float ndc_y = -1.0f + 2.0f * static_cast<float>(y + ((corner >> 1) & 1)) / static_cast<float>(dims_.y);
-          glm::vec4 on_near = inverse * glm::vec4(ndc_x, ndc_y, -1.0f, 1.0f);
+          glm::vec4 on_near = inverse * glm::vec4(ndc_x, ndc_y, gfx::kDepthNear, 1.0f);
           const glm::vec3 ray = glm::vec3(on_near) / on_near.w / near_plane;  // the point at view depth 1
           for (const float depth : {d0, d1}) {
             lo = glm::min(lo, ray * depth);

@@ -1,5 +1,7 @@
 #include "systems/lighting/clustered.hpp"
 
+#include "gfx/depth.hpp"
+
 namespace atrium::lighting {
 ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
@@ -55,12 +57,12 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
       glViewport(0, 0, targets.size.x, targets.size.y);
       // Every visible fragment is shaded once: its depth is already there.
       glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LEQUAL);
+      glDepthFunc(gfx::kDepthCloserOrEqual);
       glDepthMask(GL_FALSE);
       shading_.use();
       draw_items(shading_, frame.gpu, frame.draws.opaque);
       glDepthMask(GL_TRUE);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(gfx::kDepthCloser);
     }
   }
   draw_transparent(forward_, frame, targets);

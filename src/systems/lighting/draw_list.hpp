@@ -1,6 +1,8 @@
 // The frame's geometry as draw items, gathered once from MeshInstance entities
-// and shared by every pass of every technique: opaque and alpha-masked items in
-// asset order, blended items sorted back to front.
+// and shared by every pass of every technique: opaque and alpha-masked items,
+// one instanced draw per primitive and material however many entities show it,
+// in the order they are first met; blended items one per instance, sorted back
+// to front. Each instance's transforms sit in the frame's instance buffer.
 #pragma once
 
 #include <span>
@@ -19,27 +21,39 @@ namespace atrium::lighting {
 // Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
 inline constexpr unsigned kMaterialTextureSlots = 5;
 
+// Where mesh.vert finds the instance records (a storage buffer binding).
+inline constexpr unsigned kInstanceStorageBinding = 1;
+
+// std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
+struct InstanceData {
+  glm::mat4 model{1.0f};
+  glm::mat4 normal_matrix{1.0f};  // inverse transpose of the model's 3x3, in a mat4 to keep std430 simple
+};
+static_assert(sizeof(InstanceData) == 128, "must match Instance in shaders/common/mesh.vert");
+
 struct DrawItem {
   GLuint vertex_array = 0;
   assets::GpuPrimitive range;
   const assets::Material* material = nullptr;
-  glm::mat4 model{1.0f};
-  glm::mat3 normal_matrix{1.0f};
-  float view_depth = 0.0f;  // distance along the view axis to the bounds' centre
+  std::uint32_t first_instance = 0;  // into DrawList::instances
+  std::uint32_t instance_count = 1;
+  float view_depth = 0.0f;  // blended items: distance along the view axis to the bounds' centre
 };
 
 struct DrawList {
-  std::vector<DrawItem> opaque;   // Opaque and Mask materials
-  std::vector<DrawItem> blended;  // Blend materials, farthest first
-  std::size_t triangles = 0;
+  std::vector<DrawItem> opaque;   // Opaque and Mask materials, instanced
+  std::vector<DrawItem> blended;  // Blend materials, one per instance, farthest first
+  std::vector<InstanceData> instances;
+  std::size_t triangles = 0;      // over every instance
 };
 
 [[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
                                        const assets::GpuAssets& gpu, const glm::mat4& view);
 
-// Issues one draw per item with `program`: sets the model and material uniforms,
-// binds the material's textures to units 0-4, and disables back-face culling
-// for double-sided materials. Leaves culling enabled on return.
+// Issues one instanced draw per item with `program`: sets the material
+// uniforms, binds the material's textures to units 0-4, and disables back-face
+// culling for double-sided materials. The frame's instance buffer must be bound
+// at kInstanceStorageBinding. Leaves culling enabled on return.
 void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items);
 
 struct FrameContext;

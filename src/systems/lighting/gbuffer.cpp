@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "gfx/depth.hpp"
+
 namespace atrium::lighting {
 
 std::span<const GBuffer::Target> GBuffer::targets(GBufferLayout layout) {
@@ -44,9 +46,9 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
       glClearNamedFramebufferfv(framebuffer_.id(), GL_COLOR, i, zero);
     }
   }
-  glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, 1.0f, 0);
+  glClearNamedFramebufferfi(framebuffer_.id(), GL_DEPTH_STENCIL, 0, gfx::kDepthFar, 0);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(gfx::kDepthCloser);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
   // The albedo target is sRGB: GL encodes the linear values written to it.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <map>
 
+#include "gfx/depth.hpp"
+
 namespace atrium::lighting {
 namespace {
 
@@ -108,7 +110,7 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
   glCullFace(GL_BACK);
-  glDepthFunc(GL_LESS);
+  glDepthFunc(gfx::kDepthCloser);
   glDepthMask(GL_TRUE);
 
   draw_transparent(forward_, frame, targets);
@@ -124,7 +126,7 @@ void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) 
     // Stencil: no colour, depth test on, both faces; z-fail counting.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(gfx::kDepthCloser);
     glDisable(GL_CULL_FACE);
     glStencilFunc(GL_ALWAYS, 0, 0xff);
     glStencilOpSeparate(GL_BACK, GL_KEEP, GL_INCR_WRAP, GL_KEEP);
@@ -153,7 +155,7 @@ void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
   // Back faces at or behind the scene's depth: the surface is in front of the
   // sphere's far side, which includes every pixel inside the sphere.
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GEQUAL);
+  glDepthFunc(gfx::kDepthFartherOrEqual);
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);

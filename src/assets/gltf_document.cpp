@@ -1,0 +1,890 @@
+#include "assets/gltf_document.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <limits>
+#include <new>
+
+#define GLM_ENABLE_EXPERIMENTAL
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+namespace atrium::assets::gltf {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
+constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
+constexpr std::uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
+
+std::size_t memory_available() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  std::size_t kib = 0;
+  std::string unit;
+  while (meminfo >> key >> kib >> unit) {
+    if (key == "MemAvailable:") return kib * 1024;
+  }
+  return std::numeric_limits<std::size_t>::max();
+}
+
+std::string with_commas(std::size_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+// Reads typed members of the JSON with the JSON path of each in its errors.
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
+    throw ImportError(file_ + ": " + where + (problem.empty() ? "" : " " + problem));
+  }
+
+  const Json* member(const Json& object, const char* key) const {
+    const auto it = object.find(key);
+    return it == object.end() ? nullptr : &*it;
+  }
+
+  const Json& object(const Json& j, const std::string& where) const {
+    if (!j.is_object()) fail(where, "is not an object");
+    return j;
+  }
+
+  const Json& array(const Json& j, const std::string& where) const {
+    if (!j.is_array()) fail(where, "is not an array");
+    return j;
+  }
+
+  const Json& object_member(const Json& object, const char* key, const std::string& where) const {
+    const Json* j = member(object, key);
+    if (!j) fail(where + "." + key, "is missing");
+    return this->object(*j, where + "." + key);
+  }
+
+  // An optional array member; empty when absent.
+  const Json& array_member(const Json& object, const char* key, const std::string& where) const {
+    static const Json kEmpty = Json::array();
+    const Json* j = member(object, key);
+    return j ? array(*j, where + "." + key) : kEmpty;
+  }
+
+  std::string string(const Json& object, const char* key, const std::string& where, const std::string& fallback = {}) const {
+    const Json* j = member(object, key);
+    if (!j) return fallback;
+    if (!j->is_string()) fail(where + "." + key, "is not a string");
+    return j->get<std::string>();
+  }
+
+  double number(const Json& object, const char* key, const std::string& where, double fallback) const {
+    const Json* j = member(object, key);
+    if (!j) return fallback;
+    if (!j->is_number()) fail(where + "." + key, "is not a number");
+    const double value = j->get<double>();
+    if (!std::isfinite(value)) fail(where + "." + key, "is not a finite number");
+    return value;
+  }
+
+  bool boolean(const Json& object, const char* key, const std::string& where, bool fallback) const {
+    const Json* j = member(object, key);
+    if (!j) return fallback;
+    if (!j->is_boolean()) fail(where + "." + key, "is not true or false");
+    return j->get<bool>();
+  }
+
+  // A whole number in [min, max]; `fallback` when absent.
+  std::size_t count(const Json& j, const std::string& where, std::size_t min, std::size_t max) const {
+    if (!j.is_number()) fail(where, "is not a number");
+    const double value = j.get<double>();
+    if (!(value >= static_cast<double>(min)) || !(value <= static_cast<double>(max)) || value != std::floor(value)) {
+      fail(where, "is " + j.dump() + ", expected a whole number from " + with_commas(min) + " to " + with_commas(max));
+    }
+    return static_cast<std::size_t>(value);
+  }
+
+  std::size_t count_member(const Json& object, const char* key, const std::string& where, std::size_t min, std::size_t max,
+                           std::optional<std::size_t> fallback = std::nullopt) const {
+    const Json* j = member(object, key);
+    if (!j) {
+      if (!fallback) fail(where + "." + key, "is missing");
+      return *fallback;
+    }
+    return count(*j, where + "." + key, min, max);
+  }
+
+  // An index into an array of `size` elements named `target` ("accessors");
+  // -1 when the member is absent and not required.
+  int index(const Json& object, const char* key, const std::string& where, std::size_t size, const char* target,
+            bool required = false) const {
+    const Json* j = member(object, key);
+    if (!j) {
+      if (required) fail(where + "." + key, "is missing");
+      return -1;
+    }
+    return index_value(*j, where + "." + key, size, target);
+  }
+
+  int index_value(const Json& j, const std::string& where, std::size_t size, const char* target) const {
+    if (!j.is_number()) fail(where, "is not an index");
+    const double value = j.get<double>();
+    if (!(value >= 0.0) || value != std::floor(value) || value >= static_cast<double>(size)) {
+      fail(where, "refers to " + std::string(target) + "[" + j.dump() + "], which does not exist (the file has " +
+                      std::to_string(size) + ")");
+    }
+    return static_cast<int>(value);
+  }
+
+  template <std::size_t N>
+  std::array<double, N> numbers(const Json& object, const char* key, const std::string& where, std::array<double, N> fallback) const {
+    const Json* j = member(object, key);
+    if (!j) return fallback;
+    if (!j->is_array() || j->size() != N) fail(where + "." + key, "is not an array of " + std::to_string(N) + " numbers");
+    std::array<double, N> out{};
+    for (std::size_t i = 0; i < N; ++i) {
+      if (!(*j)[i].is_number() || !std::isfinite((*j)[i].get<double>())) fail(where + "." + key, "holds something other than finite numbers");
+      out[i] = (*j)[i].get<double>();
+    }
+    return out;
+  }
+
+  Json extensions(const Json& object, const std::string& where) const {
+    const Json* j = member(object, "extensions");
+    if (!j) return Json::object();
+    return this->object(*j, where + ".extensions");
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+int base64_value(unsigned char c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+' || c == '-') return 62;
+  if (c == '/' || c == '_') return 63;
+  return -1;
+}
+
+// The size a base64 text decodes to (without decoding it).
+std::size_t base64_size(std::string_view text) {
+  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
+  return text.size() / 4 * 3 + (text.size() % 4 >= 2 ? text.size() % 4 - 1 : 0);
+}
+
+bool base64_decode(std::string_view text, std::vector<std::uint8_t>& out) {
+  while (!text.empty() && text.back() == '=') text.remove_suffix(1);
+  out.clear();
+  out.reserve(base64_size(text));
+  std::uint32_t bits = 0;
+  int held = 0;
+  for (unsigned char c : text) {
+    const int v = base64_value(c);
+    if (v < 0) return false;
+    bits = (bits << 6) | static_cast<std::uint32_t>(v);
+    held += 6;
+    if (held >= 8) {
+      held -= 8;
+      out.push_back(static_cast<std::uint8_t>((bits >> held) & 0xff));
+    }
+  }
+  return text.size() % 4 != 1;
+}
+
+// "data:[<media type>][;base64],<data>": the payload after the comma, or
+// nullopt when `uri` is no base64 data URI.
+std::optional<std::string_view> data_uri_payload(std::string_view uri) {
+  if (uri.substr(0, 5) != "data:") return std::nullopt;
+  const std::size_t comma = uri.find(',');
+  if (comma == std::string_view::npos) return std::nullopt;
+  const std::string_view header = uri.substr(0, comma);
+  if (header.size() < 7 || header.substr(header.size() - 7) != ";base64") return std::nullopt;
+  return uri.substr(comma + 1);
+}
+
+std::string percent_decode(const std::string& uri) {
+  std::string out;
+  for (std::size_t i = 0; i < uri.size(); ++i) {
+    if (uri[i] == '%' && i + 2 < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+        std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+      out += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    } else {
+      out += uri[i];
+    }
+  }
+  return out;
+}
+
+// The file a relative URI names; empty when it names something that is no
+// local file (http:, ...).
+fs::path uri_path(const fs::path& gltf, const std::string& uri) {
+  const std::size_t colon = uri.find(':');
+  const std::size_t slash = uri.find('/');
+  if (colon != std::string::npos && colon > 1 && (slash == std::string::npos || colon < slash)) {
+    if (uri.rfind("file://", 0) == 0) return fs::path(percent_decode(uri.substr(7)));
+    return {};
+  }
+  const fs::path relative(percent_decode(uri));
+  return relative.is_absolute() ? relative : gltf.parent_path() / relative;
+}
+
+// Reads the first `size` bytes of a regular file, or fails with a message.
+bool read_file_prefix(const fs::path& path, std::size_t size, std::vector<std::uint8_t>& out, std::string& error) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    error = "the file " + path.string() + " is missing or unreadable";
+    return false;
+  }
+  std::ifstream in(path, std::ios::binary);
+  out.resize(size);
+  in.read(reinterpret_cast<char*>(out.data()), static_cast<std::streamsize>(size));
+  if (static_cast<std::size_t>(in.gcount()) != size) {
+    error = "the file " + path.string() + " cannot be read";
+    return false;
+  }
+  return true;
+}
+
+class DocumentReader {
+ public:
+  DocumentReader(const fs::path& path, const MemoryBudget& budget) : r_(path.string()), budget_(budget) { doc_.path = path; }
+
+  Document read() {
+    std::error_code ec;
+    if (!fs::is_regular_file(doc_.path, ec)) r_.fail("no such file", "");
+    const std::uintmax_t file_size = fs::file_size(doc_.path, ec);
+    if (ec) r_.fail("cannot be read", "");
+    std::ifstream in(doc_.path, std::ios::binary);
+    std::uint32_t magic = 0;
+    in.read(reinterpret_cast<char*>(&magic), 4);
+    const bool binary = in.gcount() == 4 && magic == kGlbMagic;
+    in.seekg(0);
+    if (binary) read_glb(in, file_size);
+    else read_json_text(in, file_size);
+    parse();
+    return std::move(doc_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& where, const std::string& problem) const { r_.fail(where, problem); }
+  void warn(const std::string& problem) { doc_.warnings.push_back(r_.file() + ": " + problem); }
+
+  void parse_json(const char* text, std::size_t size) {
+    try {
+      root_ = Json::parse(text, text + size);
+    } catch (const Json::exception& e) {
+      // parse_error, and out_of_range for numbers beyond a double (1e400).
+      const std::string what = e.what();
+      const std::size_t tag = what.find("] ");
+      fail("not valid JSON (" + (tag == std::string::npos ? what : what.substr(tag + 2)) + ")", "");
+    }
+    if (!root_.is_object()) fail("is not a glTF file (its JSON is not an object)", "");
+  }
+
+  void read_json_text(std::ifstream& in, std::uintmax_t file_size) {
+    budget_.require(static_cast<std::size_t>(file_size) * 8, "the JSON text (" + format_bytes(static_cast<double>(file_size)) + ")");
+    std::string text(static_cast<std::size_t>(file_size), '\0');
+    in.read(text.data(), static_cast<std::streamsize>(file_size));
+    parse_json(text.data(), text.size());
+  }
+
+  // Binary glTF: a 12-byte header, a JSON chunk, then an optional BIN chunk.
+  void read_glb(std::ifstream& in, std::uintmax_t file_size) {
+    std::uint32_t header[3] = {};
+    in.read(reinterpret_cast<char*>(header), sizeof header);
+    if (in.gcount() != sizeof header) fail("is a truncated binary glTF (no 12-byte header)", "");
+    if (header[1] != 2) fail("is binary glTF version " + std::to_string(header[1]) + "; Atrium reads version 2", "");
+    if (header[2] > file_size) {
+      fail("declares a length of " + with_commas(header[2]) + " bytes, but the file has " + with_commas(file_size) + " (truncated?)", "");
+    }
+    std::size_t offset = 12;
+    bool json = false;
+    while (offset + 8 <= header[2]) {
+      std::uint32_t chunk[2] = {};
+      in.seekg(static_cast<std::streamoff>(offset));
+      in.read(reinterpret_cast<char*>(chunk), sizeof chunk);
+      const std::size_t length = chunk[0];
+      if (length > header[2] - offset - 8) {
+        fail("has a chunk at byte " + with_commas(offset) + " of " + with_commas(length) + " bytes, past the end of the file", "");
+      }
+      if (!json) {
+        if (chunk[1] != kChunkJson) fail("is binary glTF whose first chunk is not JSON", "");
+        budget_.require(length * 8, "the JSON chunk (" + format_bytes(static_cast<double>(length)) + ")");
+        std::string text(length, '\0');
+        in.read(text.data(), static_cast<std::streamsize>(length));
+        parse_json(text.data(), text.size());
+        json = true;
+      } else if (chunk[1] == kChunkBinary && !binary_chunk_) {
+        budget_.require(length, "the BIN chunk");
+        binary_chunk_.emplace(length);
+        in.read(reinterpret_cast<char*>(binary_chunk_->data()), static_cast<std::streamsize>(length));
+        if (static_cast<std::size_t>(in.gcount()) != length) fail("cannot read its BIN chunk", "");
+      }
+      offset += 8 + ((length + 3) & ~std::size_t{3});
+    }
+    if (!json) fail("is binary glTF without a JSON chunk", "");
+  }
+
+  void parse() {
+    const Json& root = root_;
+    const Json* asset = r_.member(root, "asset");
+    if (asset && asset->is_object()) {
+      const std::string version = r_.string(*asset, "version", "asset");
+      if (!version.empty() && version[0] != '2') fail("is glTF version " + version + "; Atrium reads glTF 2.0", "");
+    }
+    for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
+      auto& out = std::string(key) == "extensionsUsed" ? doc_.extensions_used : doc_.extensions_required;
+      for (const Json& name : r_.array_member(root, key, "")) {
+        if (!name.is_string()) fail(std::string(key), "holds something other than names");
+        out.push_back(name.get<std::string>());
+      }
+    }
+    // The sizes of every array first, so that references can be checked as they are read.
+    auto size_of = [&](const char* key) { return r_.array_member(root, key, "").size(); };
+    counts_ = {{"buffers", size_of("buffers")},     {"bufferViews", size_of("bufferViews")}, {"accessors", size_of("accessors")},
+               {"meshes", size_of("meshes")},       {"materials", size_of("materials")},     {"textures", size_of("textures")},
+               {"images", size_of("images")},       {"samplers", size_of("samplers")},       {"nodes", size_of("nodes")},
+               {"scenes", size_of("scenes")}};
+    const Json extensions = r_.extensions(root, "");
+    if (extensions.contains("KHR_lights_punctual")) read_lights(r_.object(extensions["KHR_lights_punctual"], "extensions.KHR_lights_punctual"));
+    read_buffers();
+    read_buffer_views();
+    read_accessors();
+    read_meshes();
+    read_materials();
+    read_textures();
+    read_images();
+    read_samplers();
+    read_nodes();
+    read_scenes();
+  }
+
+  std::size_t count(const char* key) const { return counts_.at(key); }
+
+  // --- buffers ---------------------------------------------------------------
+
+  void read_buffers() {
+    const Json& buffers = r_.array_member(root_, "buffers", "");
+    doc_.buffers.resize(buffers.size());
+    for (std::size_t b = 0; b < buffers.size(); ++b) {
+      const std::string where = "buffers[" + std::to_string(b) + "]";
+      const Json& j = r_.object(buffers[b], where);
+      Buffer& buffer = doc_.buffers[b];
+      buffer.byte_length = r_.count_member(j, "byteLength", where, 0, std::numeric_limits<std::uint64_t>::max() / 2);
+      const Json ext = r_.extensions(j, where);
+      const bool fallback = ext.contains("EXT_meshopt_compression") && ext["EXT_meshopt_compression"].is_object() &&
+                            r_.boolean(ext["EXT_meshopt_compression"], "fallback", where + ".extensions.EXT_meshopt_compression", false);
+      if (!r_.member(j, "uri")) {
+        if (b == 0 && binary_chunk_) {
+          if (buffer.byte_length > binary_chunk_->size()) {
+            fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but the BIN chunk holds " +
+                            with_commas(binary_chunk_->size()) + " bytes");
+          }
+          buffer.data = std::move(*binary_chunk_);
+          buffer.data.resize(buffer.byte_length);
+          continue;
+        }
+        if (fallback) {
+          buffer.fallback_only = true;
+          continue;
+        }
+        if (buffer.byte_length == 0) continue;
+        fail(where, "has no uri and is not the BIN chunk of a binary glTF, so it holds no data");
+      }
+      const std::string uri = r_.string(j, "uri", where);
+      if (const auto payload = data_uri_payload(uri)) {
+        if (base64_size(*payload) < buffer.byte_length) {
+          fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but its data URI holds " +
+                          with_commas(base64_size(*payload)) + " bytes");
+        }
+        budget_.require(base64_size(*payload), where + " (data URI)");
+        if (!base64_decode(*payload, buffer.data)) fail(where, "has a data URI that is not valid base64");
+        buffer.data.resize(buffer.byte_length);
+        continue;
+      }
+      if (uri.rfind("data:", 0) == 0) fail(where, "has a data URI that is not base64 (glTF requires base64)");
+      const fs::path file = uri_path(doc_.path, uri);
+      if (file.empty()) fail(where, "refers to " + uri + ", which is not a local file (Atrium downloads nothing)");
+      std::error_code ec;
+      if (!fs::is_regular_file(file, ec)) fail(where, "refers to " + file.string() + ", which does not exist");
+      const std::uintmax_t size = fs::file_size(file, ec);
+      if (ec || size < buffer.byte_length) {
+        fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but " + file.filename().string() + " has " +
+                        with_commas(ec ? 0 : size) + " bytes");
+      }
+      budget_.require(buffer.byte_length, where + " (" + file.filename().string() + ")");
+      std::string error;
+      if (!read_file_prefix(file, buffer.byte_length, buffer.data, error)) fail(where, error);
+    }
+  }
+
+  void read_buffer_views() {
+    const Json& views = r_.array_member(root_, "bufferViews", "");
+    doc_.buffer_views.resize(views.size());
+    for (std::size_t v = 0; v < views.size(); ++v) {
+      const std::string where = "bufferViews[" + std::to_string(v) + "]";
+      const Json& j = r_.object(views[v], where);
+      BufferView& view = doc_.buffer_views[v];
+      view.buffer = static_cast<std::size_t>(r_.index(j, "buffer", where, count("buffers"), "buffers", true));
+      constexpr std::size_t kMax = std::numeric_limits<std::uint64_t>::max() / 4;
+      view.byte_offset = r_.count_member(j, "byteOffset", where, 0, kMax, 0);
+      view.byte_length = r_.count_member(j, "byteLength", where, 1, kMax);
+      if (r_.member(j, "byteStride")) {
+        view.byte_stride = r_.count_member(j, "byteStride", where, 4, 252);
+        if (view.byte_stride % 4 != 0) fail(where + ".byteStride", "is " + std::to_string(view.byte_stride) + ", not a multiple of 4");
+      }
+      const Buffer& buffer = doc_.buffers[view.buffer];
+      if (view.byte_offset > buffer.byte_length || view.byte_length > buffer.byte_length - view.byte_offset) {
+        fail(where, "covers bytes " + with_commas(view.byte_offset) + " to " + with_commas(view.byte_offset + view.byte_length) +
+                        " of buffers[" + std::to_string(view.buffer) + "], which has " + with_commas(buffer.byte_length));
+      }
+      const Json ext = r_.extensions(j, where);
+      if (ext.contains("EXT_meshopt_compression")) {
+        view.meshopt = read_meshopt(r_.object(ext["EXT_meshopt_compression"], where + ".extensions.EXT_meshopt_compression"),
+                                    where + ".extensions.EXT_meshopt_compression", view);
+      } else if (buffer.fallback_only) {
+        fail(where, "points into buffers[" + std::to_string(view.buffer) +
+                        "], which holds no data (an EXT_meshopt_compression fallback), and is not compressed");
+      }
+    }
+  }
+
+  MeshoptSource read_meshopt(const Json& j, const std::string& where, const BufferView& view) {
+    MeshoptSource m;
+    m.buffer = static_cast<std::size_t>(r_.index(j, "buffer", where, count("buffers"), "buffers", true));
+    m.byte_offset = r_.count_member(j, "byteOffset", where, 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
+    m.byte_length = r_.count_member(j, "byteLength", where, 1, std::numeric_limits<std::uint64_t>::max() / 4);
+    m.byte_stride = r_.count_member(j, "byteStride", where, 1, 256);
+    m.count = r_.count_member(j, "count", where, 1, std::numeric_limits<std::uint32_t>::max());
+    const std::string mode = r_.string(j, "mode", where);
+    const std::string filter = r_.string(j, "filter", where, "NONE");
+    if (mode == "ATTRIBUTES") m.mode = MeshoptSource::Mode::Attributes;
+    else if (mode == "TRIANGLES") m.mode = MeshoptSource::Mode::Triangles;
+    else if (mode == "INDICES") m.mode = MeshoptSource::Mode::Indices;
+    else fail(where + ".mode", "is '" + mode + "', expected ATTRIBUTES, TRIANGLES or INDICES");
+    if (filter == "OCTAHEDRAL") m.filter = MeshoptSource::Filter::Octahedral;
+    else if (filter == "QUATERNION") m.filter = MeshoptSource::Filter::Quaternion;
+    else if (filter == "EXPONENTIAL") m.filter = MeshoptSource::Filter::Exponential;
+    else if (filter != "NONE") fail(where + ".filter", "is '" + filter + "', expected NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL");
+    // The decoders' own preconditions (meshoptimizer asserts them).
+    const std::size_t s = m.byte_stride;
+    if (m.mode == MeshoptSource::Mode::Attributes && s % 4 != 0) fail(where + ".byteStride", "is " + std::to_string(s) + "; ATTRIBUTES needs a multiple of 4");
+    if (m.mode != MeshoptSource::Mode::Attributes && s != 2 && s != 4) fail(where + ".byteStride", "is " + std::to_string(s) + "; index modes need 2 or 4");
+    if (m.mode == MeshoptSource::Mode::Triangles && m.count % 3 != 0) fail(where + ".count", "is " + with_commas(m.count) + ", not a multiple of 3 (TRIANGLES)");
+    if (m.filter != MeshoptSource::Filter::None && m.mode != MeshoptSource::Mode::Attributes) fail(where + ".filter", "is " + filter + ", but only ATTRIBUTES take a filter");
+    if (m.filter == MeshoptSource::Filter::Octahedral && s != 4 && s != 8) fail(where + ".byteStride", "is " + std::to_string(s) + "; OCTAHEDRAL needs 4 or 8");
+    if (m.filter == MeshoptSource::Filter::Quaternion && s != 8) fail(where + ".byteStride", "is " + std::to_string(s) + "; QUATERNION needs 8");
+    if (m.count * m.byte_stride != view.byte_length) {
+      fail(where, "decodes to " + with_commas(m.count) + " x " + std::to_string(s) + " bytes, but the bufferView's byteLength is " +
+                      with_commas(view.byte_length));
+    }
+    const Buffer& source = doc_.buffers[m.buffer];
+    if (source.fallback_only) fail(where + ".buffer", "is the fallback buffer, which holds no data");
+    if (m.byte_offset > source.byte_length || m.byte_length > source.byte_length - m.byte_offset) {
+      fail(where, "reads bytes " + with_commas(m.byte_offset) + " to " + with_commas(m.byte_offset + m.byte_length) + " of buffers[" +
+                      std::to_string(m.buffer) + "], which has " + with_commas(source.byte_length));
+    }
+    return m;
+  }
+
+  // --- accessors -------------------------------------------------------------
+
+  void read_accessors() {
+    const Json& accessors = r_.array_member(root_, "accessors", "");
+    doc_.accessors.resize(accessors.size());
+    constexpr std::size_t kMax = std::numeric_limits<std::uint32_t>::max();
+    for (std::size_t i = 0; i < accessors.size(); ++i) {
+      const std::string where = "accessors[" + std::to_string(i) + "]";
+      const Json& j = r_.object(accessors[i], where);
+      Accessor& a = doc_.accessors[i];
+      a.buffer_view = r_.index(j, "bufferView", where, count("bufferViews"), "bufferViews");
+      a.byte_offset = r_.count_member(j, "byteOffset", where, 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
+      a.component_type = static_cast<int>(r_.count_member(j, "componentType", where, 0, 100000));
+      if (component_size(a.component_type) == 0) fail(where + ".componentType", "is " + std::to_string(a.component_type) + ", not a glTF component type");
+      a.type = r_.string(j, "type", where);
+      static const std::map<std::string, int> kComponents{{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
+                                                          {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
+      const auto type = kComponents.find(a.type);
+      if (type == kComponents.end()) fail(where + ".type", "is '" + a.type + "', not a glTF accessor type");
+      a.components = type->second;
+      a.normalized = r_.boolean(j, "normalized", where, false);
+      a.count = r_.count_member(j, "count", where, 1, kMax);
+      if (a.buffer_view >= 0) check_range(where, static_cast<std::size_t>(a.buffer_view), a.byte_offset, a.count, a.element_size());
+      if (const Json* sparse = r_.member(j, "sparse")) a.sparse = read_sparse(r_.object(*sparse, where + ".sparse"), where + ".sparse", a);
+    }
+  }
+
+  // `count` elements of `element_size` bytes from `byte_offset` in a bufferView.
+  void check_range(const std::string& where, std::size_t view_index, std::size_t byte_offset, std::size_t count, std::size_t element_size) {
+    const BufferView& view = doc_.buffer_views[view_index];
+    const std::size_t stride = view.byte_stride ? view.byte_stride : element_size;
+    if (view.byte_stride && view.byte_stride < element_size) {
+      fail(where, "has " + std::to_string(element_size) + "-byte elements, wider than the byteStride " + std::to_string(view.byte_stride) +
+                      " of bufferViews[" + std::to_string(view_index) + "]");
+    }
+    // (count - 1) * stride + element_size bytes from byte_offset, without overflow.
+    const bool fits = byte_offset <= view.byte_length && element_size <= view.byte_length - byte_offset &&
+                      count - 1 <= (view.byte_length - byte_offset - element_size) / stride;
+    if (!fits) {
+      fail(where, "reads " + with_commas(count) + " elements of " + std::to_string(element_size) + " bytes from byte " +
+                      with_commas(byte_offset) + " of bufferViews[" + std::to_string(view_index) + "], which holds " +
+                      with_commas(view.byte_length) + " bytes");
+    }
+  }
+
+  Accessor::Sparse read_sparse(const Json& j, const std::string& where, const Accessor& a) {
+    Accessor::Sparse s;
+    s.count = r_.count_member(j, "count", where, 1, a.count);
+    const Json& indices = r_.object_member(j, "indices", where);
+    const Json& values = r_.object_member(j, "values", where);
+    s.indices_view = static_cast<std::size_t>(r_.index(indices, "bufferView", where + ".indices", count("bufferViews"), "bufferViews", true));
+    s.indices_offset = r_.count_member(indices, "byteOffset", where + ".indices", 0, std::numeric_limits<std::uint32_t>::max(), 0);
+    s.indices_component_type = static_cast<int>(r_.count_member(indices, "componentType", where + ".indices", 0, 100000));
+    if (s.indices_component_type != kUnsignedByte && s.indices_component_type != kUnsignedShort && s.indices_component_type != kUnsignedInt) {
+      fail(where + ".indices.componentType", "is " + std::to_string(s.indices_component_type) + ", expected an unsigned integer type");
+    }
+    s.values_view = static_cast<std::size_t>(r_.index(values, "bufferView", where + ".values", count("bufferViews"), "bufferViews", true));
+    s.values_offset = r_.count_member(values, "byteOffset", where + ".values", 0, std::numeric_limits<std::uint32_t>::max(), 0);
+    // Sparse data is tightly packed: a bufferView stride would not apply.
+    for (const auto& [view, offset, size, what] :
+         {std::tuple{s.indices_view, s.indices_offset, component_size(s.indices_component_type), ".indices"},
+          std::tuple{s.values_view, s.values_offset, a.element_size(), ".values"}}) {
+      const BufferView& v = doc_.buffer_views[view];
+      if (offset > v.byte_length || s.count > (v.byte_length - offset) / size) {
+        fail(where + what, "reads " + with_commas(s.count) + " elements of " + std::to_string(size) + " bytes from byte " + with_commas(offset) +
+                               " of bufferViews[" + std::to_string(view) + "], which holds " + with_commas(v.byte_length) + " bytes");
+      }
+    }
+    return s;
+  }
+
+  // --- meshes ----------------------------------------------------------------
+
+  void read_meshes() {
+    const Json& meshes = r_.array_member(root_, "meshes", "");
+    doc_.meshes.resize(meshes.size());
+    for (std::size_t m = 0; m < meshes.size(); ++m) {
+      const std::string where = "meshes[" + std::to_string(m) + "]";
+      const Json& j = r_.object(meshes[m], where);
+      Mesh& mesh = doc_.meshes[m];
+      mesh.name = r_.string(j, "name", where);
+      const Json& primitives = r_.array_member(j, "primitives", where);
+      for (std::size_t p = 0; p < primitives.size(); ++p) {
+        const std::string pw = where + ".primitives[" + std::to_string(p) + "]";
+        const Json& pj = r_.object(primitives[p], pw);
+        Primitive primitive;
+        const Json* attributes = r_.member(pj, "attributes");
+        if (attributes) {
+          for (const auto& [semantic, value] : r_.object(*attributes, pw + ".attributes").items()) {
+            primitive.attributes[semantic] = r_.index_value(value, pw + ".attributes." + semantic, count("accessors"), "accessors");
+          }
+        }
+        primitive.indices = r_.index(pj, "indices", pw, count("accessors"), "accessors");
+        primitive.material = r_.index(pj, "material", pw, count("materials"), "materials");
+        primitive.mode = static_cast<int>(r_.count_member(pj, "mode", pw, 0, 6, 4));
+        const Json ext = r_.extensions(pj, pw);
+        if (ext.contains("KHR_draco_mesh_compression")) {
+          const std::string dw = pw + ".extensions.KHR_draco_mesh_compression";
+          const Json& dj = r_.object(ext["KHR_draco_mesh_compression"], dw);
+          DracoPrimitive draco;
+          draco.buffer_view = static_cast<std::size_t>(r_.index(dj, "bufferView", dw, count("bufferViews"), "bufferViews", true));
+          const Json* da = r_.member(dj, "attributes");
+          if (!da) fail(dw + ".attributes", "is missing");
+          for (const auto& [semantic, value] : r_.object(*da, dw + ".attributes").items()) {
+            draco.attributes[semantic] = static_cast<int>(r_.count(value, dw + ".attributes." + semantic, 0, 1u << 20));
+          }
+          primitive.draco = std::move(draco);
+        }
+        mesh.primitives.push_back(std::move(primitive));
+      }
+    }
+  }
+
+  // --- materials, textures, images, samplers ----------------------------------
+
+  TextureInfo read_texture_info(const Json& material, const char* key, const std::string& where, const char* scale_key) {
+    TextureInfo info;
+    const Json* j = r_.member(material, key);
+    if (!j) return info;
+    const std::string tw = where + "." + key;
+    r_.object(*j, tw);
+    info.index = r_.index(*j, "index", tw, count("textures"), "textures", true);
+    info.tex_coord = static_cast<int>(r_.count_member(*j, "texCoord", tw, 0, 31, 0));
+    if (scale_key) info.scale = r_.number(*j, scale_key, tw, 1.0);
+    info.extensions = r_.extensions(*j, tw);
+    return info;
+  }
+
+  void read_materials() {
+    const Json& materials = r_.array_member(root_, "materials", "");
+    doc_.materials.resize(materials.size());
+    for (std::size_t i = 0; i < materials.size(); ++i) {
+      const std::string where = "materials[" + std::to_string(i) + "]";
+      const Json& j = r_.object(materials[i], where);
+      Material& m = doc_.materials[i];
+      m.name = r_.string(j, "name", where);
+      if (const Json* pbr = r_.member(j, "pbrMetallicRoughness")) {
+        const std::string pw = where + ".pbrMetallicRoughness";
+        r_.object(*pbr, pw);
+        m.base_color_factor = r_.numbers<4>(*pbr, "baseColorFactor", pw, m.base_color_factor);
+        m.metallic_factor = r_.number(*pbr, "metallicFactor", pw, 1.0);
+        m.roughness_factor = r_.number(*pbr, "roughnessFactor", pw, 1.0);
+        m.base_color = read_texture_info(*pbr, "baseColorTexture", pw, nullptr);
+        m.metallic_roughness = read_texture_info(*pbr, "metallicRoughnessTexture", pw, nullptr);
+      }
+      m.normal = read_texture_info(j, "normalTexture", where, "scale");
+      m.occlusion = read_texture_info(j, "occlusionTexture", where, "strength");
+      m.emissive = read_texture_info(j, "emissiveTexture", where, nullptr);
+      m.emissive_factor = r_.numbers<3>(j, "emissiveFactor", where, m.emissive_factor);
+      m.alpha_mode = r_.string(j, "alphaMode", where, "OPAQUE");
+      if (m.alpha_mode != "OPAQUE" && m.alpha_mode != "MASK" && m.alpha_mode != "BLEND") {
+        warn(where + ".alphaMode is '" + m.alpha_mode + "', not OPAQUE, MASK or BLEND; it is drawn opaque");
+        m.alpha_mode = "OPAQUE";
+      }
+      m.alpha_cutoff = r_.number(j, "alphaCutoff", where, 0.5);
+      m.double_sided = r_.boolean(j, "doubleSided", where, false);
+      m.extensions = r_.extensions(j, where);
+    }
+  }
+
+  void read_textures() {
+    const Json& textures = r_.array_member(root_, "textures", "");
+    doc_.textures.resize(textures.size());
+    for (std::size_t i = 0; i < textures.size(); ++i) {
+      const std::string where = "textures[" + std::to_string(i) + "]";
+      const Json& j = r_.object(textures[i], where);
+      doc_.textures[i].sampler = r_.index(j, "sampler", where, count("samplers"), "samplers");
+      doc_.textures[i].source = r_.index(j, "source", where, count("images"), "images");
+      doc_.textures[i].extensions = r_.extensions(j, where);
+    }
+  }
+
+  void read_images() {
+    const Json& images = r_.array_member(root_, "images", "");
+    doc_.images.resize(images.size());
+    for (std::size_t i = 0; i < images.size(); ++i) {
+      const std::string where = "images[" + std::to_string(i) + "]";
+      const Json& j = r_.object(images[i], where);
+      Image& image = doc_.images[i];
+      image.name = r_.string(j, "name", where);
+      image.uri = r_.string(j, "uri", where);
+      image.buffer_view = r_.index(j, "bufferView", where, count("bufferViews"), "bufferViews");
+      image.mime_type = r_.string(j, "mimeType", where);
+    }
+  }
+
+  void read_samplers() {
+    const Json& samplers = r_.array_member(root_, "samplers", "");
+    doc_.samplers.resize(samplers.size());
+    for (std::size_t i = 0; i < samplers.size(); ++i) {
+      const std::string where = "samplers[" + std::to_string(i) + "]";
+      const Json& j = r_.object(samplers[i], where);
+      Sampler& s = doc_.samplers[i];
+      auto code = [&](const char* key, std::initializer_list<int> allowed, int fallback) {
+        const int value = static_cast<int>(r_.count_member(j, key, where, 0, 100000, static_cast<std::size_t>(fallback)));
+        if (value != fallback && std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
+          warn(where + "." + key + " is " + std::to_string(value) + ", not a glTF sampler value; the default is used");
+          return fallback;
+        }
+        return value;
+      };
+      s.mag_filter = code("magFilter", {9728, 9729}, -1);
+      s.min_filter = code("minFilter", {9728, 9729, 9984, 9985, 9986, 9987}, -1);
+      s.wrap_s = code("wrapS", {33071, 33648, 10497}, 10497);
+      s.wrap_t = code("wrapT", {33071, 33648, 10497}, 10497);
+    }
+  }
+
+  // --- nodes, scenes, lights ---------------------------------------------------
+
+  void read_nodes() {
+    const Json& nodes = r_.array_member(root_, "nodes", "");
+    doc_.nodes.resize(nodes.size());
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      const std::string where = "nodes[" + std::to_string(n) + "]";
+      const Json& j = r_.object(nodes[n], where);
+      Node& node = doc_.nodes[n];
+      node.name = r_.string(j, "name", where);
+      node.mesh = r_.index(j, "mesh", where, count("meshes"), "meshes");
+      for (const Json& child : r_.array_member(j, "children", where)) {
+        node.children.push_back(r_.index_value(child, where + ".children", count("nodes"), "nodes"));
+      }
+      if (r_.member(j, "matrix")) {
+        const auto m = r_.numbers<16>(j, "matrix", where, {});
+        for (int c = 0; c < 16; ++c) glm::value_ptr(node.local)[c] = static_cast<float>(m[static_cast<std::size_t>(c)]);
+      } else {
+        const auto t = r_.numbers<3>(j, "translation", where, {0.0, 0.0, 0.0});
+        const auto q = r_.numbers<4>(j, "rotation", where, {0.0, 0.0, 0.0, 1.0});
+        const auto s = r_.numbers<3>(j, "scale", where, {1.0, 1.0, 1.0});
+        const glm::quat rotation(static_cast<float>(q[3]), static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2]));
+        node.local = glm::translate(glm::mat4(1.0f), glm::vec3(t[0], t[1], t[2])) * glm::mat4_cast(rotation) *
+                     glm::scale(glm::mat4(1.0f), glm::vec3(s[0], s[1], s[2]));
+      }
+      const Json ext = r_.extensions(j, where);
+      if (ext.contains("KHR_lights_punctual")) {
+        const std::string lw = where + ".extensions.KHR_lights_punctual";
+        node.light = r_.index(r_.object(ext["KHR_lights_punctual"], lw), "light", lw, doc_.lights.size(), "lights", true);
+      }
+      if (ext.contains("EXT_mesh_gpu_instancing")) {
+        const std::string iw = where + ".extensions.EXT_mesh_gpu_instancing";
+        const Json& ij = r_.object(ext["EXT_mesh_gpu_instancing"], iw);
+        const Json* attributes = r_.member(ij, "attributes");
+        if (!attributes) fail(iw + ".attributes", "is missing");
+        Node::Instancing instancing;
+        for (const auto& [semantic, value] : r_.object(*attributes, iw + ".attributes").items()) {
+          const int accessor = r_.index_value(value, iw + ".attributes." + semantic, count("accessors"), "accessors");
+          if (semantic == "TRANSLATION") instancing.translation = accessor;
+          else if (semantic == "ROTATION") instancing.rotation = accessor;
+          else if (semantic == "SCALE") instancing.scale = accessor;
+        }
+        node.instancing = instancing;
+      }
+    }
+  }
+
+  void read_scenes() {
+    const Json& scenes = r_.array_member(root_, "scenes", "");
+    for (std::size_t s = 0; s < scenes.size(); ++s) {
+      const std::string where = "scenes[" + std::to_string(s) + "]";
+      const Json& j = r_.object(scenes[s], where);
+      std::vector<int> roots;
+      for (const Json& node : r_.array_member(j, "nodes", where)) roots.push_back(r_.index_value(node, where + ".nodes", count("nodes"), "nodes"));
+      doc_.scenes.push_back(std::move(roots));
+    }
+    doc_.scene = r_.index(root_, "scene", "", count("scenes"), "scenes");
+  }
+
+  void read_lights(const Json& extension) {
+    const Json& lights = r_.array_member(extension, "lights", "extensions.KHR_lights_punctual");
+    for (std::size_t i = 0; i < lights.size(); ++i) {
+      const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+      const Json& j = r_.object(lights[i], where);
+      Light light;
+      light.name = r_.string(j, "name", where);
+      light.type = r_.string(j, "type", where);
+      light.color = r_.numbers<3>(j, "color", where, light.color);
+      light.intensity = r_.number(j, "intensity", where, 1.0);
+      light.range = r_.number(j, "range", where, 0.0);
+      if (const Json* spot = r_.member(j, "spot")) {
+        r_.object(*spot, where + ".spot");
+        light.inner_cone = r_.number(*spot, "innerConeAngle", where + ".spot", 0.0);
+        light.outer_cone = r_.number(*spot, "outerConeAngle", where + ".spot", light.outer_cone);
+      }
+      doc_.lights.push_back(light);
+    }
+  }
+
+  Reader r_;
+  const MemoryBudget& budget_;
+  Document doc_;
+  Json root_;
+  std::optional<std::vector<std::uint8_t>> binary_chunk_;
+  std::map<std::string, std::size_t> counts_;
+};
+
+}  // namespace
+
+std::size_t component_size(int component_type) {
+  switch (component_type) {
+    case kByte:
+    case kUnsignedByte: return 1;
+    case kShort:
+    case kUnsignedShort: return 2;
+    case kUnsignedInt:
+    case kFloat: return 4;
+    default: return 0;
+  }
+}
+
+std::string format_bytes(double bytes) {
+  char text[64];
+  if (bytes >= 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
+  else if (bytes >= 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", bytes / (1024.0 * 1024.0));
+  else if (bytes >= 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
+  else std::snprintf(text, sizeof text, "%.0f bytes", bytes);
+  return text;
+}
+
+MemoryBudget::MemoryBudget(std::size_t limit_bytes) : limit_(limit_bytes ? limit_bytes : memory_available()) {}
+
+void MemoryBudget::require(std::size_t bytes, const std::string& what) const {
+  if (bytes <= limit_) return;
+  throw ImportError(file_ + ": " + what + " needs " + format_bytes(static_cast<double>(bytes)) + ", more than the " +
+                    format_bytes(static_cast<double>(limit_)) + " of memory available");
+}
+
+std::size_t MemoryBudget::bytes(std::size_t count, std::size_t size, const std::string& what) const {
+  if (size != 0 && count > std::numeric_limits<std::size_t>::max() / size) {
+    throw ImportError(file_ + ": " + what + " needs " + std::to_string(count) + " x " + std::to_string(size) + " bytes, more than memory can hold");
+  }
+  require(count * size, what);
+  return count * size;
+}
+
+Document read_document(const std::filesystem::path& path, const MemoryBudget& budget) {
+  return DocumentReader(path, budget).read();
+}
+
+std::string image_uri_problem(const Document& document, const std::string& uri) {
+  if (const auto payload = data_uri_payload(uri)) {
+    std::vector<std::uint8_t> ignored;
+    return base64_decode(*payload, ignored) ? "" : "its data URI is not valid base64";
+  }
+  if (uri.rfind("data:", 0) == 0) return "its data URI is not base64";
+  const fs::path file = uri_path(document.path, uri);
+  if (file.empty()) return "it is not a local file (Atrium downloads nothing)";
+  std::error_code ec;
+  return fs::is_regular_file(file, ec) ? "" : "the file is missing or unreadable";
+}
+
+std::vector<std::uint8_t> read_image_uri(const Document& document, const std::string& uri, const MemoryBudget& budget, std::string& error) {
+  std::vector<std::uint8_t> bytes;
+  if (const auto payload = data_uri_payload(uri)) {
+    if (base64_size(*payload) > budget.limit()) {
+      error = "its data URI needs " + format_bytes(static_cast<double>(base64_size(*payload)));
+      return {};
+    }
+    if (!base64_decode(*payload, bytes)) error = "its data URI is not valid base64";
+    return bytes;
+  }
+  if (uri.rfind("data:", 0) == 0) {
+    error = "its data URI is not base64";
+    return {};
+  }
+  const fs::path file = uri_path(document.path, uri);
+  if (file.empty()) {
+    error = "it is not a local file (Atrium downloads nothing)";
+    return {};
+  }
+  std::error_code ec;
+  const std::uintmax_t size = fs::is_regular_file(file, ec) ? fs::file_size(file, ec) : 0;
+  if (ec || !fs::is_regular_file(file, ec)) {
+    error = "the file is missing or unreadable";
+    return {};
+  }
+  if (size > budget.limit()) {
+    error = "the file has " + format_bytes(static_cast<double>(size)) + ", more than the memory available";
+    return {};
+  }
+  if (!read_file_prefix(file, static_cast<std::size_t>(size), bytes, error)) return {};
+  return bytes;
+}
+
+}  // namespace atrium::assets::gltf

@@ -1,0 +1,41 @@
+#include "systems/bounds.hpp"
+
+#include <vector>
+
+#include "assets/asset_manager.hpp"
+#include "components/bounds.hpp"
+#include "components/mesh_instance.hpp"
+#include "components/transform.hpp"
+
+namespace atrium {
+
+void update_bounds(ecs::Registry& registry) {
+  const auto& assets = registry.resource<assets::AssetManager>();
+  if (!registry.try_resource<SceneBounds>()) registry.set_resource<SceneBounds>();
+  assets::Bounds scene;
+  std::vector<ecs::Entity> missing;
+  registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform&, const MeshInstance&) {
+    if (!registry.has<WorldBounds>(entity)) missing.push_back(entity);
+  });
+  for (const ecs::Entity entity : missing) registry.add<WorldBounds>(entity);
+  registry.view<Transform, MeshInstance, WorldBounds>().each([&](const Transform& transform, const MeshInstance& instance,
+                                                                 WorldBounds& bounds) {
+    assets::Bounds box;
+    const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
+    if (instance.mesh < asset.meshes.size()) {
+      const glm::mat4 model = to_matrix(transform);
+      for (const assets::Primitive& p : asset.meshes[instance.mesh].primitives) {
+        if (!p.indices.empty()) box.add_box(model, p.bounds_min, p.bounds_max);
+      }
+    }
+    bounds = {box.min, box.max, box.empty};
+    if (box.empty) return;
+    scene.add(box.min);
+    scene.add(box.max);
+  });
+  registry.resource<SceneBounds>() = {scene.min, scene.max, scene.empty};
+}
+
+void register_bounds(ecs::Scheduler& scheduler) { scheduler.add(ecs::Phase::PostUpdate, "bounds", update_bounds); }
+
+}  // namespace atrium
