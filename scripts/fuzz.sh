@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (build-fuzz/) and runs each for
-# SECONDS (default 60), seeded with ../shared/testdata/gltf, scenes/ and the
+# SECONDS (default 60), seeded with ../shared/testdata/gltf, tests/data/gltf-tools
+# (meshopt and Draco files other tools wrote), scenes/ and the
 # regression inputs in tests/fuzz/regressions/. A crash leaves its input in
 # build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
 # to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
@@ -21,8 +22,10 @@ for target in scene_file gltf; do
   cp tests/fuzz/regressions/$target/* "$seeds"/ 2>/dev/null || true
   if [ "$target" = scene_file ]; then
     cp scenes/*.json tests/data/*.json "$seeds"/
-  elif [ -d "$testdata" ]; then
-    find "$testdata" \( -name '*.gltf' -o -name '*.glb' \) -size -2M -exec cp --backup=numbered {} "$seeds"/ \;
+  else
+    # Files other tools wrote: meshopt and Draco streams for the decoders.
+    find tests/data/gltf-tools -name '*.glb' -size -200k -exec cp --backup=numbered {} "$seeds"/ \;
+    [ -d "$testdata" ] && find "$testdata" \( -name '*.gltf' -o -name '*.glb' \) -size -2M -exec cp --backup=numbered {} "$seeds"/ \;
   fi
   echo "fuzzing $target for ${seconds}s ($(ls "$seeds" | wc -l) seeds)"
   # The seeds are read once; new inputs go to the working corpus. Inputs that

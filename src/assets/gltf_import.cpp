@@ -11,11 +11,9 @@
 #include <new>
 #include <thread>
 
-#define GLM_ENABLE_EXPERIMENTAL
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <glm/gtx/matrix_decompose.hpp>
 #include <stb_image.h>
 
 #include "assets/gltf_compression.hpp"
@@ -695,13 +693,12 @@ class Importer {
   void add_instance(const MeshAsset& asset, int mesh, const glm::mat4& world, const std::string& where) {
     SceneInstance instance;
     instance.mesh = static_cast<std::uint32_t>(mesh);
-    glm::vec3 skew;
-    glm::vec4 perspective;
-    if (!glm::decompose(world, instance.transform.scale, instance.transform.rotation, instance.transform.position, skew, perspective) ||
-        !finite(instance.transform.position) || !finite(instance.transform.scale)) {
+    const std::optional<Transform> transform = from_matrix(world);
+    if (!transform) {
       skipped_instances_.add(1, where);
       return;
     }
+    instance.transform = *transform;
     result_.instances.push_back(instance);
     for (const Primitive& p : asset.meshes[static_cast<std::size_t>(mesh)].primitives) {
       if (!p.indices.empty()) bounds_.add_box(world, p.bounds_min, p.bounds_max);
@@ -749,7 +746,7 @@ class Importer {
     result_.empty = bounds_.empty;
     if (skipped_instances_.count > 0) {
       warn(skipped_instances_.where("nodes") + ": " + std::to_string(skipped_instances_.count) +
-           " instances have a transform that is not finite or cannot be decomposed; they are skipped");
+           " instances have a transform with a zero or non-finite scale; they are skipped");
     }
   }
 

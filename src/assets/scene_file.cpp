@@ -189,11 +189,10 @@ void grow_bounds(SceneDescription& scene, glm::vec3 lo, glm::vec3 hi, bool& any)
 void add_model(SceneDescription& scene, const GltfImport& model, const glm::mat4& placement, bool& any_bounds) {
   for (SceneInstance instance : model.instances) {
     instance.asset = model.asset;
-    const glm::mat4 world = placement * to_matrix(instance.transform);
-    instance.transform.position = glm::vec3(world[3]);
-    instance.transform.rotation = glm::quat_cast(glm::mat3(placement)) * instance.transform.rotation;
-    instance.transform.scale *= glm::vec3(glm::length(glm::vec3(placement[0])), glm::length(glm::vec3(placement[1])),
-                                          glm::length(glm::vec3(placement[2])));
+    // Placement scales are positive (checked when read), so this decomposes.
+    const std::optional<Transform> placed = from_matrix(placement * to_matrix(instance.transform));
+    if (!placed) continue;
+    instance.transform = *placed;
     scene.instances.push_back(instance);
   }
   for (SceneLight light : model.lights) {
@@ -217,23 +216,32 @@ void merge_report(LoadReport& report, const GltfImport& model) {
 
 }  // namespace
 
-// Each outside view looks at the centre from a direction with a part along
-// every axis (azimuth from +Z towards +X, elevation above the horizon), so a
-// flat model in any axis plane is never seen edge-on; the bounding sphere
-// fills the 60-degree field of view.
+// Each outside view looks at the centre from a direction with a part of at
+// least a third along every axis (azimuth from +Z towards +X, elevation above
+// the horizon), so a flat model in any axis plane is seen at 20 degrees or
+// more, never edge-on; each stands as close as lets the whole box fit a
+// 60-degree vertical field of view at 4:3 or wider, with a margin.
 std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
   const glm::vec3 centre = 0.5f * (lo + hi);
   const glm::vec3 size = hi - lo;
   const float reach = std::max({size.x, size.y, size.z, 1e-6f});
-  const float radius = std::max(0.5f * glm::length(size), 1e-6f);
-  const float distance = radius / std::sin(glm::radians(30.0f)) * 1.05f;
   auto look_at = [&](const char* name, glm::vec3 from) {
     const glm::vec3 d = glm::normalize(centre - from);
     return NamedView{name, from, glm::degrees(std::atan2(d.x, -d.z)), glm::degrees(std::asin(glm::clamp(d.y, -1.0f, 1.0f)))};
   };
+  const float tan_y = std::tan(glm::radians(30.0f)) * 0.9f, tan_x = tan_y * 4.0f / 3.0f;
   auto around = [&](const char* name, float azimuth_degrees, float elevation_degrees) {
     const float a = glm::radians(azimuth_degrees), e = glm::radians(elevation_degrees);
-    return look_at(name, centre + distance * glm::vec3(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e)));
+    const glm::vec3 back(std::sin(a) * std::cos(e), std::sin(e), std::cos(a) * std::cos(e));  // centre to camera
+    const glm::vec3 right = glm::normalize(glm::cross(-back, glm::vec3(0, 1, 0)));
+    const glm::vec3 up = glm::cross(right, -back);
+    float distance = 1e-6f * reach;
+    for (int corner = 0; corner < 8; ++corner) {
+      const glm::vec3 r = glm::vec3((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z) - centre;
+      const float towards = glm::dot(r, back);
+      distance = std::max({distance, towards + std::abs(glm::dot(r, right)) / tan_x, towards + std::abs(glm::dot(r, up)) / tan_y});
+    }
+    return look_at(name, centre + distance * back);
   };
   // Inside a flat model there is nothing around the centre: stand off its
   // plane instead, looking back at it.
@@ -245,7 +253,7 @@ std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
     offset[(thinnest + 1) % 3] = 0.2f * reach;
     inside = look_at("inside", centre + offset);
   }
-  return {around("front", 20.0f, 25.0f), around("side", 70.0f, 20.0f), around("corner", 225.0f, 35.0f), around("top", 30.0f, 70.0f),
+  return {around("front", 25.0f, 30.0f), around("side", 65.0f, 25.0f), around("corner", 225.0f, 35.0f), around("top", 45.0f, 60.0f),
           inside};
 }
 

@@ -502,16 +502,26 @@ TEST(GltfFixture, MeshoptCompressedBuffersAreDecoded) {
                                                    {"byteStride", stride}, {"count", count}, {"mode", mode}};
     return static_cast<int>(f.model().bufferViews.size() - 1);
   };
+  // INDICES mode (an index sequence, as encoders write for non-triangle or
+  // unordered lists), 16-bit: the same quad, its second triangle first.
+  const std::vector<std::uint16_t> sequence{0, 2, 3, 0, 1, 2};
+  std::vector<std::uint8_t> sequence_stream(meshopt_encodeIndexSequenceBound(6, 4));
+  const std::vector<std::uint32_t> sequence32(sequence.begin(), sequence.end());
+  sequence_stream.resize(meshopt_encodeIndexSequence(sequence_stream.data(), sequence_stream.size(), sequence32.data(), 6));
   const int position_view = compressed(vertex_stream, 12, 4, "ATTRIBUTES");
   const int index_view = compressed(index_stream, 4, 6, "TRIANGLES");
+  const int sequence_view = compressed(sequence_stream, 2, 6, "INDICES");
   tinygltf::Buffer fallback;
-  fallback.data.resize(12 * 4 + 4 * 6);
+  fallback.data.resize(12 * 4 + 4 * 6 + 2 * 6);
   f.model().buffers.push_back(fallback);
   tinygltf::Primitive p;
   p.attributes["POSITION"] = f.accessor(position_view, 0, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, 4);
   p.indices = f.accessor(index_view, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, 6);
   p.mode = TINYGLTF_MODE_TRIANGLES;
   f.mesh(p);
+  tinygltf::Primitive sequenced = p;
+  sequenced.indices = f.accessor(sequence_view, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
+  f.mesh(sequenced);
   AssetManager assets;
   const GltfImport imported = f.import("meshopt", assets, false, [&](nlohmann::json& json) {
     for (const auto& [view, extension] : extensions) json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"] = extension;
@@ -521,6 +531,10 @@ TEST(GltfFixture, MeshoptCompressedBuffersAreDecoded) {
   ASSERT_EQ(q.size(), 6u);
   const glm::vec3 expected[] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(q[i].position, expected[i]) << i;
+  const std::vector<Vertex>& from_sequence = only_vertices(assets, imported, 1);
+  ASSERT_EQ(from_sequence.size(), 6u);
+  const glm::vec3 expected_sequence[] = {{0, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0, 0, 0}, {1, 0, 0}, {1, 1, 0}};
+  for (std::size_t i = 0; i < 6; ++i) EXPECT_EQ(from_sequence[i].position, expected_sequence[i]) << "INDICES " << i;
 }
 
 TEST(GltfFixture, SponzaStandInManyMaterialsShareFewImages) {

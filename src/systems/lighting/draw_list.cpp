@@ -19,6 +19,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     std::uint32_t first_index;
     std::int32_t base_vertex;
     const assets::Material* material;
+    bool mirrored;
     auto operator<=>(const Key&) const = default;
   };
   std::map<Key, std::size_t> group_of;
@@ -31,6 +32,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     InstanceData data;
     data.model = to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
+    const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
     const auto& primitives = asset.meshes[instance.mesh].primitives;
     for (std::size_t p = 0; p < primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
@@ -39,6 +41,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       item.vertex_array = gpu_asset.vertex_array.id();
       item.range = gpu_asset.meshes[instance.mesh][p];
       item.material = &asset.materials.at(primitive.material);
+      item.mirrored = mirrored;
       list.triangles += primitive.indices.size() / 3;
       if (item.material->alpha_mode == assets::AlphaMode::Blend) {
         const glm::vec3 centre = 0.5f * (primitive.bounds_min + primitive.bounds_max);
@@ -48,7 +51,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         list.blended.push_back(item);
         continue;
       }
-      const Key key{item.vertex_array, item.range.first_index, item.range.base_vertex, item.material};
+      const Key key{item.vertex_array, item.range.first_index, item.range.base_vertex, item.material, item.mirrored};
       const auto [it, added] = group_of.try_emplace(key, list.opaque.size());
       if (added) {
         list.opaque.push_back(item);
@@ -110,12 +113,14 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
       if (m.double_sided) glDisable(GL_CULL_FACE);
       else glEnable(GL_CULL_FACE);
     }
+    glFrontFace(item.mirrored ? GL_CW : GL_CCW);
     glDrawElementsInstancedBaseVertexBaseInstance(
         GL_TRIANGLES, static_cast<GLsizei>(item.range.index_count), GL_UNSIGNED_INT,
         reinterpret_cast<const void*>(static_cast<std::uintptr_t>(item.range.first_index) * sizeof(std::uint32_t)),
         static_cast<GLsizei>(item.instance_count), item.range.base_vertex, item.first_instance);
   }
   glEnable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
   glBindVertexArray(0);
   glBindSamplers(0, kMaterialTextureSlots, nullptr);
 }

@@ -37,6 +37,9 @@ struct DrawItem {
   const assets::Material* material = nullptr;
   std::uint32_t first_instance = 0;  // into DrawList::instances
   std::uint32_t instance_count = 1;
+  // The instances' transforms mirror (negative determinant): glTF then takes
+  // clockwise triangles as front faces.
+  bool mirrored = false;
   float view_depth = 0.0f;  // blended items: distance along the view axis to the bounds' centre
 };
 
@@ -51,9 +54,10 @@ struct DrawList {
                                        const assets::GpuAssets& gpu, const glm::mat4& view);
 
 // Issues one instanced draw per item with `program`: sets the material
-// uniforms, binds the material's textures to units 0-4, and disables back-face
-// culling for double-sided materials. The frame's instance buffer must be bound
-// at kInstanceStorageBinding. Leaves culling enabled on return.
+// uniforms, binds the material's textures to units 0-4, disables back-face
+// culling for double-sided materials and turns the front face for mirrored
+// items. The frame's instance buffer must be bound at kInstanceStorageBinding.
+// Leaves culling enabled and counter-clockwise front faces on return.
 void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items);
 
 struct FrameContext;
