@@ -4,6 +4,7 @@
 // discarded here too, or they would hide what is behind their holes.
 #include "common/frame.glsl"
 #include "common/material.glsl"
+#include "common/fragment_count.glsl"
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -13,6 +14,7 @@ in vec2 v_uv1;
 in vec4 v_color;
 
 void main() {
+  count_fragment();
   if (u_alpha_cutoff >= 0.0) {
     Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
     if (s.alpha < u_alpha_cutoff) discard;

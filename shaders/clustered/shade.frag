@@ -3,6 +3,7 @@
 // evaluates its material and only its cluster's lights.
 #include "common/frame.glsl"
 #include "common/material.glsl"
+#include "common/fragment_count.glsl"
 #include "common/cluster_shading.glsl"
 
 #ifdef COUNT_LIGHTS
@@ -19,6 +20,7 @@ in vec4 v_color;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+  count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
   if (s.alpha < u_alpha_cutoff) discard;
   out_color = vec4(shade_cluster_lights(s, gl_FragCoord.xy), s.alpha);

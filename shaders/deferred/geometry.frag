@@ -4,6 +4,7 @@
 // Opaque and masked geometry only; blended geometry is drawn forward later.
 #include "common/frame.glsl"
 #include "common/material.glsl"
+#include "common/fragment_count.glsl"
 #define GBUFFER_WRITE
 #include "common/gbuffer.glsl"
 
@@ -15,6 +16,7 @@ in vec2 v_uv1;
 in vec4 v_color;
 
 void main() {
+  count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
   if (s.alpha < u_alpha_cutoff) discard;
   write_gbuffer(s);

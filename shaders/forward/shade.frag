@@ -5,6 +5,7 @@
 // deferred techniques draw blended geometry with it too.
 #include "common/frame.glsl"
 #include "common/material.glsl"
+#include "common/fragment_count.glsl"
 #include "common/shading.glsl"
 
 // Counting has side effects, which make GL run the shader before the depth and
@@ -23,6 +24,7 @@ in vec4 v_color;
 layout(location = 0) out vec4 out_color;
 
 void main() {
+  count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
   if (s.alpha < u_alpha_cutoff) discard;
   out_color = vec4(shade_all_lights(s), s.alpha);

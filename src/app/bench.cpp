@@ -130,7 +130,7 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
-                 bench_radius(options, lights)});
+                 bench_radius(options, lights), 0, options.camera});
     std::vector<int> views = options.views;
     if (views.empty()) {
       for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);

@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "assets/scene.hpp"
 #include "gfx/pass_timer.hpp"
 #include "systems/lighting/technique_options.hpp"
 
@@ -23,6 +24,7 @@ struct BenchOptions {
   std::vector<std::string> modes;            // empty: every mode in the table
   std::vector<std::uint32_t> light_counts{10, 50, 110, 1024};
   std::vector<int> views;                    // empty: every stored view
+  std::optional<assets::NamedView> camera;   // replaces the scene's views (--camera)
   glm::ivec2 size{320, 180};
   int frames = 30;
   int warmup = 5;

@@ -146,7 +146,9 @@ std::string help_text() {
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
          "                  emissive, depth, light-volumes (outlines), heatmap (lights\n"
          "                  evaluated per pixel in the current mode), light-lists (lights in\n"
-         "                  each pixel's tile or cluster list) or depth-slices (cluster slices)\n"
+         "                  each pixel's tile or cluster list), depth-slices (cluster slices)\n"
+         "                  or fragments (fragments the mode's geometry passes rasterise per\n"
+         "                  pixel: overdraw, a camera in foliage)\n"
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
@@ -155,6 +157,9 @@ std::string help_text() {
          "  --max-texture-size N  textures wider or taller than N pixels are downscaled\n"
          "                  (default: what the GL context allows, GL_MAX_TEXTURE_SIZE)\n"
          "  --view K        stored view 1..5 (default 1)\n"
+         "  --camera X,Y,Z,YAW,PITCH  render, compare, bench, window: look from here instead\n"
+         "                  of the stored views (metres; degrees, yaw 0 looks along -Z, 90\n"
+         "                  along +X; pitch up > 0). The window's c key prints the camera.\n"
          "  --size WxH      image or window size in pixels (default 1280x720)\n"
          "  --out FILE.png  render: where to write the image\n"
          "  --frames N      window: quit after N frames (for scripted runs)\n"
@@ -244,6 +249,12 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
       options.max_texture_size = parse_number<int>("--max-texture-size", value(), 1, 65536);
     } else if (arg == "--view") {
       options.view = parse_number<int>("--view", value(), 1, 1000);
+    } else if (arg == "--camera") {
+      const std::string_view text = value();
+      options.camera = assets::parse_camera_argument(text);
+      if (!options.camera) {
+        throw UsageError("--camera expects X,Y,Z,YAW,PITCH (metres, then degrees; pitch from -90 to 90), got '" + std::string(text) + "'");
+      }
     } else if (arg == "--size") {
       options.size = parse_size(value());
     } else if (arg == "--out") {
@@ -272,6 +283,10 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     throw UsageError("--debug-view is for `atrium render` and the window");
   }
   if (options.command != Command::Window && options.frames) throw UsageError("--frames is for the window");
+  if (options.camera && options.view != 1) throw UsageError("--camera replaces the scene's views; --view does not apply");
+  if (options.camera && options.command == Command::Bench && options.bench.views.size() > 0) {
+    throw UsageError("--camera replaces the scene's views; --views does not apply");
+  }
   if (options.mode) {
     try {
       require_known_mode(*options.mode);
@@ -285,7 +300,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius, options.max_texture_size};
+          options.light_radius, options.max_texture_size, options.camera};
 }
 
 namespace {
@@ -309,6 +324,20 @@ int run_render(const CliOptions& options) {
               stats.triangles, stats.draw_calls, context->info().renderer.c_str());
   if (options.debug_view == "heatmap") {
     std::printf("light evaluations per pixel: %.2f on average\n", stats.light_evaluations_per_pixel);
+  }
+  if (options.debug_view == "fragments") {
+    std::printf("fragments rasterised per pixel by the geometry passes: %.2f on average\n", stats.fragments_per_pixel);
+  }
+  if (world.renderer().timer().counts_fragments()) {
+    // The frame's fragments per pass: overdraw and expensive cameras show here.
+    std::string passes;
+    const double pixels = static_cast<double>(options.size.x) * options.size.y;
+    for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
+      char text[96];
+      std::snprintf(text, sizeof text, "%s%s %.2f", passes.empty() ? "" : ", ", pass.name.c_str(), static_cast<double>(pass.fragments) / pixels);
+      passes += text;
+    }
+    std::printf("fragments shaded per pixel: %s\n", passes.c_str());
   }
   if (stats.light_list_entries > 0) {
     std::printf("light lists: %u entries, %u overflowed frames (the list grew and was filled again)\n",
@@ -388,6 +417,7 @@ int run_bench_command(const CliOptions& options) {
   bench.size = options.size;
   bench.shading = options.shading;
   bench.technique_options = options.technique_options;
+  bench.camera = options.camera;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   ProgressBar bar("bench");
   const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });

@@ -42,6 +42,7 @@ struct CliOptions {
   std::optional<float> light_radius;  // --light-radius: one radius for every point and spot light
   int max_texture_size = 0;           // --max-texture-size; 0: the context's limit
   int view = 1;
+  std::optional<assets::NamedView> camera;  // --camera X,Y,Z,YAW,PITCH: replaces the scene's views
   glm::ivec2 size{1280, 720};
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames

@@ -11,10 +11,13 @@
 #include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "assets/scene_file.hpp"
+#include "components/camera.hpp"
 #include "components/demo.hpp"
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
+#include "components/transform.hpp"
 #include "gfx/context.hpp"
 #include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
@@ -42,6 +45,15 @@ std::string step_name(const std::vector<std::string>& names, const std::string& 
   const auto found = std::find(names.begin(), names.end(), current);
   const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
   return names[static_cast<std::size_t>(((index + step) % count + count) % count)];
+}
+
+// Where the camera is, as a line to paste into a scene file's views and as a
+// --camera value, so that users can author views by flying to them.
+void say_camera(World& world) {
+  world.registry().view<Transform, Camera, CameraAngles>().each([](const Transform& t, const Camera&, const CameraAngles& angles) {
+    const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
+    say("camera: --camera " + assets::camera_argument(here) + "  view: " + assets::view_json(here));
+  });
 }
 
 void set_debug_view(World& world, const std::string& view) {
@@ -99,6 +111,7 @@ void handle_keys(World& world, gfx::WindowContext& context) {
         say(overlay.vsync ? "vsync: on" : "vsync: off");
         break;
       case GLFW_KEY_F1: overlay.visible = !overlay.visible; break;
+      case GLFW_KEY_C: say_camera(world); break;
       default: break;
     }
   }

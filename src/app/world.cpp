@@ -126,6 +126,7 @@ World::World(assets::AssetManager assets, assets::SceneDescription scene, const 
 }
 
 void World::start(const WorldOptions& options) {
+  if (options.camera) scene_.views = {*options.camera};
   const auto upload_start = std::chrono::steady_clock::now();
   auto& gpu = registry_.set_resource<assets::GpuAssets>(options.max_texture_size);
   for (std::string& warning : gpu.upload(registry_.resource<assets::AssetManager>())) {

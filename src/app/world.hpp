@@ -39,6 +39,8 @@ struct WorldOptions {
   // The widest and tallest texture uploaded (larger ones are downscaled); 0:
   // what the context allows.
   int max_texture_size = 0;
+  // --camera: this one view replaces the scene's views.
+  std::optional<assets::NamedView> camera;
 };
 
 class World {

@@ -1,7 +1,9 @@
 #include "assets/scene_file.hpp"
 
-#include <cstdio>
+#include <array>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 
@@ -255,6 +257,36 @@ std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
   }
   return {around("front", 25.0f, 30.0f), around("side", 65.0f, 25.0f), around("corner", 225.0f, 35.0f), around("top", 45.0f, 60.0f),
           inside};
+}
+
+std::string view_json(const NamedView& view) {
+  char text[256];
+  std::snprintf(text, sizeof text, "\"position\": [%.3f, %.3f, %.3f], \"yaw_degrees\": %.2f, \"pitch_degrees\": %.2f }",
+                view.position.x, view.position.y, view.position.z, view.yaw_degrees, view.pitch_degrees);
+  return "{ \"name\": " + json(view.name).dump() + ", " + text;
+}
+
+std::string camera_argument(const NamedView& view) {
+  char text[160];
+  std::snprintf(text, sizeof text, "%.3f,%.3f,%.3f,%.2f,%.2f", view.position.x, view.position.y, view.position.z, view.yaw_degrees,
+                view.pitch_degrees);
+  return text;
+}
+
+std::optional<NamedView> parse_camera_argument(std::string_view text) {
+  std::array<float, 5> values{};
+  std::size_t start = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::size_t comma = text.find(',', start);
+    if ((comma == std::string_view::npos) != (i + 1 == values.size())) return std::nullopt;
+    const std::string number(text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+    char* end = nullptr;
+    values[i] = std::strtof(number.c_str(), &end);
+    if (number.empty() || end != number.c_str() + number.size() || !std::isfinite(values[i])) return std::nullopt;
+    start = comma + 1;
+  }
+  if (values[4] < -90.0f || values[4] > 90.0f) return std::nullopt;
+  return NamedView{"camera", glm::vec3(values[0], values[1], values[2]), values[3], values[4]};
 }
 
 SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report,

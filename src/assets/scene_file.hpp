@@ -8,6 +8,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
@@ -30,6 +31,15 @@ struct LoadReport {
 // Throws SceneFileError (bad JSON or values, missing models) or ImportError.
 [[nodiscard]] SceneDescription load_scene_file(const std::filesystem::path& path, AssetManager& assets, LoadReport& report,
                                                const ProgressCallback& progress = {});
+
+// A view as a line for a scene file's "views" list (docs/scene-format.md):
+// {"name": ..., "position": [x, y, z], "yaw_degrees": ..., "pitch_degrees": ...}
+[[nodiscard]] std::string view_json(const NamedView& view);
+// The same view as the value of --camera: "X,Y,Z,YAW,PITCH".
+[[nodiscard]] std::string camera_argument(const NamedView& view);
+// Reads "X,Y,Z,YAW,PITCH" (metres, degrees; pitch from -90 to 90); nullopt
+// when the text is not five finite numbers in range.
+[[nodiscard]] std::optional<NamedView> parse_camera_argument(std::string_view text);
 
 // Five views of a box: four from outside, looking at its centre obliquely
 // (front, side, corner, top), and one inside it (off the plane of a flat box).

@@ -118,7 +118,13 @@ Buffer create_buffer() { return create_one<GlKind::Buffer>(glCreateBuffers); }
 Texture create_texture(GLenum target) { return create_one<GlKind::Texture>(glCreateTextures, target); }
 Framebuffer create_framebuffer() { return create_one<GlKind::Framebuffer>(glCreateFramebuffers); }
 VertexArray create_vertex_array() { return create_one<GlKind::VertexArray>(glCreateVertexArrays); }
-Query create_query(GLenum target) { return create_one<GlKind::Query>(glCreateQueries, target); }
+Query create_query(GLenum target) {
+  // Mesa 22.3 refuses glCreateQueries for pipeline-statistics targets
+  // (GL_INVALID_ENUM) yet counts them when begun; such a name comes from
+  // glGenQueries and takes its target at the first glBeginQuery.
+  if (target == GL_FRAGMENT_SHADER_INVOCATIONS_ARB) return create_one<GlKind::Query>(glGenQueries);
+  return create_one<GlKind::Query>(glCreateQueries, target);
+}
 Sampler create_sampler() { return create_one<GlKind::Sampler>(glCreateSamplers); }
 
 }  // namespace atrium::gfx

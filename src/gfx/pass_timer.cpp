@@ -5,7 +5,11 @@
 namespace atrium::gfx {
 
 PassTimer::PassTimer() : PassTimer(is_software_renderer() ? TimingMethod::CpuFinish : TimingMethod::GpuQueries) {}
-PassTimer::PassTimer(TimingMethod method) : method_(method) {}
+PassTimer::PassTimer(TimingMethod method)
+    : method_(method),
+      counts_fragments_(epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+  if (counts_fragments_) cpu_fragments_ = create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+}
 
 const char* PassTimer::method_name() const {
   return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer)";
@@ -48,14 +52,18 @@ void PassTimer::begin_pass(const std::string& name) {
   if (method_ == TimingMethod::CpuFinish) {
     glFinish();  // the previous work must not be charged to this pass
     current_.push_back({name, 0.0});
+    if (counts_fragments_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, cpu_fragments_.id());
     pass_start_ = std::chrono::steady_clock::now();
     return;
   }
   FrameQueries& frame = frames_[frame_ % kFramesInFlight];
-  if (frame.used == frame.passes.size()) frame.passes.push_back({name, create_query(GL_TIME_ELAPSED)});
+  if (frame.used == frame.passes.size()) {
+    frame.passes.push_back({name, create_query(GL_TIME_ELAPSED), counts_fragments_ ? create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB) : Query{}});
+  }
   QueryPass& pass = frame.passes[frame.used++];
   pass.name = name;
   glBeginQuery(GL_TIME_ELAPSED, pass.query.id());
+  if (counts_fragments_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, pass.fragments.id());
 }
 
 void PassTimer::end_pass() {
@@ -63,9 +71,16 @@ void PassTimer::end_pass() {
     glFinish();
     current_.back().milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass_start_).count();
+    if (counts_fragments_) {
+      glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+      GLuint64 fragments = 0;
+      glGetQueryObjectui64v(cpu_fragments_.id(), GL_QUERY_RESULT, &fragments);
+      current_.back().fragments = fragments;
+    }
     return;
   }
   glEndQuery(GL_TIME_ELAPSED);
+  if (counts_fragments_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
 
 // Reads back the oldest pending frame whose queries are all available.
@@ -79,9 +94,10 @@ void PassTimer::collect() {
     if (!available) return;
     std::vector<PassTime> times;
     for (std::size_t i = 0; i < frame.used; ++i) {
-      GLuint64 nanoseconds = 0;
+      GLuint64 nanoseconds = 0, fragments = 0;
       glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &nanoseconds);
-      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6});
+      if (counts_fragments_) glGetQueryObjectui64v(frame.passes[i].fragments.id(), GL_QUERY_RESULT, &fragments);
+      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6, fragments});
     }
     latest_ = std::move(times);
     frame.pending = false;

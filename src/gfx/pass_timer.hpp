@@ -2,7 +2,10 @@
 // queries that are read back a few frames later, so timing never stalls the
 // pipeline. Mesa's software rasterisers return wrong query values (measured
 // 30-300x too small on llvmpipe), so there each pass ends with glFinish and is
-// timed with a steady clock; method() says which is in use.
+// timed with a steady clock; method() says which is in use. Where the driver
+// counts pipeline statistics (GL 4.6 or ARB_pipeline_statistics_query, llvmpipe
+// included), each pass also counts its fragment shader invocations: the
+// fragments it shaded, overdraw and helper invocations included.
 #pragma once
 
 #include <array>
@@ -19,6 +22,7 @@ enum class TimingMethod { GpuQueries, CpuFinish };
 struct PassTime {
   std::string name;
   double milliseconds = 0.0;
+  std::uint64_t fragments = 0;  // fragment shader invocations; 0 without pipeline statistics
 };
 
 class PassTimer {
@@ -28,6 +32,8 @@ class PassTimer {
   explicit PassTimer(TimingMethod method);
 
   [[nodiscard]] TimingMethod method() const { return method_; }
+  // Whether passes count their fragment shader invocations.
+  [[nodiscard]] bool counts_fragments() const { return counts_fragments_; }
   [[nodiscard]] const char* method_name() const;
 
   void begin_frame();
@@ -59,6 +65,7 @@ class PassTimer {
   struct QueryPass {
     std::string name;
     Query query;
+    Query fragments;  // empty without pipeline statistics
   };
   struct FrameQueries {
     std::vector<QueryPass> passes;
@@ -69,6 +76,8 @@ class PassTimer {
   void collect();
 
   TimingMethod method_;
+  bool counts_fragments_;
+  Query cpu_fragments_;  // CpuFinish: the running pass's invocation count
   std::array<FrameQueries, kFramesInFlight> frames_;
   std::size_t frame_ = 0;
   std::vector<PassTime> current_;  // CpuFinish: the frame being timed

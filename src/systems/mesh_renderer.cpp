@@ -134,12 +134,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& settings = registry.resource<RendererSettings>();
   const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
   if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
-  const bool counting = debug_view == lighting::kHeatmapView;
+  const bool counting_lights = debug_view == lighting::kHeatmapView;
+  const bool counting_fragments = debug_view == lighting::kFragmentView;
+  const int counting = counting_lights ? 1 : counting_fragments ? 2 : 0;
   if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_) {
     const int model = lighting::shading_model_index(settings.shading);
     if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
     std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
-    if (counting) globals.push_back({"COUNT_LIGHTS"});
+    if (counting_lights) globals.push_back({"COUNT_LIGHTS"});
+    if (counting_fragments) globals.push_back({"COUNT_FRAGMENTS"});
     if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
     gpu_.shaders().set_global_defines(std::move(globals));
     shading_ = settings.shading;
@@ -183,7 +186,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const lighting::FrameContext frame{draws,      gpu,       lights.staging,  scene.background,
                                      timer_,     view.view, view.projection, view.near_plane,
                                      view.far_plane};
-  if (counting) debug_views().begin_counting();
+  if (counting) debug_views().begin_counting(debug_view);
   refuse_unbounded_loops(draws, lights.count);
   try {
     technique_->execute(frame, targets());
@@ -219,7 +222,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
   // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
     debug_views().draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
-    if (counting) stats_.light_evaluations_per_pixel = debug_views_->average_light_evaluations();
+    if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
+    if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
   }
 
   timer_.end_frame();

@@ -28,6 +28,7 @@ struct FrameStats {
   std::size_t triangles = 0;
   std::uint32_t lights = 0;
   double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
+  double fragments_per_pixel = 0.0;          // rasterised by geometry passes, while the fragments view is shown
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
   std::uint32_t light_list_overflows = 0;    // frames whose lists grew and were filled again
 };
@@ -80,7 +81,7 @@ class MeshRenderer {
   std::string mode_;
   std::string shading_;
   lighting::TechniqueOptions technique_options_;
-  bool counting_ = false;
+  int counting_ = 0;  // what the shaders count: 0 nothing, 1 lights, 2 fragments
   std::unique_ptr<lighting::DebugViews> debug_views_;
   bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;

@@ -31,6 +31,7 @@ const std::string& key_help() {
       "p             pause / resume the light animation\n"
       "b             quick benchmark of every mode from here (printed to stdout)\n"
       "F12           screenshot (PNG in the working folder)\n"
+      "c             print the camera as a scene-file view line and a --camera value\n"
       "r             reload shaders (a failing one keeps its old version)\n"
       "v             vsync on/off\n"
       "F1            hide / show this overlay\n"
@@ -114,9 +115,14 @@ void Overlay::statistics(ecs::Registry& registry) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
   }
   ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
-  if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+  // Fragments shaded per pixel tell a pass that draws too much (overdraw, a
+  // camera inside foliage) from one that shades expensively.
+  const bool fragments = renderer.timer().counts_fragments();
+  const double pixels = std::max(1.0, static_cast<double>(renderer.size().x) * renderer.size().y);
+  if (ImGui::BeginTable("passes", fragments ? 3 : 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("ms");
+    if (fragments) ImGui::TableSetupColumn("fragments/px");
     ImGui::TableHeadersRow();
     for (const gfx::PassTime& pass : renderer.timer().latest()) {
       ImGui::TableNextRow();
@@ -124,6 +130,10 @@ void Overlay::statistics(ecs::Registry& registry) {
       ImGui::TextUnformatted(pass.name.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.2f", pass.milliseconds);
+      if (fragments) {
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", static_cast<double>(pass.fragments) / pixels);
+      }
     }
     ImGui::EndTable();
   }

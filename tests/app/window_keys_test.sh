@@ -33,7 +33,7 @@ press 3; expect_line "^view: 3 lamps$"
 press F12; expect_line "^screenshot: "; deferred_view3=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
 press 1; expect_line "^view: 1 court$"
 
-for view in position normal albedo metallic-roughness emissive depth light-volumes heatmap light-lists depth-slices; do
+for view in position normal albedo metallic-roughness emissive depth light-volumes heatmap light-lists depth-slices fragments; do
   press g; expect_line "^debug view: $view$"
   if [ "$view" = normal ]; then press F12; expect_line "^screenshot: "; normal_view1=$(sed -n "${lines_seen}p" log | cut -d' ' -f2); fi
 done
@@ -46,6 +46,7 @@ press minus; expect_line "^lights: 16$"
 press b; expect_line "^benchmark: every mode"; expect_line "^\| lights \| forward \| deferred"
 press r; expect_line "^shaders: reloaded$"
 press h; expect_line "t / Shift\+t"
+press c; expect_line "^camera: --camera -?[0-9.]+,-?[0-9.]+,-?[0-9.]+,-?[0-9.]+,-?[0-9.]+  view: \{ \"name\": \"here\", \"position\": \["
 press v; expect_line "^vsync: off$"
 press F1; sleep 2
 xdotool getwindowname "$wid" | grep -Eq "^Atrium - deferred - [0-9]+ fps$" || fail "with the overlay hidden the title shows mode and fps (got '$(xdotool getwindowname "$wid")')"

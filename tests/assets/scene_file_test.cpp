@@ -152,6 +152,25 @@ TEST_F(SceneFile, MissingModelSaysHowToFetchIt) {
   EXPECT_NE(message.find("Sponza.gltf does not exist; fetch it with `scripts/fetch-scenes.sh sponza`"), std::string::npos) << message;
 }
 
+TEST_F(SceneFile, ThePrintedViewLineAndCameraValueGiveTheViewBack) {
+  // What the window's c key prints, pasted into a scene file or given to --camera.
+  const NamedView here{"here", glm::vec3(-3.25f, 1.5f, 12.125f), 97.5f, -12.25f};
+  const SceneDescription scene = load(R"({"models": [{"builtin": "atrium"}], "views": [)" + view_json(here) + "]}");
+  ASSERT_EQ(scene.views.size(), 1u);
+  EXPECT_EQ(scene.views[0].name, "here");
+  EXPECT_NEAR(glm::distance(scene.views[0].position, here.position), 0.0f, 1e-3f);
+  EXPECT_NEAR(scene.views[0].yaw_degrees, here.yaw_degrees, 0.05f);
+  EXPECT_NEAR(scene.views[0].pitch_degrees, here.pitch_degrees, 0.05f);
+  const std::optional<NamedView> parsed = parse_camera_argument(camera_argument(here));
+  ASSERT_TRUE(parsed);
+  EXPECT_NEAR(glm::distance(parsed->position, here.position), 0.0f, 1e-3f);
+  EXPECT_NEAR(parsed->yaw_degrees, here.yaw_degrees, 0.05f);
+  EXPECT_NEAR(parsed->pitch_degrees, here.pitch_degrees, 0.05f);
+  for (const char* bad : {"", "1,2,3,4", "1,2,3,4,5,6", "1,2,x,4,5", "1,2,3,4,91", "1,2,3,inf,5", "1,,3,4,5"}) {
+    EXPECT_FALSE(parse_camera_argument(bad)) << bad;
+  }
+}
+
 TEST_F(SceneFile, MissingFileIsNamed) {
   LoadReport report;
   EXPECT_THROW((void)load_scene_file(folder_ / "absent.json", assets_, report), SceneFileError);

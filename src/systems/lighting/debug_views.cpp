@@ -57,27 +57,28 @@ void DebugViews::draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& tar
   }
 }
 
-void DebugViews::begin_counting() {
+void DebugViews::begin_counting(int view) {
   const GLuint zero = 0;
   glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+  glBindImageTexture(view == kFragmentView ? 1 : 0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
 void DebugViews::draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
                       GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
   // Every view is a full-screen pass into the output; the G-buffer, depth and
   // outline views first fill their own G-buffer (and the depth buffer).
-  const bool reads_gbuffer = view != kHeatmapView && view != kLightListView && view != kDepthSliceView;
+  const bool reads_gbuffer = view != kHeatmapView && view != kFragmentView && view != kLightListView && view != kDepthSliceView;
   if (reads_gbuffer) gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
   glViewport(0, 0, size_.x, size_.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
-  if (view == kHeatmapView) {
+  if (view == kHeatmapView || view == kFragmentView) {
     glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     gfx::ShaderProgram& heatmap = gpu_.shaders().get({"post/fullscreen.vert", "debug/heatmap.frag"});
-    // The top of the map at twice the light count: forward's overdraw can exceed one pass over all lights.
-    heatmap.set("u_scale_max", 2.0f * static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
+    // Lights: the top of the map at twice the light count (forward's overdraw can
+    // exceed one pass over all lights). Fragments: at 64 per pixel.
+    heatmap.set("u_scale_max", view == kFragmentView ? 64.0f : 2.0f * static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
     glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
     heatmap.use();
     fullscreen_.draw();
@@ -103,7 +104,7 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
   fullscreen_.draw();
 }
 
-double DebugViews::average_light_evaluations() const {
+double DebugViews::average_count() const {
   std::vector<GLuint> counts(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   if (counts.empty()) return 0.0;
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);

@@ -1,10 +1,11 @@
 // Debug views (--debug-view, `g` in the window): each G-buffer target on its own,
 // depth, light-volume outlines over the lit image, a heatmap of the lights
 // evaluated per pixel by the current mode, the light count of each pixel's tile
-// or cluster, and the cluster depth slices. The G-buffer views run their own
-// geometry pass, so they work whatever the mode; the heatmap counts what the
-// mode's own shaders do (they are compiled with COUNT_LIGHTS while it is shown);
-// the light-lists view draws the lists the tiled and clustered modes built.
+// or cluster, the cluster depth slices, and the fragments the mode's geometry
+// passes rasterise per pixel. The G-buffer views run their own geometry pass, so
+// they work whatever the mode; the heatmap and the fragments view count what the
+// mode's own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while
+// shown); the light-lists view draws the lists the tiled and clustered modes built.
 #pragma once
 
 #include <array>
@@ -20,10 +21,11 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 10> kDebugViews{
+inline constexpr std::array<std::string_view, 11> kDebugViews{
     "position", "normal",        "albedo",  "metallic-roughness", "emissive",
-    "depth",    "light-volumes", "heatmap", "light-lists",        "depth-slices"};
-inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9;
+    "depth",    "light-volumes", "heatmap", "light-lists",        "depth-slices", "fragments"};
+inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
+                     kFragmentView = 10;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);
@@ -34,15 +36,16 @@ class DebugViews {
   DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets);
 
-  // Heatmap: zeroes the per-pixel counters and binds them to image unit 0 for
-  // the technique's shaders.
-  void begin_counting();
+  // Heatmap and fragments views: zeroes the per-pixel counters and binds them
+  // to the image unit the technique's counting shaders write (0 for lights, 1
+  // for fragments).
+  void begin_counting(int view);
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
   // image) after `technique` has drawn the frame.
   void draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
             GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max);
-  // Heatmap: light evaluations per pixel, averaged over the image.
-  [[nodiscard]] double average_light_evaluations() const;
+  // Heatmap and fragments views: the count per pixel, averaged over the image.
+  [[nodiscard]] double average_count() const;
 
   // The overlay's thumbnails: the G-buffer views (position, normal, albedo,
   // metallic-roughness, emissive, depth) of `gbuffer`, decoded as the debug
