@@ -1,21 +1,24 @@
 // scenes/sponza.json opened as a user who fetched Sponza opens it (the scene
 // file from the repository, the real Crytek Sponza from ../shared linked where
 // scripts/fetch-scenes.sh puts it): every texture loads, every view shows depth,
-// every mode draws forward's picture, and no view (nor a camera pressed against,
-// inside or just behind a wall, here and in the built-in scene) costs much more
-// than the others.
+// every mode draws forward's picture, and no camera pressed against, inside or
+// just behind a wall (here and in the built-in scene) shades many more fragments
+// than the stored views or stalls the frame.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 
 #include <gtest/gtest.h>
 
 #include "app/world.hpp"
+#include "assets/gpu_assets.hpp"
 #include "assets/image.hpp"
 #include "assets/scene_file.hpp"
 #include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
 #include "support/gl_test.hpp"
 #include "systems/camera.hpp"
 #include "systems/lighting/technique.hpp"
@@ -55,21 +58,14 @@ class SponzaScene : public testing::GlTest {
 };
 fs::path SponzaScene::root_;
 
-// Seconds for one frame, the fastest of three (a loaded machine only adds time).
-double frame_seconds(World& world) {
-  double best = 1e30;
-  for (int i = 0; i < 3; ++i) {
-    const auto start = std::chrono::steady_clock::now();
-    world.frame(0.0);
-    (void)world.renderer().read_output();  // waits for the frame
-    best = std::min(best, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  return best;
-}
-
-double median(std::vector<double> values) {
-  std::sort(values.begin(), values.end());
-  return values[values.size() / 2];
+// Fragment shader invocations of the latest frame, every pass together: what a
+// frame costs the rasteriser, counted exactly by the driver (pipeline statistics).
+std::uint64_t frame_fragments(World& world) {
+  world.frame(0.0);
+  (void)world.renderer().read_output();
+  std::uint64_t fragments = 0;
+  for (const gfx::PassTime& pass : world.renderer().timer().latest()) fragments += pass.fragments;
+  return fragments;
 }
 
 TEST_F(SponzaScene, LoadsEveryTexture) {
@@ -120,25 +116,43 @@ TEST_F(SponzaScene, EveryModeDrawsForwardsPictureFromEveryView) {
   }
 }
 
-// Against, inside and just behind walls, the frame costs what the stored views
-// cost within a small factor: Sponza's view 1 once took 80 s a frame (llvmpipe's
-// anisotropic filter on a leaf seen edge-on at the camera) where the others took 30 ms.
+// Against, inside and just behind walls, a frame shades no more fragments than
+// the stored views do, within a small factor, and finishes: Sponza's view 1 once
+// took 80 s a frame where the others took 30 ms (llvmpipe's anisotropic filter
+// on a leaf seen edge-on at the camera; see SoftwareRenderersSampleTrilinearly).
+// Fragment counts are exact, so the comparison holds on a loaded machine; the
+// time limit only catches a frame that never ends, two orders above a slow one.
 void expect_no_camera_costs_much_more(World& world, const std::vector<assets::NamedView>& awkward, const std::string& scene) {
-  std::vector<double> views;
+  ASSERT_TRUE(world.renderer().timer().counts_fragments()) << "the driver does not count fragments";
+  std::uint64_t most = 0;
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
     world.set_view(view);
-    views.push_back(frame_seconds(world));
+    most = std::max(most, frame_fragments(world));
   }
-  const double typical = median(views);
-  EXPECT_LT(*std::max_element(views.begin(), views.end()), 4.0 * typical) << scene << ": a stored view costs much more than the others";
+  ASSERT_GT(most, 0u);
+  constexpr double kFreezeSeconds = 20.0;
   for (const assets::NamedView& camera : awkward) {
     apply_view(world.registry(), camera);
     // Planes fitted afresh, as when the program starts there (--camera).
     world.registry().resource<ViewState>() = ViewState{};
-    const double seconds = frame_seconds(world);
-    EXPECT_LT(seconds, 4.0 * typical) << scene << " " << camera.name << ": " << seconds * 1000 << " ms against " << typical * 1000
-                                      << " ms for the median stored view";
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t fragments = frame_fragments(world);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(fragments, 2 * most) << scene << " " << camera.name << ": " << fragments << " fragments against " << most
+                                   << " for the costliest stored view";
+    EXPECT_LT(seconds, kFreezeSeconds) << scene << " " << camera.name;
   }
+}
+
+// The sampler every mipmapped material slot uses filters trilinearly on a
+// software renderer, where anisotropic filtering costs seconds per frame.
+TEST_F(SponzaScene, SoftwareRenderersSampleTrilinearly) {
+  World world(options());
+  if (!gfx::is_software_renderer()) GTEST_SKIP() << "a hardware renderer filters anisotropically";
+  GLfloat anisotropy = 0.0f;
+  glGetSamplerParameterfv(world.registry().resource<assets::GpuAssets>().sampler(assets::SamplerDesc{}), GL_TEXTURE_MAX_ANISOTROPY,
+                          &anisotropy);
+  EXPECT_EQ(anisotropy, 1.0f);
 }
 
 TEST_F(SponzaScene, NoCameraCostsMuchMoreThanTheStoredViews) {
