@@ -151,7 +151,7 @@ void BM_ImportLargeGltf(benchmark::State& state) {
   std::size_t images = 0, triangles = 0;
   for (auto _ : state) {
     assets::AssetManager assets;
-    const assets::GltfImport imported = assets::import_gltf(path, assets, {{}, threads});
+    const assets::ModelImport imported = assets::import_gltf(path, assets, {.decode_threads = threads});
     parse += imported.timings.parse_seconds;
     decode += imported.timings.decode_seconds;
     images = imported.images;

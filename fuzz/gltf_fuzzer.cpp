@@ -4,6 +4,7 @@
 // else is a bug.
 #include <cstring>
 
+#include "assets/gltf_import.hpp"
 #include "assets/scene_file.hpp"
 #include "fuzz_input.hpp"
 

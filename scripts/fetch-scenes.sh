@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Downloads the real scenes into the git-ignored assets/ folder and checks them.
 #   scripts/fetch-scenes.sh sponza   Crytek Sponza, glTF, from Khronos' glTF-Sample-Assets
-#   scripts/fetch-scenes.sh bistro   Amazon Lumberyard Bistro (exterior), from NVIDIA ORCA (FBX),
-#                                    converted to glTF binary with assimp
-# Needs network access; installs git, curl, unzip and assimp-utils when missing.
+#   scripts/fetch-scenes.sh bistro   Amazon Lumberyard Bistro v5.2 from NVIDIA ORCA, as shipped:
+#                                    FBX with DDS textures, opened directly (no conversion)
+# Needs network access; installs git, curl and unzip when missing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 assets=assets
@@ -41,21 +41,36 @@ fetch_sponza() {
   echo "Sponza is in $target; run: ./run.sh scenes/sponza.json"
 }
 
+# Bistro_v5_2.zip as NVIDIA's ORCA page serves it (no login), else the
+# casual-effects mirror; BISTRO_URL tries another address first. Whatever
+# answers must be exactly the archive: its size and SHA-256 are checked.
+bistro_size=894377473
+bistro_sha256=0d50e3c724c6c5da19f8eb99ad3f53e36fec37ffa2df9621f9ccf0603f3934e1
+
+is_bistro_zip() {
+  [ -f "$1" ] && [ "$(stat -c %s "$1")" -eq "$bistro_size" ] && [ "$(sha256sum "$1" | cut -d' ' -f1)" = "$bistro_sha256" ]
+}
+
 fetch_bistro() {
-  need curl:curl unzip:unzip assimp:assimp-utils
-  local target=$assets/bistro
-  # NVIDIA's Open Research Content Archive serves Bistro as FBX; BISTRO_URL overrides the address.
-  local url=${BISTRO_URL:-https://developer.download.nvidia.com/ORCA/BISTRO/Bistro_v5_2.zip}
-  local work; work=$(mktemp -d)
-  curl -fL --retry 3 -o "$work/bistro.zip" "$url"
-  unzip -q "$work/bistro.zip" -d "$work/bistro"
-  local fbx; fbx=$(find "$work/bistro" -iname 'BistroExterior.fbx' | head -n 1)
-  [ -n "$fbx" ] || { echo "fetch-scenes: BistroExterior.fbx is not in $url" >&2; exit 1; }
+  need curl:curl unzip:unzip
+  local target=$assets/bistro zip=$assets/bistro/Bistro_v5_2.zip
+  local urls=(${BISTRO_URL:+"$BISTRO_URL"} https://developer.nvidia.com/bistro https://developer.nvidia.com/downloads/bistro
+              https://casual-effects.com/g3d/data10/research/model/Amazon_Lumberyard_Bistro/Bistro_v5_2.zip)
   mkdir -p "$target"
-  (cd "$(dirname "$fbx")" && assimp export "$(basename "$fbx")" "$OLDPWD/$target/BistroExterior.glb" -fglb2)
-  rm -rf "$work"
-  check "$target/BistroExterior.glb" 50000000
-  echo "Bistro is in $target; run: ./run.sh scenes/bistro.json"
+  if ! is_bistro_zip "$zip"; then
+    for url in "${urls[@]}"; do
+      echo "fetch-scenes: downloading Bistro_v5_2.zip (894 MB) from $url"
+      if curl -fL --retry 3 -o "$zip.part" "$url" && mv "$zip.part" "$zip" && is_bistro_zip "$zip"; then break; fi
+      [ -f "$zip" ] && echo "fetch-scenes: what $url served is $(stat -c %s "$zip") bytes, not Bistro_v5_2.zip ($bistro_size bytes, SHA-256 ${bistro_sha256:0:12}...)" >&2
+      rm -f "$zip" "$zip.part"
+    done
+  fi
+  is_bistro_zip "$zip" || { echo "fetch-scenes: no address served Bistro_v5_2.zip; download it from https://developer.nvidia.com/bistro into $target and run this again" >&2; exit 1; }
+  unzip -q -o "$zip" -d "$target"
+  check "$target/Bistro_v5_2/BistroExterior.fbx" 50000000
+  local textures; textures=$(find "$target/Bistro_v5_2" -iname '*.dds' | wc -l)
+  [ "$textures" -ge 100 ] || { echo "fetch-scenes: expected Bistro's DDS textures in $target/Bistro_v5_2/Textures, found $textures" >&2; exit 1; }
+  echo "Bistro is in $target/Bistro_v5_2 (the archive stays beside it); run: ./run.sh scenes/bistro.json"
 }
 
 case "${1:-}" in

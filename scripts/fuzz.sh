@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (build-fuzz/) and runs each for
 # SECONDS (default 60), seeded with ../shared/testdata/gltf, tests/data/gltf-tools
-# (meshopt and Draco files other tools wrote), scenes/ and the
+# (meshopt and Draco files other tools wrote), tests/data/model-tools (DDS and
+# PNG textures), scenes/ and the
 # regression inputs in tests/fuzz/regressions/. A crash leaves its input in
 # build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
 # to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
@@ -11,17 +12,21 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 ./scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DATRIUM_FUZZ=ON >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer
+cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer texture_fuzzer
 testdata=../shared/testdata/gltf
 mkdir -p build-fuzz/crashes
 status=0
-for target in scene_file gltf; do
+for target in scene_file gltf texture; do
   corpus=build-fuzz/corpus/$target
   seeds=build-fuzz/seeds/$target
   rm -rf "$seeds" && mkdir -p "$corpus" "$seeds"
   cp tests/fuzz/regressions/$target/* "$seeds"/ 2>/dev/null || true
   if [ "$target" = scene_file ]; then
     cp scenes/*.json tests/data/*.json "$seeds"/
+  elif [ "$target" = texture ]; then
+    # DDS files ImageMagick wrote (BC1, BC3, uncompressed) and small PNGs.
+    cp tests/data/model-tools/*.dds "$seeds"/
+    find tests/data/model-tools -name '*.png' -size -64k -exec cp {} "$seeds"/ \;
   else
     # Files other tools wrote: meshopt and Draco streams for the decoders.
     find tests/data/gltf-tools -name '*.glb' -size -200k -exec cp --backup=numbered {} "$seeds"/ \;

@@ -17,6 +17,8 @@ uniform float u_normal_scale;
 uniform float u_occlusion_strength;
 uniform float u_alpha_cutoff;       // < 0 when the material is not alpha-masked
 uniform int u_has_normal_texture;
+uniform int u_normal_xy_only;       // a two-channel (BC5) normal map: z is rebuilt
+uniform int u_normal_green_down;    // DirectX's convention: green points down
 uniform int u_double_sided;
 uniform int u_unlit;                // KHR_materials_unlit
 // Per texture slot (base colour, metallic-roughness, normal, occlusion, emissive):
@@ -41,6 +43,8 @@ Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv0, vec
     vec3 t = normalize(tangent.xyz - n * dot(n, tangent.xyz));
     vec3 b = cross(n, t) * tangent.w;
     vec3 m = texture(u_normal_texture, slot_uv(2, uv0, uv1)).xyz * 2.0 - 1.0;
+    if (u_normal_xy_only != 0) m.z = sqrt(max(1.0 - dot(m.xy, m.xy), 0.0));
+    if (u_normal_green_down != 0) m.y = -m.y;
     m.xy *= u_normal_scale;
     n = normalize(mat3(t, b, n) * m);
   }

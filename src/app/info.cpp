@@ -35,7 +35,7 @@ SceneInfo gather_info(World& world, const std::string& scene) {
   });
   info.textures = assets.texture_count();
   for (std::size_t t = 0; t < assets.texture_count(); ++t) {
-    info.texture_bytes += assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)}).image.rgba.size();
+    info.texture_bytes += assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)}).bytes();
   }
   registry.view<LightColor>().each([&](ecs::Entity e, const LightColor&) {
     if (registry.has<DirectionalLight>(e)) ++info.directional_lights;
@@ -66,7 +66,7 @@ std::string format_info_text(const SceneInfo& i) {
                 "mesh assets  %zu with %zu meshes, %zu primitives and %zu vertices\n"
                 "drawn        %zu triangles\n"
                 "materials    %zu: %zu opaque, %zu mask, %zu blend\n"
-                "textures     %zu (%.1f MiB decoded)\n"
+                "textures     %zu (%.1f MiB in memory, compressed ones as stored)\n"
                 "lights       %zu: %zu point, %zu spot, %zu directional\n"
                 "bounds       %s\n"
                 "load time    parse %.3f s, decode %.3f s, upload %.3f s\n"

@@ -42,7 +42,7 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
   std::string extension = std::filesystem::path(options.scene).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
   try {
-    if (extension == ".gltf" || extension == ".glb") {
+    if (assets::is_model_file(options.scene)) {
       return assets::load_model_scene(options.scene, assets, options.lights.value_or(0), report, progress);
     }
     if (extension == ".json") {
@@ -60,7 +60,7 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
     throw InputError(e.what());
   }
   throw InputError(options.scene + ": unknown scene (expected the built-in scene '" + std::string(assets::kBuiltinSceneName) +
-                   "', a scene file .json, or a glTF model .gltf/.glb)");
+                   "', a scene file .json, or a model: .gltf, .glb, .obj, .fbx, ...)");
 }
 
 void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene, std::optional<float> radius) {

@@ -4,10 +4,12 @@
 // without a GL context.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
+#include "assets/dds.hpp"
 #include "assets/handles.hpp"
 #include "assets/image.hpp"
 #include "assets/mesh_asset.hpp"
@@ -18,8 +20,14 @@ enum class ColorSpace : std::uint8_t { Linear, Srgb };
 
 struct TextureData {
   std::string name;
-  Image image;
+  Image image;  // empty when the texture is block-compressed
   ColorSpace color_space = ColorSpace::Linear;
+  std::optional<CompressedImage> compressed;  // a DDS's blocks, uploaded as they are
+
+  [[nodiscard]] int width() const { return compressed ? compressed->width : image.width; }
+  [[nodiscard]] int height() const { return compressed ? compressed->height : image.height; }
+  // Bytes held on the CPU (and, roughly, on the GPU without the mip chain).
+  [[nodiscard]] std::size_t bytes() const { return compressed ? compressed->bytes() : image.rgba.size(); }
 };
 
 class AssetManager {

@@ -21,17 +21,6 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
 constexpr std::uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
 
-std::size_t memory_available() {
-  std::ifstream meminfo("/proc/meminfo");
-  std::string key;
-  std::size_t kib = 0;
-  std::string unit;
-  while (meminfo >> key >> kib >> unit) {
-    if (key == "MemAvailable:") return kib * 1024;
-  }
-  return std::numeric_limits<std::size_t>::max();
-}
-
 std::string with_commas(std::size_t n) {
   std::string digits = std::to_string(n), out;
   for (std::size_t i = 0; i < digits.size(); ++i) {
@@ -673,6 +662,11 @@ class DocumentReader {
       doc_.textures[i].sampler = r_.index(j, "sampler", where, count("samplers"), "samplers");
       doc_.textures[i].source = r_.index(j, "source", where, count("images"), "images");
       doc_.textures[i].extensions = r_.extensions(j, where);
+      const auto dds = doc_.textures[i].extensions.find("MSFT_texture_dds");
+      if (dds != doc_.textures[i].extensions.end()) {
+        const std::string dds_where = where + ".extensions.MSFT_texture_dds";
+        doc_.textures[i].dds_source = r_.index(r_.object(*dds, dds_where), "source", dds_where, count("images"), "images");
+      }
     }
   }
 
@@ -811,31 +805,6 @@ std::size_t component_size(int component_type) {
     case kFloat: return 4;
     default: return 0;
   }
-}
-
-std::string format_bytes(double bytes) {
-  char text[64];
-  if (bytes >= 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-  else if (bytes >= 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", bytes / (1024.0 * 1024.0));
-  else if (bytes >= 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
-  else std::snprintf(text, sizeof text, "%.0f bytes", bytes);
-  return text;
-}
-
-MemoryBudget::MemoryBudget(std::size_t limit_bytes) : limit_(limit_bytes ? limit_bytes : memory_available()) {}
-
-void MemoryBudget::require(std::size_t bytes, const std::string& what) const {
-  if (bytes <= limit_) return;
-  throw ImportError(file_ + ": " + what + " needs " + format_bytes(static_cast<double>(bytes)) + ", more than the " +
-                    format_bytes(static_cast<double>(limit_)) + " of memory available");
-}
-
-std::size_t MemoryBudget::bytes(std::size_t count, std::size_t size, const std::string& what) const {
-  if (size != 0 && count > std::numeric_limits<std::size_t>::max() / size) {
-    throw ImportError(file_ + ": " + what + " needs " + std::to_string(count) + " x " + std::to_string(size) + " bytes, more than memory can hold");
-  }
-  require(count * size, what);
-  return count * size;
 }
 
 Document read_document(const std::filesystem::path& path, const MemoryBudget& budget) {

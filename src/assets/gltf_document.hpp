@@ -20,13 +20,10 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
+#include "assets/load_budget.hpp"
+
 namespace atrium::assets {
 
-// "<file>: <problem>", one line: the file cannot be used.
-class ImportError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
-};
 
 namespace gltf {
 
@@ -42,25 +39,6 @@ enum ComponentType : int {
   kFloat = 5126,
 };
 [[nodiscard]] std::size_t component_size(int component_type);
-
-// Refuses allocations larger than the memory this load may use, before they
-// are made: a file may declare any size, and a user must read the size and
-// the file, not `std::bad_alloc`.
-class MemoryBudget {
- public:
-  // 0: the memory the system reports available (MemAvailable), read once.
-  explicit MemoryBudget(std::size_t limit_bytes = 0);
-  // Throws ImportError("<file>: <what> needs 12.0 GiB, more than ...").
-  void require(std::size_t bytes, const std::string& what) const;
-  // count * size, refused when it overflows or exceeds the budget.
-  [[nodiscard]] std::size_t bytes(std::size_t count, std::size_t size, const std::string& what) const;
-  [[nodiscard]] std::size_t limit() const { return limit_; }
-  void set_file(std::string file) { file_ = std::move(file); }
-
- private:
-  std::size_t limit_;
-  std::string file_;
-};
 
 struct Buffer {
   std::vector<std::uint8_t> data;
@@ -144,6 +122,7 @@ struct Material {
 struct Texture {
   int sampler = -1;
   int source = -1;
+  int dds_source = -1;  // MSFT_texture_dds: the DDS image preferred over `source`
   Json extensions = Json::object();
 };
 
@@ -212,8 +191,6 @@ struct Document {
 // Why an image URI cannot be read (empty when it can), without reading it.
 [[nodiscard]] std::string image_uri_problem(const Document& document, const std::string& uri);
 
-// "1.5 GiB", "12.0 MiB", "640 bytes".
-[[nodiscard]] std::string format_bytes(double bytes);
 
 }  // namespace gltf
 }  // namespace atrium::assets

@@ -1,23 +1,19 @@
 #include "assets/gltf_import.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstring>
 #include <functional>
 #include <map>
-#include <mutex>
-#include <new>
-#include <thread>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
-#include <stb_image.h>
 
 #include "assets/gltf_compression.hpp"
 #include "assets/gltf_extensions.hpp"
+#include "assets/texture_decode.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -95,7 +91,7 @@ class Importer {
     budget_.set_file(name_);
   }
 
-  GltfImport run() {
+  ModelImport run() {
     const auto start = Clock::now();
     doc_ = gltf::read_document(path_, budget_);
     result_.warnings = std::move(doc_.warnings);
@@ -390,30 +386,10 @@ class Importer {
     }
   }
 
-  // Removes triangles with a corner at a NaN or infinite position (or whose
-  // normal overflows), which would rasterise garbage and poison normals, and
-  // triangles of zero area (a repeated corner, or three corners on one line),
-  // which cover no pixel but would give generated normals and tangents a zero
-  // vector. Real exports have the latter (the teapot's lid has 8).
   void drop_unusable_triangles(const std::vector<Vertex>& vertices, Primitive& p, const std::string& what) {
-    std::size_t kept = 0, non_finite = 0, zero_area = 0;
-    for (std::size_t t = 0; t + 2 < p.indices.size(); t += 3) {
-      const glm::vec3 a = vertices[p.indices[t]].position, b = vertices[p.indices[t + 1]].position, c = vertices[p.indices[t + 2]].position;
-      const glm::vec3 n = glm::cross(b - a, c - a);
-      if (!finite(a) || !finite(b) || !finite(c) || !finite(n)) {
-        ++non_finite;
-        continue;
-      }
-      if (n == glm::vec3(0.0f)) {
-        ++zero_area;
-        continue;
-      }
-      for (std::size_t k = 0; k < 3; ++k) p.indices[kept * 3 + k] = p.indices[t + k];
-      ++kept;
-    }
-    p.indices.resize(kept * 3);
-    non_finite_.add(non_finite, what);
-    zero_area_.add(zero_area, what);
+    const DroppedTriangles dropped = assets::drop_unusable_triangles(vertices, p.indices);
+    non_finite_.add(dropped.non_finite, what);
+    zero_area_.add(dropped.zero_area, what);
   }
 
   // One warning per reason for the whole file, however many primitives it hits.
@@ -421,33 +397,6 @@ class Importer {
     if (skipped.count == 0) return;
     warn(skipped.where("primitives") + ": " + std::to_string(skipped.count) + " of " + std::to_string(triangles_read_) + " triangles " +
          reason + "; they are skipped");
-  }
-
-  // Normalises given normals; where one is zero-length or not finite, uses the
-  // smooth normal computed from the triangles instead. Returns whether any was bad.
-  static bool repair_normals(std::vector<Vertex>& vertices, const std::vector<std::uint32_t>& triangles) {
-    bool bad = false;
-    for (Vertex& v : vertices) {
-      const float length = glm::length(v.normal);
-      if (length > 1e-12f && std::isfinite(length)) v.normal /= length;
-      else bad = true;
-    }
-    if (!bad) return false;
-    std::vector<Vertex> smooth = vertices;
-    generate_normals(smooth, triangles);
-    for (std::size_t i = 0; i < vertices.size(); ++i) {
-      const float length = glm::length(vertices[i].normal);
-      if (!(std::abs(length - 1.0f) < 1e-3f)) vertices[i].normal = smooth[i].normal;
-      if (!(std::abs(glm::length(vertices[i].normal) - 1.0f) < 1e-3f)) vertices[i].normal = glm::vec3(0.0f, 1.0f, 0.0f);
-    }
-    return true;
-  }
-
-  static bool tangents_valid(const std::vector<Vertex>& vertices) {
-    return std::all_of(vertices.begin(), vertices.end(), [](const Vertex& v) {
-      const float length = glm::length(glm::vec3(v.tangent));
-      return std::isfinite(length) && length > 1e-6f && std::isfinite(v.tangent.w);
-    });
   }
 
   std::uint32_t default_material(std::vector<Material>& materials) {
@@ -500,11 +449,13 @@ class Importer {
       const glm::mat3 scaling(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
       slot.uv_transform = translate * rotate * scaling;
     }
-    if (texture.source < 0) {
+    // DDS (MSFT_texture_dds) first: it stays block-compressed on the GPU.
+    const int image = texture.dds_source >= 0 ? texture.dds_source : texture.source;
+    if (image < 0) {
       warn(what + " uses textures[" + std::to_string(info.index) + "], which has no image Atrium can read; a neutral default is used");
       return slot;
     }
-    pending_slots_.push_back({texture.source, space});
+    pending_slots_.push_back({image, space});
     return slot;
   }
 
@@ -553,7 +504,7 @@ class Importer {
     struct Job {
       int image;
       ColorSpace space;
-      Image decoded;
+      TextureData decoded;
       std::string error;
     };
     std::vector<Job> jobs;
@@ -564,70 +515,28 @@ class Importer {
         jobs.push_back({pending.image, pending.space, {}, {}});
       }
     }
-    std::atomic<std::size_t> next{0};
-    std::atomic<std::size_t> finished{0};
-    std::mutex progress_mutex;
-    auto decode = [&](Job& job) {
-      const gltf::Image& image = doc_.images[static_cast<std::size_t>(job.image)];
-      std::vector<std::uint8_t> file_bytes;
-      std::span<const std::uint8_t> bytes;
-      if (image.buffer_view >= 0) {
-        bytes = view_bytes(static_cast<std::size_t>(image.buffer_view));
-      } else if (!image.uri.empty()) {
-        file_bytes = gltf::read_image_uri(doc_, image.uri, budget_, job.error);
-        bytes = file_bytes;
-      } else {
-        job.error = "no image data";
-      }
-      if (!job.error.empty()) return;
-      if (bytes.empty()) {
-        job.error = "no image data";
-        return;
-      }
-      if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
-        job.error = "the image file is larger than 2 GiB";
-        return;
-      }
-      int w = 0, h = 0, channels = 0;
-      const int size = static_cast<int>(bytes.size());
-      if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
-        job.error = stbi_failure_reason();
-        return;
-      }
-      const std::size_t decoded_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
-      if (decoded_bytes > budget_.limit()) {
-        job.error = std::to_string(w) + "x" + std::to_string(h) + " needs " + gltf::format_bytes(static_cast<double>(decoded_bytes)) +
-                    ", more than the " + gltf::format_bytes(static_cast<double>(budget_.limit())) + " of memory available";
-        return;
-      }
-      stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4);
-      if (!pixels) {
-        job.error = stbi_failure_reason();
-        return;
-      }
-      job.decoded = Image{w, h, std::vector<std::uint8_t>(pixels, pixels + decoded_bytes)};
-      stbi_image_free(pixels);
-    };
-    auto worker = [&] {
-      for (std::size_t j = next++; j < jobs.size(); j = next++) {
-        if (progress_ && j > 0) {
-          std::lock_guard lock(progress_mutex);
-          progress_("decoding images", finished.load(), jobs.size());
-        }
-        try {
-          decode(jobs[j]);
-        } catch (const std::bad_alloc&) {
-          jobs[j].error = "out of memory while decoding it";
-          jobs[j].decoded = {};
-        }
-        ++finished;
-      }
-    };
-    const unsigned threads = threads_ ? threads_ : std::clamp<unsigned>(std::thread::hardware_concurrency(), 1, 16);
-    std::vector<std::thread> pool;
-    for (unsigned t = 1; t < std::min<std::size_t>(threads, jobs.size()); ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    std::vector<DecodedTexture> decoded = decode_in_parallel(
+        jobs.size(),
+        [&](std::size_t j) {
+          const gltf::Image& image = doc_.images[static_cast<std::size_t>(jobs[j].image)];
+          std::vector<std::uint8_t> file_bytes;
+          std::span<const std::uint8_t> bytes;
+          DecodedTexture result;
+          if (image.buffer_view >= 0) {
+            bytes = view_bytes(static_cast<std::size_t>(image.buffer_view));
+          } else if (!image.uri.empty()) {
+            file_bytes = gltf::read_image_uri(doc_, image.uri, budget_, result.error);
+            bytes = file_bytes;
+          } else {
+            result.error = "no image data";
+          }
+          return result.error.empty() ? decode_texture(bytes, jobs[j].space, budget_.limit()) : result;
+        },
+        threads_, progress_);
+    for (std::size_t j = 0; j < jobs.size(); ++j) {
+      if (decoded[j].texture) jobs[j].decoded = std::move(*decoded[j].texture);
+      else jobs[j].error = std::move(decoded[j].error);
+    }
 
     const std::string canonical = fs::weakly_canonical(path_).string();
     std::vector<TextureHandle> handles(jobs.size());
@@ -640,7 +549,8 @@ class Importer {
         continue;
       }
       const std::string key = canonical + "#image" + std::to_string(jobs[j].image) + (jobs[j].space == ColorSpace::Srgb ? "/srgb" : "/linear");
-      handles[j] = assets_.add_texture({label, std::move(jobs[j].decoded), jobs[j].space}, key);
+      jobs[j].decoded.name = label;
+      handles[j] = assets_.add_texture(std::move(jobs[j].decoded), key);
       ++result_.images;
     }
     for (const PendingSlot& pending : pending_slots_) {
@@ -798,7 +708,7 @@ class Importer {
   AssetManager& assets_;
   const ProgressCallback& progress_;
   unsigned threads_ = 0;
-  gltf::MemoryBudget budget_;
+  MemoryBudget budget_;
   gltf::Document doc_;
   std::vector<std::vector<std::uint8_t>> decoded_;
   std::map<VertexSource, std::uint32_t> buffers_by_source_;
@@ -808,20 +718,13 @@ class Importer {
   Skipped non_finite_, zero_area_, skipped_instances_;
   std::size_t triangles_read_ = 0;
   Bounds bounds_;
-  GltfImport result_;
+  ModelImport result_;
 };
 
 }  // namespace
 
-GltfImport import_gltf(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options) {
-  try {
-    return Importer(path, assets, options).run();
-  } catch (const std::bad_alloc&) {
-    // Sizes are checked before allocating; this is the system running out anyway.
-    throw ImportError(path.string() + ": out of memory while loading (the system refused an allocation)");
-  } catch (const std::length_error&) {
-    throw ImportError(path.string() + ": out of memory while loading (a size beyond what memory can hold)");
-  }
+ModelImport import_gltf(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options) {
+  return refuse_out_of_memory(path, [&] { return Importer(path, assets, options).run(); });
 }
 
 }  // namespace atrium::assets

@@ -23,6 +23,49 @@ gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_
   return texture;
 }
 
+// The GL format of a block format in a colour space (BC4 and BC5 hold data, never colour).
+GLenum compressed_format(BlockFormat format, ColorSpace space) {
+  const bool srgb = space == ColorSpace::Srgb;
+  switch (format) {
+    case BlockFormat::BC1: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT : GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+    case BlockFormat::BC2: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT : GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
+    case BlockFormat::BC3: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    case BlockFormat::BC4: return GL_COMPRESSED_RED_RGTC1;
+    case BlockFormat::BC5: return GL_COMPRESSED_RG_RGTC2;
+    case BlockFormat::BC7: return srgb ? GL_COMPRESSED_SRGB_ALPHA_BPTC_UNORM : GL_COMPRESSED_RGBA_BPTC_UNORM;
+  }
+  return GL_NONE;
+}
+
+// RGTC (BC4, BC5) and BPTC (BC7) are core since GL 3.0 and 4.2; S3TC (BC1-BC3)
+// is an extension, with sRGB variants of its own.
+bool compressed_supported(BlockFormat format) {
+  if (format == BlockFormat::BC4 || format == BlockFormat::BC5 || format == BlockFormat::BC7) return true;
+  return epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc") &&
+         (epoxy_has_gl_extension("GL_EXT_texture_sRGB") || epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc_srgb"));
+}
+
+// Uploads a DDS's levels from `first` on, as they are.
+gfx::Texture upload_compressed(const CompressedImage& image, std::size_t first, ColorSpace space, std::size_t& bytes) {
+  const int levels = static_cast<int>(image.levels.size() - first);
+  const GLenum format = compressed_format(image.format, space);
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  const int width = std::max(1, image.width >> first), height = std::max(1, image.height >> first);
+  glTextureStorage2D(texture.id(), levels, format, width, height);
+  for (int level = 0; level < levels; ++level) {
+    const auto& data = image.levels[first + static_cast<std::size_t>(level)];
+    glCompressedTextureSubImage2D(texture.id(), level, 0, 0, std::max(1, width >> level), std::max(1, height >> level), format,
+                                  static_cast<GLsizei>(data.size()), data.data());
+    bytes += data.size();
+  }
+  // One channel of data reads as grey, as a greyscale PNG does.
+  if (image.format == BlockFormat::BC4) {
+    const GLint swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+    glTextureParameteriv(texture.id(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  }
+  return texture;
+}
+
 }  // namespace
 
 std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
@@ -35,18 +78,48 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
   }
   const int context_limit = gfx::max_texture_size();
   const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
+  auto too_large = [&](std::size_t t, const TextureData& data, glm::ivec2 to) {
+    return "texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.width()) + "x" + std::to_string(data.height()) +
+           ", more than " +
+           (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
+                                  : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
+           "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + std::to_string(to.x) + "x" +
+           std::to_string(to.y);
+  };
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
     const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
+    two_channel_.push_back(data.compressed && data.compressed->format == BlockFormat::BC5);
+    if (data.compressed) {
+      if (compressed_supported(data.compressed->format)) {
+        std::size_t first = 0;
+        while (first + 1 < data.compressed->levels.size() &&
+               std::max(data.compressed->width >> first, data.compressed->height >> first) > limit) {
+          ++first;
+        }
+        const glm::ivec2 size(std::max(1, data.compressed->width >> first), std::max(1, data.compressed->height >> first));
+        if (first > 0) warnings.push_back(too_large(t, data, size));
+        textures_.push_back(upload_compressed(*data.compressed, first, data.color_space, texture_bytes_));
+        continue;
+      }
+      std::string error;
+      std::optional<Image> decoded = decode_blocks(*data.compressed, error);
+      if (!decoded) {
+        warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
+        textures_.push_back(upload_image(Image{1, 1, {255, 255, 255, 255}}, ColorSpace::Linear, texture_bytes_));
+        continue;
+      }
+      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + block_format_name(data.compressed->format) +
+                         ", which this driver cannot sample; it is decoded and uploaded uncompressed");
+      const Image fitted = downscale_to_fit(*decoded, limit, data.color_space == ColorSpace::Srgb);
+      textures_.push_back(upload_image(fitted, data.color_space, texture_bytes_));
+      continue;
+    }
     if (data.image.width <= limit && data.image.height <= limit) {
       textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
       continue;
     }
     const Image smaller = downscale_to_fit(data.image, limit, data.color_space == ColorSpace::Srgb);
-    warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.image.width) + "x" +
-                       std::to_string(data.image.height) + ", more than " +
-                       (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
-                                              : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
-                       "; it is downscaled to " + std::to_string(smaller.width) + "x" + std::to_string(smaller.height));
+    warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
     textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
   }
   for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
@@ -168,6 +241,10 @@ void GpuAssets::make_sampler(const SamplerDesc& desc) {
     glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, kMaxAnisotropy);
   }
   samplers_.emplace(desc, std::move(sampler));
+}
+
+bool GpuAssets::two_channel(TextureHandle handle) const {
+  return handle.valid() && handle.index < two_channel_.size() && two_channel_[handle.index];
 }
 
 GLuint GpuAssets::texture(TextureHandle handle) const {

@@ -51,6 +51,8 @@ class GpuAssets {
   void reserve_instances(std::size_t count);
   // The texture's GL name, or the white default for an empty handle.
   [[nodiscard]] GLuint texture(TextureHandle handle) const;
+  // Whether it holds two channels (BC5): a normal map's z is then rebuilt from x and y.
+  [[nodiscard]] bool two_channel(TextureHandle handle) const;
   // The sampler object for `desc` (made by upload for every material slot).
   [[nodiscard]] GLuint sampler(const SamplerDesc& desc) const;
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
@@ -64,6 +66,7 @@ class GpuAssets {
   int max_texture_size_;
   std::vector<GpuMeshAsset> mesh_assets_;
   std::vector<gfx::Texture> textures_;
+  std::vector<bool> two_channel_;
   gfx::Texture white_;
   gfx::Buffer instance_indices_;
   std::size_t instance_capacity_ = 0;

@@ -99,6 +99,53 @@ void generate_tangents(std::span<Vertex> vertices, std::span<const std::uint32_t
   }
 }
 
+DroppedTriangles drop_unusable_triangles(std::span<const Vertex> vertices, std::vector<std::uint32_t>& indices) {
+  auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
+  DroppedTriangles dropped;
+  std::size_t kept = 0;
+  for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+    const glm::vec3 a = vertices[indices[t]].position, b = vertices[indices[t + 1]].position, c = vertices[indices[t + 2]].position;
+    const glm::vec3 n = glm::cross(b - a, c - a);
+    if (!finite(a) || !finite(b) || !finite(c) || !finite(n)) {
+      ++dropped.non_finite;
+      continue;
+    }
+    if (n == glm::vec3(0.0f)) {
+      ++dropped.zero_area;
+      continue;
+    }
+    for (std::size_t k = 0; k < 3; ++k) indices[kept * 3 + k] = indices[t + k];
+    ++kept;
+  }
+  indices.resize(kept * 3);
+  return dropped;
+}
+
+bool repair_normals(std::span<Vertex> vertices, std::span<const std::uint32_t> triangles) {
+  bool bad = false;
+  for (Vertex& v : vertices) {
+    const float length = glm::length(v.normal);
+    if (length > 1e-12f && std::isfinite(length)) v.normal /= length;
+    else bad = true;
+  }
+  if (!bad) return false;
+  std::vector<Vertex> smooth(vertices.begin(), vertices.end());
+  generate_normals(smooth, triangles);
+  for (std::size_t i = 0; i < vertices.size(); ++i) {
+    if (!(std::abs(glm::length(vertices[i].normal) - 1.0f) < 1e-3f)) vertices[i].normal = smooth[i].normal;
+    if (!(std::abs(glm::length(vertices[i].normal) - 1.0f) < 1e-3f)) vertices[i].normal = glm::vec3(0.0f, 1.0f, 0.0f);
+  }
+  return true;
+}
+
+bool tangents_valid(std::span<const Vertex> vertices) {
+  for (const Vertex& v : vertices) {
+    const float length = glm::length(glm::vec3(v.tangent));
+    if (!std::isfinite(length) || !(length > 1e-6f) || !std::isfinite(v.tangent.w)) return false;
+  }
+  return true;
+}
+
 std::size_t triangle_count(const Mesh& mesh) {
   std::size_t count = 0;
   for (const auto& p : mesh.primitives) count += p.indices.size() / 3;

@@ -70,6 +70,9 @@ struct Material {
   // KHR_materials_unlit: the base colour is the pixel's colour; no light,
   // ambient or emission changes it.
   bool unlit = false;
+  // The normal map's green channel points down (DirectX's convention, as in
+  // Bistro); glTF's points up.
+  bool normal_green_down = false;
   TextureSlot base_color_texture;
   TextureSlot metallic_roughness_texture;
   TextureSlot normal_texture;
@@ -131,6 +134,21 @@ void generate_normals(std::span<Vertex> vertices, std::span<const std::uint32_t>
 void generate_tangents(std::span<Vertex> vertices, std::span<const std::uint32_t> indices);
 inline void generate_normals(Geometry& g) { generate_normals(g.vertices, g.indices); }
 inline void generate_tangents(Geometry& g) { generate_tangents(g.vertices, g.indices); }
+
+// Removes triangles with a corner at a NaN or infinite position (or whose
+// normal overflows), which would rasterise garbage and poison normals, and
+// triangles of zero area (a repeated corner, or three corners on one line),
+// which cover no pixel but would give generated normals and tangents a zero
+// vector. Real exports have the latter (the teapot's lid has 8).
+struct DroppedTriangles {
+  std::size_t non_finite = 0, zero_area = 0;
+};
+DroppedTriangles drop_unusable_triangles(std::span<const Vertex> vertices, std::vector<std::uint32_t>& indices);
+// Normalises given normals; where one is zero-length or not finite, uses the
+// smooth normal of the triangles instead. Returns whether any was bad.
+bool repair_normals(std::span<Vertex> vertices, std::span<const std::uint32_t> triangles);
+// Whether every tangent has a usable direction and sign.
+[[nodiscard]] bool tangents_valid(std::span<const Vertex> vertices);
 
 [[nodiscard]] std::size_t triangle_count(const Mesh& mesh);
 

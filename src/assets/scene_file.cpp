@@ -188,7 +188,7 @@ void grow_bounds(SceneDescription& scene, glm::vec3 lo, glm::vec3 hi, bool& any)
 }
 
 // Places an imported model's instances and lights under a model transform.
-void add_model(SceneDescription& scene, const GltfImport& model, const glm::mat4& placement, bool& any_bounds) {
+void add_model(SceneDescription& scene, const ModelImport& model, const glm::mat4& placement, bool& any_bounds) {
   for (SceneInstance instance : model.instances) {
     instance.asset = model.asset;
     // Placement scales are positive (checked when read), so this decomposes.
@@ -209,7 +209,7 @@ void add_model(SceneDescription& scene, const GltfImport& model, const glm::mat4
   }
 }
 
-void merge_report(LoadReport& report, const GltfImport& model) {
+void merge_report(LoadReport& report, const ModelImport& model) {
   report.warnings.insert(report.warnings.end(), model.warnings.begin(), model.warnings.end());
   report.timings.parse_seconds += model.timings.parse_seconds;
   report.timings.decode_seconds += model.timings.decode_seconds;
@@ -310,13 +310,13 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   if (root.contains("default_mode")) scene.default_mode = r.string(root["default_mode"], "/default_mode");
 
   bool any_bounds = false;
-  std::map<std::string, GltfImport> imported;  // canonical path -> import, so repeats share one asset
+  std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
   if (root.contains("models")) {
     const json& models = r.array(root["models"], "/models");
     for (std::size_t i = 0; i < models.size(); ++i) {
       const std::string p = "/models/" + std::to_string(i);
       const json& m = models[i];
-      r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch"});
+      r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch", "materials"});
       if (m.contains("builtin")) {
         // The procedural courtyard as a model: its geometry and views; lights come from this file.
         if (r.string(m["builtin"], p + "/builtin") != kBuiltinSceneName) {
@@ -338,7 +338,14 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
       }
       const std::string key = fs::weakly_canonical(model_path).string();
       if (!imported.contains(key)) {
-        imported.emplace(key, import_gltf(model_path, assets, {progress}));
+        ImportOptions options;
+        options.progress = progress;
+        if (m.contains("materials")) {
+          const std::string name = r.string(m["materials"], p + "/materials");
+          options.convention = material_convention(name);
+          if (!options.convention) r.fail(p + "/materials", "expected \"gltf\", \"bistro\" or \"phong\", got \"" + name + "\"");
+        }
+        imported.emplace(key, import_model(model_path, assets, options));
         merge_report(report, imported.at(key));
       }
       glm::mat4 placement(1.0f);
@@ -381,7 +388,9 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
 
 SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, std::uint32_t extra_lights, LoadReport& report,
                                   const ProgressCallback& progress) {
-  const GltfImport model = import_gltf(path, assets, {progress});
+  ImportOptions options;
+  options.progress = progress;
+  const ModelImport model = import_model(path, assets, options);
   merge_report(report, model);
   SceneDescription scene;
   scene.name = path.stem().string();

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "assets/asset_manager.hpp"
-#include "assets/gltf_import.hpp"
+#include "assets/model_import.hpp"
 #include "assets/scene.hpp"
 
 namespace atrium::assets {
@@ -45,7 +45,7 @@ struct LoadReport {
 // (front, side, corner, top), and one inside it (off the plane of a flat box).
 [[nodiscard]] std::vector<NamedView> framing_views(glm::vec3 bounds_min, glm::vec3 bounds_max);
 
-// A glTF model as a scene: its instances and KHR_lights_punctual lights, five
+// A model file (glTF, OBJ, FBX, ...) as a scene: its instances and KHR_lights_punctual lights, five
 // views framing its bounds, and `extra_lights` generated lights inside them.
 [[nodiscard]] SceneDescription load_model_scene(const std::filesystem::path& path, AssetManager& assets,
                                                 std::uint32_t extra_lights, LoadReport& report,

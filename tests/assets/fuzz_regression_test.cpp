@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "assets/gltf_import.hpp"
 #include "assets/scene_file.hpp"
 
 namespace atrium::assets {

@@ -100,7 +100,7 @@ class GltfDocument : public ::testing::Test {
 
 TEST_F(GltfDocument, TheBaseFileLoads) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(write("triangle.gltf", triangle_gltf()), assets);
+  const ModelImport imported = import_gltf(write("triangle.gltf", triangle_gltf()), assets);
   EXPECT_EQ(imported.instances.size(), 1u);
   EXPECT_FALSE(imported.empty);
 }
@@ -225,7 +225,7 @@ TEST_F(GltfDocument, StripsAndFansBecomeTriangleLists) {
   doc["accessors"] = {{{"bufferView", 0}, {"componentType", 5126}, {"count", 4}, {"type", "VEC3"}}};
   doc["meshes"][0]["primitives"] = {{{"attributes", {{"POSITION", 0}}}, {"mode", 5}}, {{"attributes", {{"POSITION", 0}}}, {"mode", 6}}};
   AssetManager assets;
-  const GltfImport imported = import_gltf(write("strips.gltf", doc), assets);
+  const ModelImport imported = import_gltf(write("strips.gltf", doc), assets);
   const MeshAsset& asset = assets.mesh_asset(imported.asset);
   ASSERT_EQ(asset.meshes[0].primitives.size(), 2u);
   // The strip 0 1 2 3 is the triangles 0 1 2 and 2 1 3 (the second flipped to keep
@@ -245,7 +245,7 @@ TEST_F(GltfDocument, AModelWithNoTrianglesIsEmptyWithWellDefinedBounds) {
   json doc = triangle_gltf();
   doc["meshes"][0]["primitives"][0]["mode"] = 0;  // points
   AssetManager assets;
-  const GltfImport imported = import_gltf(write("points.gltf", doc), assets);
+  const ModelImport imported = import_gltf(write("points.gltf", doc), assets);
   EXPECT_TRUE(imported.empty);
   EXPECT_EQ(imported.bounds_min, glm::vec3(0.0f));
   EXPECT_EQ(imported.bounds_max, glm::vec3(0.0f));
@@ -256,7 +256,7 @@ TEST_F(GltfDocument, OptionalExtensionsSayWhatIsLostAndRequiredOnesRefuse) {
   json doc = triangle_gltf();
   doc["extensionsUsed"] = {"KHR_materials_clearcoat", "EXT_something_new"};
   AssetManager assets;
-  const GltfImport imported = import_gltf(write("optional.gltf", doc), assets);
+  const ModelImport imported = import_gltf(write("optional.gltf", doc), assets);
   EXPECT_THAT(imported.warnings, ::testing::Contains(HasSubstr("ignores the optional extension KHR_materials_clearcoat: the clear-coat layer is not drawn")));
   EXPECT_THAT(imported.warnings, ::testing::Contains(HasSubstr("ignores the optional extension EXT_something_new, which Atrium does not know")));
   doc["extensionsRequired"] = {"KHR_materials_clearcoat"};

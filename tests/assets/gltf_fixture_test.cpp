@@ -114,7 +114,7 @@ class Fixture {
 
   // Writes the model (.glb, or .gltf with embedded buffers), lets `patch` edit
   // the JSON of a .gltf for what tinygltf's writer does not serialise, imports it.
-  GltfImport import(const std::string& name, AssetManager& assets, bool binary = true,
+  ModelImport import(const std::string& name, AssetManager& assets, bool binary = true,
                     const std::function<void(nlohmann::json&)>& patch = {}) {
     const fs::path folder = fs::temp_directory_path() / ("atrium_gltf_fixture_" + std::to_string(::getpid()));
     fs::create_directories(folder);
@@ -127,7 +127,7 @@ class Fixture {
       patch(json);
       std::ofstream(path) << json.dump();
     }
-    GltfImport result = import_gltf(path, assets);
+    ModelImport result = import_gltf(path, assets);
     fs::remove_all(folder);
     return result;
   }
@@ -136,12 +136,12 @@ class Fixture {
   tinygltf::Model model_;
 };
 
-const Primitive& only_primitive(const AssetManager& assets, const GltfImport& imported, std::size_t mesh = 0) {
+const Primitive& only_primitive(const AssetManager& assets, const ModelImport& imported, std::size_t mesh = 0) {
   return assets.mesh_asset(imported.asset).meshes.at(mesh).primitives.at(0);
 }
 
 // The vertices the only primitive of `mesh` indexes.
-const std::vector<Vertex>& only_vertices(const AssetManager& assets, const GltfImport& imported, std::size_t mesh = 0) {
+const std::vector<Vertex>& only_vertices(const AssetManager& assets, const ModelImport& imported, std::size_t mesh = 0) {
   return assets.mesh_asset(imported.asset).vertices(only_primitive(assets, imported, mesh));
 }
 
@@ -170,7 +170,7 @@ TEST(GltfFixture, InterleavedStridedAttributesAndEveryIndexType) {
     f.mesh(p);
   }
   AssetManager assets;
-  const GltfImport imported = f.import("interleaved", assets);
+  const ModelImport imported = f.import("interleaved", assets);
   for (std::size_t m = 0; m < 3; ++m) {
     const Primitive& p = only_primitive(assets, imported, m);
     const std::vector<Vertex>& vertices = only_vertices(assets, imported, m);
@@ -200,7 +200,7 @@ TEST(GltfFixture, QuantizedNormalizedAttributesAndTwoUvSets) {
   p.mode = TINYGLTF_MODE_TRIANGLES;
   f.mesh(p);
   AssetManager assets;
-  const GltfImport imported = f.import("quantized", assets);
+  const ModelImport imported = f.import("quantized", assets);
   const std::vector<Vertex>& q = only_vertices(assets, imported);
   ASSERT_EQ(q.size(), 3u);
   EXPECT_EQ(q[1].position, glm::vec3(100, 0, 0));
@@ -230,7 +230,7 @@ TEST(GltfFixture, SparseAccessorsSubstituteElements) {
   sparse_target.sparse.values.byteOffset = 0;
   f.mesh(p);
   AssetManager assets;
-  const GltfImport imported = f.import("sparse", assets, false);
+  const ModelImport imported = f.import("sparse", assets, false);
   const std::vector<Vertex>& q = only_vertices(assets, imported);
   EXPECT_EQ(q[0].position, glm::vec3(0, 0, 0));
   EXPECT_EQ(q[2].position, glm::vec3(5, 6, 7));
@@ -246,7 +246,7 @@ TEST(GltfFixture, MissingNormalsAreFlatAndMissingTangentsAreGenerated) {
   p.mode = TINYGLTF_MODE_TRIANGLES;
   f.mesh(p);
   AssetManager assets;
-  const GltfImport imported = f.import("flat", assets);
+  const ModelImport imported = f.import("flat", assets);
   const std::vector<Vertex>& q = only_vertices(assets, imported);
   ASSERT_EQ(q.size(), 6u) << "flat shading gives every corner its own vertex";
   for (int v = 0; v < 3; ++v) EXPECT_NEAR(q[static_cast<std::size_t>(v)].normal.z, 1.0f, 1e-6f);
@@ -308,7 +308,7 @@ TEST(GltfFixture, MaterialsWithEveryTextureFactorAndExtension) {
     f.mesh(p);
   }
   AssetManager assets;
-  const GltfImport imported = f.import("materials", assets);
+  const ModelImport imported = f.import("materials", assets);
   const auto& materials = assets.mesh_asset(imported.asset).materials;
   ASSERT_EQ(materials.size(), 2u);
   const Material& e = materials[0];
@@ -370,7 +370,7 @@ TEST(GltfFixture, MissingAndCorruptImagesWarnAndFallBackToNeutral) {
   p.material = 0;
   f.mesh(p);
   AssetManager assets;
-  const GltfImport imported = f.import("bad-images", assets, false);
+  const ModelImport imported = f.import("bad-images", assets, false);
   const Material& material = assets.mesh_asset(imported.asset).materials[0];
   EXPECT_FALSE(material.base_color_texture.valid());
   EXPECT_FALSE(material.normal_texture.valid());
@@ -394,7 +394,7 @@ TEST(GltfFixture, NodeHierarchyCombinesTrsAndMatrices) {
   model.nodes = {root, child};
   model.scenes[0].nodes = {0};
   AssetManager assets;
-  const GltfImport imported = f.import("hierarchy", assets);
+  const ModelImport imported = f.import("hierarchy", assets);
   ASSERT_EQ(imported.instances.size(), 1u);
   const Transform& t = imported.instances[0].transform;
   EXPECT_NEAR(t.position.x, 12.0f, 1e-5f);  // (0, 0, 2) rotated 90 deg about y is (2, 0, 0)
@@ -429,7 +429,7 @@ TEST(GltfFixture, PunctualLightsBecomeSceneLightsInAtriumUnits) {
     f.model().scenes[0].nodes.push_back(i);
   }
   AssetManager assets;
-  const GltfImport imported = f.import("lights", assets, false);
+  const ModelImport imported = f.import("lights", assets, false);
   ASSERT_EQ(imported.lights.size(), 3u);
   const SceneLight& p = imported.lights[0];
   EXPECT_EQ(p.kind, LightKind::Point);
@@ -455,7 +455,7 @@ TEST(GltfFixture, NonTrianglePrimitivesAreSkippedWithAWarning) {
   f.mesh(lines);
   f.model().meshes[0].primitives.push_back(f.triangle());
   AssetManager assets;
-  const GltfImport imported = f.import("lines", assets);
+  const ModelImport imported = f.import("lines", assets);
   EXPECT_EQ(assets.mesh_asset(imported.asset).meshes[0].primitives.size(), 1u);
   ASSERT_FALSE(imported.warnings.empty());
   EXPECT_NE(imported.warnings[0].find("not triangles"), std::string::npos) << imported.warnings[0];
@@ -523,7 +523,7 @@ TEST(GltfFixture, MeshoptCompressedBuffersAreDecoded) {
   sequenced.indices = f.accessor(sequence_view, 0, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, TINYGLTF_TYPE_SCALAR, 6);
   f.mesh(sequenced);
   AssetManager assets;
-  const GltfImport imported = f.import("meshopt", assets, false, [&](nlohmann::json& json) {
+  const ModelImport imported = f.import("meshopt", assets, false, [&](nlohmann::json& json) {
     for (const auto& [view, extension] : extensions) json["bufferViews"][view]["extensions"]["EXT_meshopt_compression"] = extension;
   });
   const std::vector<Vertex>& q = only_vertices(assets, imported);
@@ -560,7 +560,7 @@ TEST(GltfFixture, SponzaStandInManyMaterialsShareFewImages) {
     f.mesh(p);
   }
   AssetManager assets;
-  const GltfImport imported = f.import("sponza-stand-in", assets);
+  const ModelImport imported = f.import("sponza-stand-in", assets);
   const MeshAsset& asset = assets.mesh_asset(imported.asset);
   EXPECT_EQ(asset.materials.size(), 25u);
   EXPECT_EQ(assets.texture_count(), 6u) << "each image is decoded and kept once";

@@ -34,7 +34,7 @@ class ValidFile : public ::testing::TestWithParam<Expected> {};
 TEST_P(ValidFile, LoadsWithItsTrianglesAndMaterials) {
   const Expected& e = GetParam();
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / e.file, assets);
+  const ModelImport imported = import_gltf(testdata() / e.file, assets);
   EXPECT_EQ(triangles(assets, imported.asset), e.triangles - e.zero_area);
   const auto skipped = std::count_if(imported.warnings.begin(), imported.warnings.end(), [&](const std::string& w) {
     return w.find(std::to_string(e.zero_area) + " of " + std::to_string(e.triangles) + " triangles have zero area") != std::string::npos;
@@ -74,14 +74,14 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST(GltfTestdata, InstancedMeshesBecomeOneInstancePerNode) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / "blender-exports/subpass_scene_opaque.gltf", assets);
+  const ModelImport imported = import_gltf(testdata() / "blender-exports/subpass_scene_opaque.gltf", assets);
   EXPECT_GT(imported.instances.size(), assets.mesh_asset(imported.asset).meshes.size());
   EXPECT_LT(imported.bounds_min.x, imported.bounds_max.x);
 }
 
 TEST(GltfTestdata, MaterialFactorsAreRead) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / "blender-exports/subpass_scene_transparent.gltf", assets);
+  const ModelImport imported = import_gltf(testdata() / "blender-exports/subpass_scene_transparent.gltf", assets);
   const Material& m = assets.mesh_asset(imported.asset).materials.front();
   EXPECT_TRUE(m.double_sided);
   EXPECT_FLOAT_EQ(m.base_color_factor.r, 0.6399999856948853f);
@@ -91,7 +91,7 @@ TEST(GltfTestdata, MaterialFactorsAreRead) {
 
 TEST(GltfTestdata, CubeTexturesAreDecodedInTheirColourSpaces) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / "tinygltf/Cube/Cube.gltf", assets);
+  const ModelImport imported = import_gltf(testdata() / "tinygltf/Cube/Cube.gltf", assets);
   const Material& m = assets.mesh_asset(imported.asset).materials.at(0);
   ASSERT_TRUE(m.base_color_texture.valid());
   ASSERT_TRUE(m.metallic_roughness_texture.valid());
@@ -103,7 +103,7 @@ TEST(GltfTestdata, CubeTexturesAreDecodedInTheirColourSpaces) {
 
 TEST(GltfTestdata, TextureTransformIsRead) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / "tinygltf/Cube-texture-ext/Cube-textransform.gltf", assets);
+  const ModelImport imported = import_gltf(testdata() / "tinygltf/Cube-texture-ext/Cube-textransform.gltf", assets);
   bool transformed = false;
   for (const Material& m : assets.mesh_asset(imported.asset).materials) {
     for (const TextureSlot* slot : {&m.base_color_texture, &m.metallic_roughness_texture}) {
@@ -115,7 +115,7 @@ TEST(GltfTestdata, TextureTransformIsRead) {
 
 TEST(GltfTestdata, UndecodableImageUriIsAWarning) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(testdata() / "tinygltf/issue-416.gltf", assets);
+  const ModelImport imported = import_gltf(testdata() / "tinygltf/issue-416.gltf", assets);
   ASSERT_FALSE(imported.warnings.empty());
   EXPECT_NE(imported.warnings.front().find("issue-416.gltf"), std::string::npos);
 }

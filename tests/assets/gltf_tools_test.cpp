@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 const fs::path kFixtures = fs::path(ATRIUM_SOURCE_DIR) / "tests/data/gltf-tools";
 const fs::path kTestdata = fs::path(ATRIUM_TESTDATA_DIR);
 
-std::size_t drawn_triangles(const AssetManager& assets, const GltfImport& imported) {
+std::size_t drawn_triangles(const AssetManager& assets, const ModelImport& imported) {
   std::size_t total = 0;
   for (const SceneInstance& instance : imported.instances) {
     total += triangle_count(assets.mesh_asset(imported.asset).meshes.at(instance.mesh));
@@ -66,8 +66,8 @@ class ToolWritten : public ::testing::TestWithParam<ToolFixture> {};
 
 TEST_P(ToolWritten, ImportsWithItsSourcesTrianglesAndNoWarningBeyondTheSources) {
   AssetManager assets;
-  const GltfImport source = import_gltf(GetParam().source, assets);
-  const GltfImport fixture = import_gltf(kFixtures / GetParam().file, assets);
+  const ModelImport source = import_gltf(GetParam().source, assets);
+  const ModelImport fixture = import_gltf(kFixtures / GetParam().file, assets);
   EXPECT_EQ(drawn_triangles(assets, fixture), drawn_triangles(assets, source));
   EXPECT_GT(drawn_triangles(assets, fixture), 0u);
   // Tools keep their sources' flaws (zero-area triangles, zero-length
@@ -120,7 +120,7 @@ TEST(GltfTools, TheFixturesCoverEveryMeshoptModeFilterAndDracoAttribute) {
 
 TEST(GltfTools, GpuInstancingBecomesOneInstancePerTransform) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(kFixtures / "blender-colors.gltfpack-cc-mi.glb", assets);
+  const ModelImport imported = import_gltf(kFixtures / "blender-colors.gltfpack-cc-mi.glb", assets);
   const nlohmann::json j = glb_json(kFixtures / "blender-colors.gltfpack-cc-mi.glb");
   std::size_t declared = 0, plain = 0;
   for (const auto& node : j["nodes"]) {
@@ -138,8 +138,8 @@ TEST(GltfTools, GpuInstancingBecomesOneInstancePerTransform) {
 
 TEST(GltfTools, DracoDecodesPositionsWithinItsQuantisationStep) {
   AssetManager assets;
-  const GltfImport source = import_gltf(kTestdata / "gltf/blender-exports/teapot.gltf", assets);
-  const GltfImport draco = import_gltf(kFixtures / "teapot.draco-sequential.glb", assets);
+  const ModelImport source = import_gltf(kTestdata / "gltf/blender-exports/teapot.gltf", assets);
+  const ModelImport draco = import_gltf(kFixtures / "teapot.draco-sequential.glb", assets);
   const MeshAsset& a = assets.mesh_asset(source.asset);
   const MeshAsset& b = assets.mesh_asset(draco.asset);
   // 16-bit positions over the teapot's 6.4 m: steps of 0.1 mm. Every decoded
@@ -157,7 +157,7 @@ TEST(GltfTools, DracoDecodesPositionsWithinItsQuantisationStep) {
 
 TEST(GltfTools, BlenderColoursTangentsAndUnlitAreRead) {
   AssetManager assets;
-  const GltfImport imported = import_gltf(kFixtures / "blender-colors.glb", assets);
+  const ModelImport imported = import_gltf(kFixtures / "blender-colors.glb", assets);
   const MeshAsset& asset = assets.mesh_asset(imported.asset);
   std::size_t unlit = 0;
   for (const Material& m : asset.materials) unlit += m.unlit;
@@ -174,7 +174,7 @@ TEST(GltfTools, BlenderColoursTangentsAndUnlitAreRead) {
 TEST(GltfTools, PrimitivesSharingOneVertexAccessorUploadItOnce) {
   // The shared Sponza's 25 primitives index one accessor of 153,635 vertices.
   AssetManager assets;
-  const GltfImport imported = import_gltf(kTestdata / "scenes/sponza-crytek/Sponza.gltf", assets);
+  const ModelImport imported = import_gltf(kTestdata / "scenes/sponza-crytek/Sponza.gltf", assets);
   const MeshAsset& asset = assets.mesh_asset(imported.asset);
   EXPECT_EQ(asset.vertex_count(), 153635u);
   EXPECT_EQ(asset.vertex_buffers.size(), 1u);

@@ -93,6 +93,8 @@ void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::
       program.set("u_occlusion_strength", m.occlusion_texture.valid() ? m.occlusion_strength : 0.0f);
       program.set("u_alpha_cutoff", m.alpha_mode == assets::AlphaMode::Mask ? m.alpha_cutoff : -1.0f);
       program.set("u_has_normal_texture", m.normal_texture.valid() ? 1 : 0);
+      program.set("u_normal_xy_only", gpu.two_channel(m.normal_texture.texture) ? 1 : 0);
+      program.set("u_normal_green_down", m.normal_green_down ? 1 : 0);
       program.set("u_double_sided", m.double_sided ? 1 : 0);
       program.set("u_unlit", m.unlit ? 1 : 0);
       const assets::TextureSlot* slots[kMaterialTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture,

@@ -1,0 +1,94 @@
+#include "assets/texture_decode.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <limits>
+#include <mutex>
+#include <new>
+#include <thread>
+
+#include <stb_image.h>
+
+#include "assets/dds.hpp"
+#include "assets/load_budget.hpp"
+
+namespace atrium::assets {
+
+DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace space, std::size_t memory_limit) {
+  DecodedTexture result;
+  if (bytes.empty()) {
+    result.error = "no image data";
+    return result;
+  }
+  try {
+    if (is_dds(bytes)) {
+      std::optional<DdsTexture> dds = read_dds(bytes, result.error);
+      if (!dds) return result;
+      TextureData texture;
+      texture.color_space = space;
+      if (dds->compressed) texture.compressed = std::move(*dds->compressed);
+      else texture.image = std::move(dds->rgba);
+      result.texture = std::move(texture);
+      return result;
+    }
+    if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
+      result.error = "the image file is larger than 2 GiB";
+      return result;
+    }
+    int w = 0, h = 0, channels = 0;
+    const int size = static_cast<int>(bytes.size());
+    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
+      result.error = stbi_failure_reason();
+      return result;
+    }
+    const std::size_t decoded_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
+    if (decoded_bytes > memory_limit) {
+      result.error = std::to_string(w) + "x" + std::to_string(h) + " needs " + format_bytes(static_cast<double>(decoded_bytes)) +
+                     ", more than the " + format_bytes(static_cast<double>(memory_limit)) + " of memory available";
+      return result;
+    }
+    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4);
+    if (!pixels) {
+      result.error = stbi_failure_reason();
+      return result;
+    }
+    TextureData texture;
+    texture.color_space = space;
+    texture.image = Image{w, h, std::vector<std::uint8_t>(pixels, pixels + decoded_bytes)};
+    stbi_image_free(pixels);
+    result.texture = std::move(texture);
+  } catch (const std::bad_alloc&) {
+    result.error = "out of memory while decoding it";
+    result.texture.reset();
+  }
+  return result;
+}
+
+std::vector<DecodedTexture> decode_in_parallel(std::size_t count, const std::function<DecodedTexture(std::size_t)>& decode,
+                                               unsigned threads, const ProgressCallback& progress) {
+  std::vector<DecodedTexture> results(count);
+  std::atomic<std::size_t> next{0}, finished{0};
+  std::mutex progress_mutex;
+  auto worker = [&] {
+    for (std::size_t i = next++; i < count; i = next++) {
+      if (progress && i > 0) {
+        std::lock_guard lock(progress_mutex);
+        progress("decoding images", finished.load(), count);
+      }
+      try {
+        results[i] = decode(i);
+      } catch (const std::bad_alloc&) {
+        results[i] = {std::nullopt, "out of memory while decoding it"};
+      }
+      ++finished;
+    }
+  };
+  const unsigned wanted = threads ? threads : std::clamp<unsigned>(std::thread::hardware_concurrency(), 1, 16);
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < std::min<std::size_t>(wanted, count); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return results;
+}
+
+}  // namespace atrium::assets
