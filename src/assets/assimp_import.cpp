@@ -153,9 +153,11 @@ class AssimpImporter {
     asset.name = path_.filename().string();
     read_materials(asset);
     read_meshes(asset);
-    if (non_finite_ > 0 || zero_area_ > 0) {
-      warn(std::to_string(non_finite_ + zero_area_) + " of " + std::to_string(triangles_read_) +
-           " triangles have NaN or infinite positions or zero area; they are skipped");
+    if (non_finite_ > 0) {
+      warn(std::to_string(non_finite_) + " of " + std::to_string(triangles_read_) + " triangles have a NaN or infinite corner; they are skipped");
+    }
+    if (zero_area_ > 0) {
+      warn(std::to_string(zero_area_) + " of " + std::to_string(triangles_read_) + " triangles have zero area; they are skipped");
     }
     result_.timings.parse_seconds = seconds_since(start);
     const auto decode_start = Clock::now();

@@ -207,6 +207,21 @@ TEST(AssimpImport, BadFilesFailInOneLineNamingTheFile) {
   fs::remove_all(folder);
 }
 
+TEST(AssimpImport, UnusableTrianglesAreSkippedWithOneWarningPerReason) {
+  const fs::path file = fs::temp_directory_path() / ("atrium_unusable_" + std::to_string(::getpid()) + ".obj");
+  // One good triangle, one with a NaN corner, two of zero area.
+  std::ofstream(file) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv nan 0 0\nv 2 0 0\n"
+                         "f 1 2 3\nf 1 2 4\nf 1 2 5\nf 1 1 3\n";
+  AssetManager assets;
+  const ModelImport model = import_model(file, assets);
+  fs::remove(file);
+  EXPECT_EQ(triangles(assets, model), 1u);
+  std::string all;
+  for (const std::string& w : model.warnings) all += w + "\n";
+  EXPECT_NE(all.find("1 of 4 triangles have a NaN or infinite corner"), std::string::npos) << all;
+  EXPECT_NE(all.find("2 of 4 triangles have zero area"), std::string::npos) << all;
+}
+
 TEST(ModelImport, ConventionsAndFormatsHaveOneNameEach) {
   EXPECT_EQ(material_convention("gltf"), MaterialConvention::Gltf);
   EXPECT_EQ(material_convention("bistro"), MaterialConvention::Bistro);
