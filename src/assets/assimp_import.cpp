@@ -321,10 +321,9 @@ class AssimpImporter {
       want(Wanted::Role::BaseColor, texture_path(src, {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}), ColorSpace::Srgb);
       want(Wanted::Role::Normal, texture_path(src, {aiTextureType_NORMALS, aiTextureType_NORMAL_CAMERA, aiTextureType_HEIGHT}),
            ColorSpace::Linear);
-      want(Wanted::Role::Emissive, texture_path(src, {aiTextureType_EMISSION_COLOR, aiTextureType_EMISSIVE}), ColorSpace::Srgb);
-      if (texture_path(src, {aiTextureType_EMISSION_COLOR, aiTextureType_EMISSIVE}) && m.emissive_factor == glm::vec3(0.0f)) {
-        m.emissive_factor = glm::vec3(1.0f);
-      }
+      const auto emissive_texture = texture_path(src, {aiTextureType_EMISSION_COLOR, aiTextureType_EMISSIVE});
+      want(Wanted::Role::Emissive, emissive_texture, ColorSpace::Srgb);
+      if (emissive_texture && m.emissive_factor == glm::vec3(0.0f)) m.emissive_factor = glm::vec3(1.0f);
       if (convention_ == MaterialConvention::Bistro) {
         // "Specular": occlusion in red, roughness in green, metalness in blue.
         want(Wanted::Role::MetallicRoughness, texture_path(src, {aiTextureType_SPECULAR}), ColorSpace::Linear);

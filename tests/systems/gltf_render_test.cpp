@@ -14,6 +14,7 @@
 #include "assets/image.hpp"
 #include "assets/mesh_builder.hpp"
 #include "assets/scene_file.hpp"
+#include "support/adopt_views.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
 #include "support/reference_shading.hpp"
@@ -34,12 +35,7 @@ using GltfRender = testing::GlTest;
 assets::SceneDescription model_scene(const fs::path& path, assets::AssetManager& assets, const assets::SceneDescription* like) {
   assets::LoadReport report;
   assets::SceneDescription scene = assets::load_model_scene(path, assets, 24, report);
-  if (like) {
-    scene.views = like->views;
-    scene.lights = like->lights;
-    scene.bounds_min = like->bounds_min;
-    scene.bounds_max = like->bounds_max;
-  }
+  if (like) testing::adopt_views_and_lights(scene, *like);
   return scene;
 }
 

@@ -19,6 +19,7 @@
 #include "assets/image.hpp"
 #include "assets/mesh_builder.hpp"
 #include "assets/scene_file.hpp"
+#include "support/adopt_views.hpp"
 #include "support/gl_test.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -45,12 +46,7 @@ std::vector<Frame> render(const fs::path& model, const std::string& mode, const 
   assets::LoadReport report;
   assets::SceneDescription scene = assets::load_model_scene(model, assets, 24, report);
   if (own) *own = scene;
-  if (like) {
-    scene.views = like->views;
-    scene.lights = like->lights;
-    scene.bounds_min = like->bounds_min;
-    scene.bounds_max = like->bounds_max;
-  }
+  if (like) testing::adopt_views_and_lights(scene, *like);
   WorldOptions options;
   options.mode = mode;
   options.size = kSize;
