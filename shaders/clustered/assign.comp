@@ -7,8 +7,11 @@
 // bounds the loop any one invocation runs (llvmpipe ends a shader's loops after
 // 65,535 iterations in all) and spreads a million lights over many invocations.
 // No cap per cluster: when the list is too small the C++ side grows it and runs
-// the three steps again. With ACTIVE_ONLY, clusters that hold no visible pixel
-// get no lights.
+// the three steps again. With PIXEL_BOUNDS (the default) each cluster is tested
+// by the box of the pixels it holds (mark_active.comp), padded by a millimetre
+// per metre for the lighting passes' own reconstruction of those positions;
+// clusters without pixels get no lights. With ACTIVE_ONLY, the grid's boxes,
+// and clusters that hold no visible pixel get no lights.
 layout(local_size_x = 64) in;
 
 #include "common/frame.glsl"
@@ -22,6 +25,20 @@ struct ClusterBounds {
 layout(std430, binding = 4) readonly buffer Bounds { ClusterBounds u_bounds[]; };
 #ifdef ACTIVE_ONLY
 layout(std430, binding = 6) readonly buffer Active { uint u_active[]; };
+#endif
+#ifdef PIXEL_BOUNDS
+layout(std430, binding = 6) readonly buffer PixelBounds { uvec4 u_pixel_bounds[]; };
+
+// The box of the cluster's pixels; false when it holds none.
+bool pixel_box(uint cluster, out ClusterBounds box) {
+  uvec4 lo = u_pixel_bounds[cluster], hi = u_pixel_bounds[u_grid.w + cluster];
+  if (lo.x > hi.x) return false;
+  vec3 l = vec3(ordered_to_float(lo.x), ordered_to_float(lo.y), ordered_to_float(lo.z));
+  vec3 h = vec3(ordered_to_float(hi.x), ordered_to_float(hi.y), ordered_to_float(hi.z));
+  vec3 pad = vec3(1e-3 * (1.0 + max(-l.z, 0.0)));
+  box = ClusterBounds(vec4(l - pad, 0.0), vec4(h + pad, 0.0));
+  return true;
+}
 #endif
 // Per chunk and cluster (chunk-major): COUNT writes the count, RESERVE
 // replaces it with the chunk's offset within the cluster's range.
@@ -102,6 +119,9 @@ void main() {
   ClusterBounds box = assign ? u_bounds[cluster] : ClusterBounds(vec4(0.0), vec4(0.0));
 #ifdef ACTIVE_ONLY
   assign = assign && u_active[cluster] != 0u;
+#endif
+#ifdef PIXEL_BOUNDS
+  assign = assign && pixel_box(cluster, box);
 #endif
   uint first = chunk * LIGHT_CHUNK, end = min(first + LIGHT_CHUNK, u_light_count);
   uint slot = chunk * u_grid.w + cluster;

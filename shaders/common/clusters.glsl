@@ -25,3 +25,11 @@ uint cluster_index(vec2 frag_coord, vec2 viewport, float view_depth) {
   uvec2 tile = uvec2(clamp(frag_coord / viewport * vec2(u_grid.xy), vec2(0.0), vec2(u_grid.xy) - 1.0));
   return (cluster_slice(view_depth) * u_grid.y + tile.y) * u_grid.x + tile.x;
 }
+
+// Floats as unsigned integers that sort like the floats, so that atomicMin and
+// atomicMax on them keep the least and greatest float (pixel bounds).
+uint float_to_ordered(float f) {
+  uint bits = floatBitsToUint(f);
+  return (bits & 0x80000000u) != 0u ? ~bits : (bits | 0x80000000u);
+}
+float ordered_to_float(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? (u & 0x7fffffffu) : ~u); }

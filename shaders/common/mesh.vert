@@ -1,10 +1,12 @@
 #version 450 core
 // Scene geometry for every pass that rasterises meshes (forward shading, the
 // G-buffer pass, depth pre-passes): clip-space position plus world position,
-// normal, tangent, both UV sets and the vertex colour for material evaluation.
+// normal, tangent, each texture slot's UV, the vertex colour and the material
+// for material evaluation.
 // Each vertex finds its instance's transforms through a_instance (the
 // instance-index attribute, offset by the draw's base instance).
 #include "common/frame.glsl"
+#include "common/material_table.glsl"
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
@@ -18,15 +20,22 @@ layout(location = 6) in uint a_instance;
 struct Instance {
   mat4 model;
   mat4 normal_matrix;  // the inverse transpose in the upper-left 3x3
+  uvec4 material;      // x: index into the frame's material table (material_data.glsl)
 };
 layout(std430, binding = 1) readonly buffer Instances { Instance u_instances[]; };
 
 out vec3 v_position;
 out vec3 v_normal;
 out vec4 v_tangent;
-out vec2 v_uv0;
-out vec2 v_uv1;
+// Per material texture slot (base colour, metallic-roughness, normal,
+// occlusion, emissive): the UV set it reads through its KHR_texture_transform.
+// An affine map commutes with interpolation, so it is applied here once per
+// vertex; fragments then take derivatives of values no storage read feeds
+// (llvmpipe's helper invocations read zeros from storage buffers).
+out vec2 v_uv[5];
 out vec4 v_color;
+flat out uint v_material;
+flat out uint v_material_flags;  // Material.flags, for branches that must agree across a pixel quad
 
 // Every pass that draws the same mesh computes the same depth: the depth
 // pre-pass of forward+ and its shading pass compare with LEQUAL.
@@ -38,8 +47,13 @@ void main() {
   v_position = world.xyz;
   v_normal = mat3(instance.normal_matrix) * a_normal;
   v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, a_tangent.w);
-  v_uv0 = a_uv0;
-  v_uv1 = a_uv1;
+  Material material = u_materials[instance.material.x];
+  for (int slot = 0; slot < 5; ++slot) {
+    vec3 uv = vec3((material.uv_sets & (1u << slot)) != 0u ? a_uv1 : a_uv0, 1.0);
+    v_uv[slot] = vec2(dot(material.uv_transform[2 * slot].xyz, uv), dot(material.uv_transform[2 * slot + 1].xyz, uv));
+  }
+  v_material_flags = material.flags;
   v_color = a_color;
+  v_material = instance.material.x;
   gl_Position = u_view_projection * world;
 }

@@ -11,13 +11,12 @@
 in vec3 v_position;
 in vec3 v_normal;
 in vec4 v_tangent;
-in vec2 v_uv0;
-in vec2 v_uv1;
+in vec2 v_uv[5];
 in vec4 v_color;
 
 void main() {
   count_fragment();
-  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv0, v_uv1, v_color, gl_FrontFacing);
-  if (s.alpha < u_alpha_cutoff) discard;
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
+  if (s.alpha < material_alpha_cutoff()) discard;
   write_gbuffer(s);
 }

@@ -65,7 +65,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
   row.reaching_per_pixel = reaching;
   std::vector<double> frame_ms;
-  std::map<std::string, std::vector<double>> pass_ms;
+  std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
   for (int f = 0; f < warmup + frames; ++f) {
     glFinish();
@@ -84,12 +84,17 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
     for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
       if (!pass_ms.contains(pass.name)) pass_order.push_back(pass.name);
       pass_ms[pass.name].push_back(pass.milliseconds);
+      pass_cpu_ms[pass.name].push_back(pass.cpu_milliseconds);
     }
+    row.triangles_drawn = world.renderer().stats().triangles_drawn;
+    row.draw_calls = world.renderer().stats().draw_calls;
   }
   row.median_ms = percentile(frame_ms, 0.5);
   row.p5_ms = percentile(frame_ms, 0.05);
   row.p95_ms = percentile(frame_ms, 0.95);
-  for (const std::string& name : pass_order) row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5)});
+  for (const std::string& name : pass_order) {
+    row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5)});
+  }
   row.evaluated_per_pixel = count_evaluations(world, mode);
   return row;
 }
@@ -130,7 +135,7 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
-                 bench_radius(options, lights), 0, options.camera});
+                 bench_radius(options, lights), 0, options.camera, options.frustum_culling});
     std::vector<int> views = options.views;
     if (views.empty()) {
       for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
@@ -227,8 +232,8 @@ std::string bench_markdown(const BenchResult& result) {
     }
   }
   md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image):\n\n"
-        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency |\n"
-        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|\n";
+        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws |\n"
+        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
@@ -236,7 +241,7 @@ std::string bench_markdown(const BenchResult& result) {
     md << "| " << row.mode << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
-       << fixed(row.efficiency(), 3) << " |\n";
+       << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " |\n";
   }
   return md.str();
 }
@@ -244,15 +249,20 @@ std::string bench_markdown(const BenchResult& result) {
 std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
-         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused\n";
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
-    for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
+    std::string cpu_passes;
+    for (const auto& pass : row.pass_medians) {
+      passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
+      cpu_passes += (cpu_passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.cpu_milliseconds, 4);
+    }
     csv << row.mode << "," << row.lights << "," << row.view << "," << row.view_name << "," << result.options.size.x << ","
         << result.options.size.y << "," << result.options.frames << "," << fixed(row.median_ms, 4) << "," << fixed(row.p5_ms, 4)
         << "," << fixed(row.p95_ms, 4) << "," << fixed(row.fps(), 3) << "," << fixed(row.evaluated_per_pixel, 4) << ","
         << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
-        << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"\n";
+        << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
+        << row.draw_calls << ",\"" << cpu_passes << "\"\n";
   }
   return csv.str();
 }

@@ -32,6 +32,7 @@ struct BenchOptions {
   bool constant_density = false;             // radii shrink as cbrt(1024 / lights)
   std::string shading = "pbr";
   lighting::TechniqueOptions technique_options;
+  bool frustum_culling = true;               // --no-culling
 };
 
 struct BenchRow {
@@ -40,7 +41,9 @@ struct BenchRow {
   int view = 1;
   std::string view_name;
   double median_ms = 0, p5_ms = 0, p95_ms = 0;
-  std::vector<gfx::PassTime> pass_medians;
+  std::vector<gfx::PassTime> pass_medians;  // GPU and CPU (submission) medians per pass
+  std::size_t triangles_drawn = 0;  // per geometry pass, after frustum culling
+  std::size_t draw_calls = 0;       // per geometry pass
   double evaluated_per_pixel = 0;  // light evaluations the mode performed
   double reaching_per_pixel = 0;   // lights whose radius covers the pixel; NaN where not countable
   // Why the driver refused this mode at this light count (gfx::ResourceLimitError),

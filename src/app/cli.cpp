@@ -1,6 +1,7 @@
 #include "app/cli.hpp"
 
 #include <algorithm>
+#include <array>
 #include <charconv>
 #include <cstdlib>
 #include <fstream>
@@ -24,6 +25,19 @@
 
 namespace atrium {
 namespace {
+
+// The enumerator whose name is `text`; `what` and `plural` word the refusal:
+// "unknown G-buffer layout 'x' (layouts: full, compact)".
+template <typename Enum, std::size_t N>
+Enum parse_choice(std::string_view text, const std::array<std::string_view, N>& names, const char* what, const char* plural) {
+  const auto found = std::find(names.begin(), names.end(), text);
+  if (found == names.end()) {
+    std::string list;
+    for (const std::string_view name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+    throw UsageError("unknown " + std::string(what) + " '" + std::string(text) + "' (" + plural + ": " + list + ")");
+  }
+  return static_cast<Enum>(found - names.begin());
+}
 
 template <typename T>
 T parse_number(std::string_view flag, std::string_view text, T min, T max) {
@@ -140,8 +154,11 @@ std::string help_text() {
          "Options:\n"
          "  --mode M        lighting technique (default: the scene's, 'forward')\n"
          "  --shading S     shading model: pbr (default), blinn-phong or phong\n"
-         "  --cluster-grid XxYxZ  clustered modes: clusters per axis (default 16x9x24)\n"
-         "  --active-clusters     clustered modes: only clusters holding visible pixels get lights\n"
+         "  --cluster-grid XxYxZ  clustered modes: clusters per axis (default 16x9x32)\n"
+         "  --cluster-bounds B    clustered modes: test lights against each cluster's box of the\n"
+         "                  pixels it holds (pixels, default) or its whole frustum slice (grid)\n"
+         "  --active-clusters     clustered modes, grid bounds: only clusters holding visible\n"
+         "                  pixels get lights\n"
          "  --gbuffer L     deferred modes: G-buffer layout, full (5 targets, 44 B/px, default)\n"
          "                  or compact (2 targets, 24 B/px; position from depth, octahedral normal)\n"
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
@@ -166,6 +183,8 @@ std::string help_text() {
          "  --frames N      window: quit after N frames (for scripted runs)\n"
          "  --gl-debug      window: report GL errors through KHR_debug and print their count\n"
          "                  on exit (always on in debug builds)\n"
+         "  --no-culling    render, compare, bench, window: draw the whole scene in every pass\n"
+         "                  (frustum culling is on by default; for comparisons)\n"
          "  --json          info: print JSON\n"
          "\n"
          "Modes:\n" + modes +
@@ -220,12 +239,12 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
           parse_number<unsigned>("--cluster-grid", std::string_view(text).substr(x2 + 1), 2, 256)};
     } else if (arg == "--active-clusters") {
       options.technique_options.active_clusters = true;
+    } else if (arg == "--cluster-bounds") {
+      options.technique_options.cluster_bounds =
+          parse_choice<lighting::ClusterBounds>(value(), lighting::kClusterBoundsNames, "cluster bounds", "bounds");
     } else if (arg == "--gbuffer") {
-      const std::string_view layout = value();
-      const auto& names = lighting::kGBufferLayoutNames;
-      const auto found = std::find(names.begin(), names.end(), layout);
-      if (found == names.end()) throw UsageError("unknown G-buffer layout '" + std::string(layout) + "' (layouts: full, compact)");
-      options.technique_options.gbuffer_layout = static_cast<lighting::GBufferLayout>(found - names.begin());
+      options.technique_options.gbuffer_layout =
+          parse_choice<lighting::GBufferLayout>(value(), lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
     } else if (arg == "--debug-view") {
       options.debug_view = std::string(value());
       if (lighting::debug_view_index(options.debug_view) < 0) {
@@ -266,6 +285,8 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
       options.json = true;
     } else if (arg == "--frames") {
       options.frames = parse_number<std::uint64_t>("--frames", value(), 1, 1'000'000'000);
+    } else if (arg == "--no-culling") {
+      options.frustum_culling = false;
     } else if (arg == "--gl-debug") {
       options.gl_debug = true;
     } else if (arg.starts_with("-")) {
@@ -301,7 +322,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius, options.max_texture_size, options.camera};
+          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling};
 }
 
 namespace {
@@ -319,10 +340,10 @@ int run_render(const CliOptions& options) {
   if (options.debug_view == "light-lists") world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
-  std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles in %zu draws, %s)\n",
+  std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles drawn of %zu in %zu draws, %s)\n",
               options.out.c_str(), options.size.x, options.size.y, world.mode().c_str(), world.view(),
               world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(), stats.lights,
-              stats.triangles, stats.draw_calls, context->info().renderer.c_str());
+              stats.triangles_drawn, stats.triangles, stats.draw_calls, context->info().renderer.c_str());
   if (options.debug_view == "heatmap") {
     std::printf("light evaluations per pixel: %.2f on average\n", stats.light_evaluations_per_pixel);
   }
@@ -419,6 +440,7 @@ int run_bench_command(const CliOptions& options) {
   bench.shading = options.shading;
   bench.technique_options = options.technique_options;
   bench.camera = options.camera;
+  bench.frustum_culling = options.frustum_culling;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   ProgressBar bar("bench");
   const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });

@@ -47,6 +47,7 @@ struct CliOptions {
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
   bool json = false;                    // info: print JSON
+  bool frustum_culling = true;          // --no-culling
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)
   BenchOptions bench;                   // bench: the sweep
   std::string csv, md, plot;            // bench: output files

@@ -20,6 +20,7 @@
 #include "components/mesh_instance.hpp"
 #include "systems/bounds.hpp"
 #include "systems/camera.hpp"
+#include "systems/frustum_culling.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/light_falloff.hpp"
 #include "systems/lighting/technique.hpp"
@@ -150,10 +151,12 @@ void World::start(const WorldOptions& options) {
   settings.shading = options.shading;
   settings.debug_view = options.debug_view;
   settings.technique_options = options.technique_options;
+  settings.frustum_culling = options.frustum_culling;
   set_view(options.view);
 
   register_bounds(scheduler_);
   register_camera(scheduler_);
+  register_frustum_culling(scheduler_);
   register_light_buffer(scheduler_);
   register_mesh_renderer(scheduler_);
 }

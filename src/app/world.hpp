@@ -41,6 +41,8 @@ struct WorldOptions {
   int max_texture_size = 0;
   // --camera: this one view replaces the scene's views.
   std::optional<assets::NamedView> camera;
+  // --no-culling: every pass draws the whole scene.
+  bool frustum_culling = true;
 };
 
 class World {

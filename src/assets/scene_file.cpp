@@ -311,23 +311,43 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
 
   bool any_bounds = false;
   std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
+  std::optional<ModelImport> builtin;
+  std::vector<NamedView> builtin_views;
   if (root.contains("models")) {
     const json& models = r.array(root["models"], "/models");
     for (std::size_t i = 0; i < models.size(); ++i) {
       const std::string p = "/models/" + std::to_string(i);
       const json& m = models[i];
       r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch", "materials"});
+      glm::mat4 placement(1.0f);
+      if (m.contains("position")) placement = glm::translate(placement, r.vec3(m["position"], p + "/position"));
+      if (m.contains("rotation_degrees")) placement *= glm::mat4_cast(glm::quat(glm::radians(r.vec3(m["rotation_degrees"], p + "/rotation_degrees"))));
+      if (m.contains("scale")) {
+        const glm::vec3 scale = m["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(m["scale"], p + "/scale", 1e-6, 1e6, "a positive number")))
+                                                       : r.vec3(m["scale"], p + "/scale", 1e-6, 1e6);
+        placement = glm::scale(placement, scale);
+      }
       if (m.contains("builtin")) {
         // The procedural courtyard as a model: its geometry and views; lights come from this file.
         if (r.string(m["builtin"], p + "/builtin") != kBuiltinSceneName) {
           r.fail(p + "/builtin", std::string("expected \"") + kBuiltinSceneName + "\"");
         }
-        const SceneDescription builtin = build_builtin_scene(assets, 0u);
-        scene.instances.insert(scene.instances.end(), builtin.instances.begin(), builtin.instances.end());
-        grow_bounds(scene, builtin.bounds_min, builtin.bounds_max, any_bounds);
-        if (scene.views.empty()) scene.views = builtin.views;
-        scene.exposure = builtin.exposure;
-        scene.background = builtin.background;
+        // Built once: every copy places the same asset, so copies draw instanced.
+        if (!builtin) {
+          const SceneDescription courtyard = build_builtin_scene(assets, 0u);
+          builtin.emplace();
+          builtin->asset = courtyard.instances.empty() ? MeshAssetHandle{} : courtyard.instances.front().asset;
+          builtin->instances = courtyard.instances;
+          builtin->bounds_min = courtyard.bounds_min;
+          builtin->bounds_max = courtyard.bounds_max;
+          builtin->empty = courtyard.instances.empty();
+          builtin_views = courtyard.views;
+          scene.exposure = courtyard.exposure;
+          scene.background = courtyard.background;
+        }
+        add_model(scene, *builtin, placement, any_bounds);
+        // Its views are in its own frame: they hold for a copy left where it was built.
+        if (scene.views.empty() && placement == glm::mat4(1.0f)) scene.views = builtin_views;
         continue;
       }
       const fs::path model_path = (path.parent_path() / r.string(r.member(m, p, "path"), p + "/path")).lexically_normal();
@@ -347,14 +367,6 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
         }
         imported.emplace(key, import_model(model_path, assets, options));
         merge_report(report, imported.at(key));
-      }
-      glm::mat4 placement(1.0f);
-      if (m.contains("position")) placement = glm::translate(placement, r.vec3(m["position"], p + "/position"));
-      if (m.contains("rotation_degrees")) placement *= glm::mat4_cast(glm::quat(glm::radians(r.vec3(m["rotation_degrees"], p + "/rotation_degrees"))));
-      if (m.contains("scale")) {
-        const glm::vec3 scale = m["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(m["scale"], p + "/scale", 1e-6, 1e6, "a positive number")))
-                                                       : r.vec3(m["scale"], p + "/scale", 1e-6, 1e6);
-        placement = glm::scale(placement, scale);
       }
       add_model(scene, imported.at(key), placement, any_bounds);
     }

@@ -1,16 +1,35 @@
 // World-space axis-aligned boxes, kept by the bounds system (systems/bounds.hpp):
 // WorldBounds on every entity with a MeshInstance, SceneBounds (a resource) over
-// all of them. The camera fits its depth planes to SceneBounds.
+// all of them. The camera fits its depth planes to SceneBounds; frustum culling
+// tests the per-primitive boxes.
 #pragma once
+
+#include <cstdint>
+#include <vector>
 
 #include <glm/glm.hpp>
 
+#include "assets/handles.hpp"
+
 namespace atrium {
+
+struct Box {
+  glm::vec3 min{0.0f};
+  glm::vec3 max{0.0f};
+  bool empty = true;  // holds no triangle
+};
 
 struct WorldBounds {
   glm::vec3 min{0.0f};
   glm::vec3 max{0.0f};
   bool empty = true;  // the instance draws no triangle
+  // One box per primitive of the instance's mesh, in the mesh's order.
+  std::vector<Box> primitives;
+  // What the boxes were computed from: the bounds system recomputes them only
+  // when the entity's model matrix or mesh changes.
+  glm::mat4 model{0.0f};
+  assets::MeshAssetHandle asset;
+  std::uint32_t mesh = 0;
 };
 
 struct SceneBounds {

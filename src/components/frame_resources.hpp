@@ -42,6 +42,7 @@ struct RendererSettings {
   lighting::TechniqueOptions technique_options;
   bool present_to_window = false;  // blit the final image to the default framebuffer
   bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)
+  bool frustum_culling = true;     // off: every pass draws the whole scene (--no-culling, for comparisons)
 };
 
 }  // namespace atrium

@@ -64,10 +64,13 @@ void PassTimer::begin_pass(const std::string& name) {
   pass.name = name;
   glBeginQuery(GL_TIME_ELAPSED, pass.query.id());
   if (counts_fragments_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, pass.fragments.id());
+  pass_start_ = std::chrono::steady_clock::now();
 }
 
 void PassTimer::end_pass() {
+  const double cpu_milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass_start_).count();
   if (method_ == TimingMethod::CpuFinish) {
+    current_.back().cpu_milliseconds = cpu_milliseconds;
     glFinish();
     current_.back().milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass_start_).count();
@@ -79,6 +82,7 @@ void PassTimer::end_pass() {
     }
     return;
   }
+  frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1].cpu_milliseconds = cpu_milliseconds;
   glEndQuery(GL_TIME_ELAPSED);
   if (counts_fragments_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
@@ -97,7 +101,7 @@ void PassTimer::collect() {
       GLuint64 nanoseconds = 0, fragments = 0;
       glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &nanoseconds);
       if (counts_fragments_) glGetQueryObjectui64v(frame.passes[i].fragments.id(), GL_QUERY_RESULT, &fragments);
-      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6, fragments});
+      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6, fragments, frame.passes[i].cpu_milliseconds});
     }
     latest_ = std::move(times);
     frame.pending = false;

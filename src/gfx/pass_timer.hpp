@@ -5,7 +5,8 @@
 // timed with a steady clock; method() says which is in use. Where the driver
 // counts pipeline statistics (GL 4.6 or ARB_pipeline_statistics_query, llvmpipe
 // included), each pass also counts its fragment shader invocations: the
-// fragments it shaded, overdraw and helper invocations included.
+// fragments it shaded, overdraw and helper invocations included. Either way
+// each pass also reports the CPU time spent issuing its commands.
 #pragma once
 
 #include <array>
@@ -23,6 +24,10 @@ struct PassTime {
   std::string name;
   double milliseconds = 0.0;
   std::uint64_t fragments = 0;  // fragment shader invocations; 0 without pipeline statistics
+  // What the pass cost the CPU: from its start until its last command was
+  // issued (before any wait for the GPU). On llvmpipe this includes vertex
+  // processing and binning, which run in the calling thread.
+  double cpu_milliseconds = 0.0;
 };
 
 class PassTimer {
@@ -66,6 +71,7 @@ class PassTimer {
     std::string name;
     Query query;
     Query fragments;  // empty without pipeline statistics
+    double cpu_milliseconds = 0.0;
   };
   struct FrameQueries {
     std::vector<QueryPass> passes;
@@ -81,7 +87,7 @@ class PassTimer {
   std::array<FrameQueries, kFramesInFlight> frames_;
   std::size_t frame_ = 0;
   std::vector<PassTime> current_;  // CpuFinish: the frame being timed
-  std::chrono::steady_clock::time_point pass_start_;
+  std::chrono::steady_clock::time_point pass_start_;  // after the GPU went idle (CpuFinish) or the pass began
   std::vector<PassTime> latest_;
 };
 

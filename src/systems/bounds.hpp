@@ -1,6 +1,7 @@
-// The bounds system (PostUpdate, before the camera): each frame gives every
-// entity with Transform + MeshInstance its WorldBounds (the box of its mesh's
-// triangles, transformed) and sets the SceneBounds resource to their union, so
+// The bounds system (PostUpdate, before the camera): gives every entity with
+// Transform + MeshInstance its WorldBounds (the boxes of its mesh's primitives,
+// transformed, and their union), recomputed when the entity's model matrix or
+// mesh changes, and sets the SceneBounds resource to their union each frame, so
 // boxes follow entities that move.
 #pragma once
 

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "components/frame_resources.hpp"
+#include "components/visibility.hpp"
 #include "gfx/depth.hpp"
 #include "gfx/limits.hpp"
 #include "systems/light_buffer.hpp"
@@ -111,19 +112,23 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ""));
 }
 
-void MeshRenderer::upload_instances(const lighting::DrawList& draws) {
+void MeshRenderer::StreamBuffer::upload(const void* data, std::size_t bytes) {
+  if (bytes > capacity || !buffer) {
+    capacity = std::max({bytes, 2 * capacity, std::size_t{256}});
+    buffer = gfx::create_buffer();
+    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (bytes) glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
+}
+
+void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   gpu_.reserve_instances(draws.instances.size());
-  const std::size_t bytes = std::max<std::size_t>(1, draws.instances.size()) * sizeof(lighting::InstanceData);
-  if (bytes > instance_bytes_) {
-    instance_bytes_ = std::max(bytes, 2 * instance_bytes_);
-    instances_ = gfx::create_buffer();
-    glNamedBufferStorage(instances_.id(), static_cast<GLsizeiptr>(instance_bytes_), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  if (!draws.instances.empty()) {
-    glNamedBufferSubData(instances_.id(), 0, static_cast<GLsizeiptr>(draws.instances.size() * sizeof(lighting::InstanceData)),
-                         draws.instances.data());
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.id());
+  instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
+  materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
+  commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
 }
 
 void MeshRenderer::render(ecs::Registry& registry) {
@@ -162,8 +167,16 @@ void MeshRenderer::render(ecs::Registry& registry) {
 
   timer_.begin_frame();
   const lighting::DrawList draws = lighting::build_draw_list(registry, assets, gpu, view.view);
-  stats_ = {draws.opaque.size() + draws.blended.size(), draws.triangles, lights.count};
-  upload_instances(draws);
+  stats_ = {};
+  stats_.draw_calls = draws.draw_calls();
+  stats_.triangles = draws.triangles;
+  stats_.triangles_drawn = draws.triangles_drawn;
+  stats_.lights = lights.count;
+  if (const auto* culling = registry.try_resource<CullingStats>()) {
+    stats_.objects = culling->objects;
+    stats_.objects_drawn = culling->objects_visible;
+  }
+  upload_draws(draws);
 
   lighting::FrameUniforms uniforms{};
   uniforms.view = view.view;

@@ -24,8 +24,11 @@ class DebugViews;
 namespace atrium {
 
 struct FrameStats {
-  std::size_t draw_calls = 0;
-  std::size_t triangles = 0;
+  std::size_t draw_calls = 0;       // multi-draws one geometry pass issues (opaque and blended)
+  std::size_t triangles = 0;        // in the scene
+  std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum culling
+  std::size_t objects = 0;          // entities with a mesh
+  std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
   double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
   double fragments_per_pixel = 0.0;          // rasterised by geometry passes, while the fragments view is shown
@@ -73,9 +76,10 @@ class MeshRenderer {
   // Throws gfx::ResourceLimitError when the driver limits shader loops and a
   // pixel of this frame would loop over more lights than that limit.
   void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
-  // Copies the frame's instance records to the GPU and binds them at
-  // lighting::kInstanceStorageBinding.
-  void upload_instances(const lighting::DrawList& draws);
+  // Copies the frame's instance records, materials and indirect commands to
+  // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
+  // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame.
+  void upload_draws(const lighting::DrawList& draws);
 
   glm::ivec2 size_{0};
   std::string mode_;
@@ -91,8 +95,13 @@ class MeshRenderer {
   gfx::Texture output_color_;
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
-  gfx::Buffer instances_;
-  std::size_t instance_bytes_ = 0;
+  // A storage buffer that grows (doubling) to hold what a frame uploads.
+  struct StreamBuffer {
+    gfx::Buffer buffer;
+    std::size_t capacity = 0;
+    void upload(const void* data, std::size_t bytes);
+  };
+  StreamBuffer instances_, materials_, commands_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram& tonemap_;

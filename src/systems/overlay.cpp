@@ -110,7 +110,9 @@ void Overlay::statistics(ecs::Registry& registry) {
   const RendererSettings& settings = registry.resource<RendererSettings>();
   ImGui::Text("%.1f fps, %.2f ms per frame", fps_, frame_ms_);
   ImGui::Text("mode %s, shading %s", settings.mode.c_str(), settings.shading.c_str());
-  ImGui::Text("%u lights, %zu triangles, %zu draw calls", stats.lights, stats.triangles, stats.draw_calls);
+  ImGui::Text("%u lights; per geometry pass %zu of %zu triangles, %zu draw calls", stats.lights, stats.triangles_drawn,
+              stats.triangles, stats.draw_calls);
+  ImGui::Text("%zu of %zu objects in view%s", stats.objects_drawn, stats.objects, settings.frustum_culling ? "" : " (culling off)");
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
   }
@@ -119,9 +121,10 @@ void Overlay::statistics(ecs::Registry& registry) {
   // camera inside foliage) from one that shades expensively.
   const bool fragments = renderer.timer().counts_fragments();
   const double pixels = std::max(1.0, static_cast<double>(renderer.size().x) * renderer.size().y);
-  if (ImGui::BeginTable("passes", fragments ? 3 : 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+  if (ImGui::BeginTable("passes", fragments ? 4 : 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
     ImGui::TableSetupColumn("pass");
     ImGui::TableSetupColumn("ms");
+    ImGui::TableSetupColumn("CPU ms");
     if (fragments) ImGui::TableSetupColumn("fragments/px");
     ImGui::TableHeadersRow();
     for (const gfx::PassTime& pass : renderer.timer().latest()) {
@@ -130,6 +133,8 @@ void Overlay::statistics(ecs::Registry& registry) {
       ImGui::TextUnformatted(pass.name.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.2f", pass.milliseconds);
+      ImGui::TableNextColumn();
+      ImGui::Text("%.2f", pass.cpu_milliseconds);
       if (fragments) {
         ImGui::TableNextColumn();
         ImGui::Text("%.2f", static_cast<double>(pass.fragments) / pixels);

@@ -49,10 +49,13 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 18u);
+  ASSERT_EQ(header.size(), 21u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
+  EXPECT_EQ(header[18], "triangles_drawn");
+  EXPECT_EQ(header[19], "draw_calls");
+  EXPECT_EQ(header[20], "cpu_passes");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -63,6 +66,13 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_GE(std::stod(f[9]), std::stod(f[7])) << "p95 >= median";
     EXPECT_NE(f[14].find("tonemap="), std::string::npos) << "per-pass medians";
     EXPECT_EQ(f[17], "") << "nothing refused";
+    // The built-in scene: views 1 and 2 see most of its 251,144 triangles, in
+    // one multi-draw per texture set (10 materials).
+    EXPECT_GT(std::stoul(f[18]), 100000u);
+    EXPECT_LE(std::stoul(f[18]), 251144u);
+    EXPECT_GE(std::stoul(f[19]), 1u);
+    EXPECT_LE(std::stoul(f[19]), 10u);
+    EXPECT_NE(f[20].find("tonemap="), std::string::npos) << "per-pass CPU medians";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);

@@ -39,6 +39,7 @@ std::vector<std::vector<std::uint32_t>> expect_lists_equal_cpu(World& world) {
 TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
   World world({"atrium", 300u, "clustered-deferred", 3, {160, 90}});
   world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   world.frame(0.0);
   const lighting::ClusterGrid& grid = grid_of(world);
   ASSERT_EQ(grid.dims(), glm::uvec3(4, 3, 6));
@@ -54,6 +55,7 @@ TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder
   constexpr std::uint32_t kLights = 2 * lighting::kAssignLightChunk + 5000;
   World world({"atrium", kLights, "clustered-forward", 1, {96, 54}, "pbr", "", {}, 0.4f});
   world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   world.frame(0.0);
   std::size_t from_last_chunk = 0;
   for (const auto& list : expect_lists_equal_cpu(world)) {
@@ -123,6 +125,7 @@ TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
 
 TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
   World world({"atrium", 200u, "clustered-deferred", 2, {96, 54}});
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   world.frame(0.0);
   const assets::Image all = world.renderer().read_output();
   const std::uint32_t total_all = grid_of(world).list().last_total();
@@ -130,6 +133,53 @@ TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
   world.frame(0.0);
   EXPECT_TRUE(std::isinf(assets::psnr(all, world.renderer().read_output())));
   EXPECT_LT(grid_of(world).list().last_total(), total_all) << "empty clusters received no lights";
+}
+
+// Pixel bounds: each cluster's list is the grid list less the lights that miss
+// every pixel it holds, so the picture is unchanged and far fewer lights are
+// evaluated per pixel.
+TEST_F(ClusterGridTest, PixelBoundsKeepEveryLightThatReachesAPixelAndDropMostThatDoNot) {
+  for (const int view : {1, 3, 5}) {
+    World world({"atrium", 1024u, "clustered-deferred", view, {160, 90}});
+    auto& options = world.registry().resource<RendererSettings>().technique_options;
+    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    world.frame(0.0);
+    const assets::Image grid_image = world.renderer().read_output();
+    const auto grid_lists = grid_of(world).read_lists();
+    options.cluster_bounds = lighting::ClusterBounds::Pixels;
+    world.frame(0.0);
+    EXPECT_GE(assets::psnr(grid_image, world.renderer().read_output()), 50.0) << "view " << view;
+    const auto pixel_lists = grid_of(world).read_lists();
+    ASSERT_EQ(pixel_lists.size(), grid_lists.size());
+    std::size_t grid_total = 0, pixel_total = 0;
+    for (std::size_t c = 0; c < grid_lists.size(); ++c) {
+      EXPECT_TRUE(std::includes(grid_lists[c].begin(), grid_lists[c].end(), pixel_lists[c].begin(), pixel_lists[c].end()))
+          << "cluster " << c << " view " << view;
+      grid_total += grid_lists[c].size();
+      pixel_total += pixel_lists[c].size();
+    }
+    EXPECT_LT(pixel_total * 2, grid_total) << "view " << view;
+  }
+}
+
+// Evaluated lights per pixel against those whose radius covers the pixel
+// (deferred-radius evaluates exactly those), from the heatmap counters.
+double evaluated_per_pixel(World& world, const std::string& mode) {
+  world.set_mode(mode);
+  world.registry().resource<RendererSettings>().debug_view = "heatmap";
+  world.frame(0.0);
+  world.registry().resource<RendererSettings>().debug_view.clear();
+  return world.renderer().stats().light_evaluations_per_pixel;
+}
+
+TEST_F(ClusterGridTest, PixelBoundsEvaluateAtLeastSevenOfTenLightsThatReachOnTheBuiltinSceneAt1024Lights) {
+  double evaluated = 0.0, reaching = 0.0;
+  for (int view = 1; view <= 5; ++view) {
+    World world({"atrium", 1024u, "clustered-deferred", view, {320, 180}});
+    reaching += evaluated_per_pixel(world, "deferred-radius");
+    evaluated += evaluated_per_pixel(world, "clustered-deferred");
+  }
+  EXPECT_GE(reaching / evaluated, 0.7) << "reaching " << reaching / 5 << ", evaluated " << evaluated / 5 << " per pixel";
 }
 
 }  // namespace

@@ -9,14 +9,15 @@
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kBoundsBinding = 4, kActiveBinding = 6, kChunkCountsBinding = 7;
+constexpr GLuint kBoundsBinding = 4, kPerClusterBinding = 6, kChunkCountsBinding = 7;
 }  // namespace
 
-ClusterAssignPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, bool active_only) {
+ClusterAssignPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only) {
   auto step = [&](const char* name) -> gfx::ShaderProgram& {
     std::vector<gfx::ShaderDefine> defines{{"LIGHT_CHUNK", std::to_string(kAssignLightChunk) + "u"}};
     if (name[0] != '\0') defines.push_back({name});
-    if (active_only) defines.push_back({"ACTIVE_ONLY"});
+    if (bounds == ClusterBounds::Pixels) defines.push_back({"PIXEL_BOUNDS"});
+    else if (active_only) defines.push_back({"ACTIVE_ONLY"});
     return shaders.get({"clustered/assign.comp"}, defines);
   };
   return {step(""), step("STEP_RESERVE"), step("STEP_WRITE")};
@@ -27,11 +28,22 @@ ClusterGrid::ClusterGrid(glm::uvec3 dims)
       uniform_buffer_(gfx::create_buffer()),
       bounds_(gfx::create_buffer()),
       active_(gfx::create_buffer()),
+      pixel_bounds_(gfx::create_buffer()),
       list_(dims_.x * dims_.y * dims_.z) {
   glNamedBufferStorage(uniform_buffer_.id(), sizeof(ClusterUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(bounds_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(ClusterBox)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(pixel_bounds_.id(), static_cast<GLsizeiptr>(2 * std::size_t{cluster_count()} * sizeof(glm::uvec4)), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
   upload_uniforms();
+}
+
+void ClusterGrid::clear_pixel_bounds() const {
+  // Least starts at the greatest ordered value, greatest at the least: empty.
+  const GLsizeiptr half = static_cast<GLsizeiptr>(std::size_t{cluster_count()} * sizeof(glm::uvec4));
+  const glm::uvec4 high(0xffffffffu), low(0u);
+  glClearNamedBufferSubData(pixel_bounds_.id(), GL_RGBA32UI, 0, half, GL_RGBA_INTEGER, GL_UNSIGNED_INT, &high);
+  glClearNamedBufferSubData(pixel_bounds_.id(), GL_RGBA32UI, half, half, GL_RGBA_INTEGER, GL_UNSIGNED_INT, &low);
 }
 
 void ClusterGrid::upload_uniforms() {
@@ -87,7 +99,7 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
   return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
 }
 
-void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint active) {
+void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
   const std::uint32_t chunks = std::max<std::uint32_t>((light_count + kAssignLightChunk - 1) / kAssignLightChunk, 1);
   if (chunks > chunk_capacity_) {
     chunk_capacity_ = chunks;
@@ -96,7 +108,7 @@ void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t li
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkCountsBinding, chunk_counts_.id());
-  if (active) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kActiveBinding, active);
+  if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, per_cluster);
   const GLuint groups = (cluster_count() + 63) / 64;
   list_.assign(
       [&] {

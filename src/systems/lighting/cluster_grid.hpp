@@ -17,6 +17,7 @@
 #include "gfx/shader_program.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/light_index_list.hpp"
+#include "systems/lighting/technique_options.hpp"
 
 namespace atrium::lighting {
 
@@ -50,15 +51,18 @@ class ClusterGrid {
  public:
   explicit ClusterGrid(glm::uvec3 dims);
 
-  // The assignment programs; with `active_only`, clusters flagged inactive get no lights.
-  [[nodiscard]] static ClusterAssignPrograms assign_programs(gfx::ShaderLibrary& shaders, bool active_only);
+  // The assignment programs: with `bounds` Pixels, clusters are tested by the
+  // box of their pixels (pixel_bounds_buffer(), filled by
+  // shaders/clustered/mark_active.comp); else by the grid's boxes, and with
+  // `active_only` clusters flagged inactive get no lights.
+  [[nodiscard]] static ClusterAssignPrograms assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only);
 
   // Recomputes the slicing and the clusters' bounds if the projection changed.
   void update(const glm::mat4& projection, float near_plane, float far_plane);
-  // Assigns the first `light_count` lights of the bound light buffer; `active`
-  // is a buffer of per-cluster flags when only active clusters receive lights.
+  // Assigns the first `light_count` lights of the bound light buffer; `per_cluster`
+  // is the buffer of per-cluster flags or pixel boxes the programs read, or 0.
   // Throws gfx::ResourceLimitError when the lists cannot fit.
-  void assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint active = 0);
+  void assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint per_cluster = 0);
   // Binds the uniform block and the range and index buffers for shading.
   void bind() const;
 
@@ -69,6 +73,10 @@ class ClusterGrid {
   [[nodiscard]] const LightIndexList& list() const { return list_; }
   [[nodiscard]] std::uint32_t rebuilds() const { return rebuilds_; }
   [[nodiscard]] GLuint active_buffer() const { return active_.id(); }
+  // Two uvec4 per cluster (least, then greatest view-space xyz as ordered integers).
+  [[nodiscard]] GLuint pixel_bounds_buffer() const { return pixel_bounds_.id(); }
+  // Empties every cluster's pixel box before mark_active.comp fills them.
+  void clear_pixel_bounds() const;
 
   // The assignment done on the CPU with the same boxes and test, and the GPU's
   // lists read back: both as sorted light indices per cluster (for tests).
@@ -83,7 +91,7 @@ class ClusterGrid {
   std::vector<ClusterBox> boxes_;
   glm::mat4 projection_{0.0f};
   float near_ = 0.0f, far_ = 0.0f;
-  gfx::Buffer uniform_buffer_, bounds_, active_;
+  gfx::Buffer uniform_buffer_, bounds_, active_, pixel_bounds_;
   gfx::Buffer chunk_counts_;  // per light chunk and cluster
   std::uint32_t chunk_capacity_ = 0;
   LightIndexList list_;

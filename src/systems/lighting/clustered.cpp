@@ -5,10 +5,11 @@
 namespace atrium::lighting {
 ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
-      active_only_(options.active_clusters),
+      pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels),
+      active_only_(options.active_clusters && !pixel_bounds_),
       grid_(options.cluster_grid),
-      assign_(ClusterGrid::assign_programs(gpu.shaders(), options.active_clusters)),
-      mark_active_(gpu.shaders().get({"clustered/mark_active.comp"})),
+      assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
+      mark_(pixel_bounds_ ? gpu.shaders().get({"clustered/mark_active.comp"}) : gpu.shaders().get({"clustered/mark_active.comp"}, {{"ACTIVE_FLAGS"}})),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
       shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
                         : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
@@ -19,15 +20,23 @@ void ClusteredTechnique::resize(const FrameTargets& targets) {
   if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);
 }
 
-void ClusteredTechnique::mark_active_clusters(const FrameTargets& targets) {
-  const std::uint32_t zero = 0;
-  glClearNamedBufferData(grid_.active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+GLuint ClusteredTechnique::mark_clusters(const FrameTargets& targets) {
+  GLuint buffer = 0;
+  if (pixel_bounds_) {
+    grid_.clear_pixel_bounds();
+    buffer = grid_.pixel_bounds_buffer();
+  } else {
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(grid_.active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    buffer = grid_.active_buffer();
+  }
   grid_.bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, grid_.active_buffer());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
   glBindTextureUnit(0, targets.depth_stencil);
-  mark_active_.use();
+  mark_.use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  return buffer;
 }
 
 void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
@@ -39,13 +48,13 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
     begin_scene_pass(frame, targets);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     geometry_.use();
-    draw_items(geometry_, frame.gpu, frame.draws.opaque);
+    draw_items(frame.draws.opaque);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
   {
     const auto pass = frame.timer.scope("light assignment");
-    if (active_only_) mark_active_clusters(targets);
-    grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), active_only_ ? grid_.active_buffer() : 0);
+    const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(targets) : 0;
+    grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   }
   {
     const auto pass = frame.timer.scope(deferred_ ? "lighting" : "shading");
@@ -60,7 +69,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
       glDepthFunc(gfx::kDepthCloserOrEqual);
       glDepthMask(GL_FALSE);
       shading_.use();
-      draw_items(shading_, frame.gpu, frame.draws.opaque);
+      draw_items(frame.draws.opaque);
       glDepthMask(GL_TRUE);
       glDepthFunc(gfx::kDepthCloser);
     }

@@ -2,8 +2,9 @@
 // frustum is cut into a 3D grid of clusters; a compute pass assigns each light
 // to the clusters its sphere touches; shading then loops over the pixel's
 // cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
-// fragment once; deferred shades from the G-buffer. With --active-clusters only
-// clusters that hold a visible pixel receive lights.
+// fragment once; deferred shades from the G-buffer. By default a cluster's lights
+// are those touching the box of the pixels it holds this frame (read from the
+// depth buffer); --cluster-bounds grid tests its whole frustum slice instead.
 #pragma once
 
 #include "systems/lighting/cluster_grid.hpp"
@@ -29,13 +30,16 @@ class ClusteredTechnique final : public LightingTechnique {
   }
 
  private:
-  void mark_active_clusters(const FrameTargets& targets);
+  // Fills the per-cluster buffer assignment reads (pixel boxes, or active
+  // flags) from the depth buffer; returns it.
+  GLuint mark_clusters(const FrameTargets& targets);
 
   bool deferred_;
+  bool pixel_bounds_;
   bool active_only_;
   ClusterGrid grid_;
   ClusterAssignPrograms assign_;
-  gfx::ShaderProgram& mark_active_;
+  gfx::ShaderProgram& mark_;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass
   gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading
   gfx::ShaderProgram& forward_;

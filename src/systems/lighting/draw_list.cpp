@@ -2,124 +2,212 @@
 
 #include <algorithm>
 #include <map>
+#include <tuple>
+#include <unordered_map>
 
+#include "components/bounds.hpp"
 #include "components/mesh_instance.hpp"
 #include "components/transform.hpp"
+#include "components/visibility.hpp"
 #include "gfx/depth.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
+namespace {
+
+DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
+  DrawBatch state;
+  state.vertex_array = vertex_array;
+  const assets::TextureSlot* slots[kMaterialTextureSlots] = {&material.base_color_texture, &material.metallic_roughness_texture,
+                                                             &material.normal_texture, &material.occlusion_texture,
+                                                             &material.emissive_texture};
+  for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
+    state.textures[s] = gpu.texture(slots[s]->texture);
+    state.samplers[s] = gpu.sampler(slots[s]->sampler);
+  }
+  state.double_sided = material.double_sided;
+  state.mirrored = mirrored;
+  return state;
+}
+
+bool same_state(const DrawBatch& a, const DrawBatch& b) {
+  return a.vertex_array == b.vertex_array && a.textures == b.textures && a.samplers == b.samplers &&
+         a.double_sided == b.double_sided && a.mirrored == b.mirrored;
+}
+
+// Masked geometry last (its discard defeats early depth tests on GPUs), then
+// one run per vertex array and texture set.
+bool state_before(const DrawBatch& a, bool a_masked, const DrawBatch& b, bool b_masked) {
+  return std::tie(a_masked, a.vertex_array, a.textures, a.samplers, a.double_sided, a.mirrored) <
+         std::tie(b_masked, b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored);
+}
+
+// Opaque geometry before it is placed: one command, all instances of a
+// primitive drawn with one material.
+struct PendingCommand {
+  DrawBatch state;
+  bool masked = false;
+  DrawCommand command;
+  std::vector<std::pair<float, InstanceData>> instances;  // view depth, record
+  float nearest = 0.0f;
+};
+
+struct PendingBlend {
+  DrawBatch state;
+  DrawCommand command;
+  InstanceData instance;
+  float depth = 0.0f;
+};
+
+}  // namespace
+
+MaterialData material_data(const assets::Material& m, const assets::GpuAssets& gpu) {
+  MaterialData data;
+  data.base_color_factor = m.base_color_factor;
+  data.emissive = glm::vec4(m.emissive_factor * m.emissive_strength, m.normal_scale);
+  data.metallic_factor = m.metallic_factor;
+  data.roughness_factor = m.roughness_factor;
+  data.occlusion_strength = m.occlusion_texture.valid() ? m.occlusion_strength : 0.0f;
+  data.alpha_cutoff = m.alpha_mode == assets::AlphaMode::Mask ? m.alpha_cutoff : -1.0f;
+  if (m.normal_texture.valid()) data.flags |= kMaterialHasNormalTexture;
+  if (gpu.two_channel(m.normal_texture.texture)) data.flags |= kMaterialNormalXyOnly;
+  if (m.normal_green_down) data.flags |= kMaterialNormalGreenDown;
+  if (m.double_sided) data.flags |= kMaterialDoubleSided;
+  if (m.unlit) data.flags |= kMaterialUnlit;
+  if (m.alpha_mode == assets::AlphaMode::Mask) data.flags |= kMaterialAlphaMasked;
+  const assets::TextureSlot* slots[kMaterialTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
+                                                             &m.occlusion_texture, &m.emissive_texture};
+  for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
+    if (slots[s]->uv_set == 1) data.uv_sets |= 1u << s;
+    const glm::mat3& t = slots[s]->uv_transform;  // column-major: t[column][row]
+    data.uv_transform[2 * s] = glm::vec4(t[0][0], t[1][0], t[2][0], 0.0f);
+    data.uv_transform[2 * s + 1] = glm::vec4(t[0][1], t[1][1], t[2][1], 0.0f);
+  }
+  return data;
+}
 
 DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets, const assets::GpuAssets& gpu,
                          const glm::mat4& view) {
   DrawList list;
-  // Opaque draws gather their instances per (vertex array, range, material).
-  struct Key {
-    GLuint vertex_array;
-    std::uint32_t first_index;
-    std::int32_t base_vertex;
-    const assets::Material* material;
-    bool mirrored;
-    auto operator<=>(const Key&) const = default;
+  std::unordered_map<const assets::Material*, std::uint32_t> material_index;
+  auto index_of = [&](const assets::Material& material) {
+    const auto [it, added] = material_index.try_emplace(&material, static_cast<std::uint32_t>(list.materials.size()));
+    if (added) list.materials.push_back(material_data(material, gpu));
+    return it->second;
   };
-  std::map<Key, std::size_t> group_of;
-  std::vector<std::vector<InstanceData>> opaque_instances;
-  std::vector<InstanceData> blended_instances;
-  registry.view<Transform, MeshInstance>().each([&](const Transform& transform, const MeshInstance& instance) {
+  // Identical primitives with one material and winding share a command.
+  using CommandKey = std::tuple<GLuint, std::uint32_t, std::int32_t, const assets::Material*, bool>;
+  std::map<CommandKey, std::size_t> command_of;
+  std::vector<PendingCommand> pending;
+  std::vector<PendingBlend> blended;
+
+  registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform& transform, const MeshInstance& instance) {
     const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
-    const assets::GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
     if (instance.mesh >= asset.meshes.size()) return;
+    const auto* bounds = registry.try_get<WorldBounds>(entity);
+    if (bounds && (bounds->asset != instance.asset || bounds->mesh != instance.mesh)) bounds = nullptr;
+    const auto* visibility = bounds ? registry.try_get<Visibility>(entity) : nullptr;
+    const auto& primitives = asset.meshes[instance.mesh].primitives;
+    for (const assets::Primitive& primitive : primitives) list.triangles += primitive.indices.size() / 3;
+    if (visibility && !visibility->any) return;
+
+    const assets::GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
     InstanceData data;
-    data.model = to_matrix(transform);
+    data.model = bounds ? bounds->model : to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
     const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
-    const auto& primitives = asset.meshes[instance.mesh].primitives;
     for (std::size_t p = 0; p < primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
       if (primitive.indices.empty()) continue;
-      DrawItem item;
-      item.vertex_array = gpu_asset.vertex_array.id();
-      item.range = gpu_asset.meshes[instance.mesh][p];
-      item.material = &asset.materials.at(primitive.material);
-      item.mirrored = mirrored;
-      list.triangles += primitive.indices.size() / 3;
-      if (item.material->alpha_mode == assets::AlphaMode::Blend) {
-        const glm::vec3 centre = 0.5f * (primitive.bounds_min + primitive.bounds_max);
-        item.view_depth = -(view * data.model * glm::vec4(centre, 1.0f)).z;
-        item.first_instance = static_cast<std::uint32_t>(blended_instances.size());
-        blended_instances.push_back(data);
-        list.blended.push_back(item);
+      if (visibility && p < visibility->primitives.size() && !visibility->primitives[p]) continue;
+      const assets::Material& material = asset.materials.at(primitive.material);
+      const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
+      list.triangles_drawn += primitive.indices.size() / 3;
+      data.material.x = index_of(material);
+      const glm::vec3 centre = bounds && p < bounds->primitives.size()
+                                   ? 0.5f * (bounds->primitives[p].min + bounds->primitives[p].max)
+                                   : glm::vec3(data.model * glm::vec4(0.5f * (primitive.bounds_min + primitive.bounds_max), 1.0f));
+      const float depth = -(view * glm::vec4(centre, 1.0f)).z;
+      const DrawCommand command{range.index_count, 1, range.first_index, range.base_vertex, 0};
+      const GLuint vertex_array = gpu_asset.vertex_array.id();
+      if (material.alpha_mode == assets::AlphaMode::Blend) {
+        blended.push_back({batch_state(material, gpu, vertex_array, mirrored), command, data, depth});
         continue;
       }
-      const Key key{item.vertex_array, item.range.first_index, item.range.base_vertex, item.material, item.mirrored};
-      const auto [it, added] = group_of.try_emplace(key, list.opaque.size());
+      const CommandKey key{vertex_array, range.first_index, range.base_vertex, &material, mirrored};
+      const auto [it, added] = command_of.try_emplace(key, pending.size());
       if (added) {
-        list.opaque.push_back(item);
-        opaque_instances.emplace_back();
+        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), material.alpha_mode == assets::AlphaMode::Mask, command,
+                           {}, depth});
       }
-      opaque_instances[it->second].push_back(data);
+      PendingCommand& target = pending[it->second];
+      target.instances.emplace_back(depth, data);
+      target.nearest = std::min(target.nearest, depth);
     }
   });
-  for (std::size_t g = 0; g < list.opaque.size(); ++g) {
-    list.opaque[g].first_instance = static_cast<std::uint32_t>(list.instances.size());
-    list.opaque[g].instance_count = static_cast<std::uint32_t>(opaque_instances[g].size());
-    list.instances.insert(list.instances.end(), opaque_instances[g].begin(), opaque_instances[g].end());
+
+  // Opaque: by state, so that a batch holds every command of one state, then
+  // front to back (commands by their nearest instance, instances by depth).
+  std::vector<std::size_t> order(pending.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const PendingCommand& x = pending[a];
+    const PendingCommand& y = pending[b];
+    if (state_before(x.state, x.masked, y.state, y.masked)) return true;
+    if (state_before(y.state, y.masked, x.state, x.masked)) return false;
+    return x.nearest < y.nearest;
+  });
+  auto append = [&](std::vector<DrawBatch>& batches, const DrawBatch& state, DrawCommand command, float depth) {
+    if (batches.empty() || !same_state(batches.back(), state)) {
+      batches.push_back(state);
+      batches.back().first_command = static_cast<std::uint32_t>(list.commands.size());
+      batches.back().command_count = 0;
+    }
+    list.commands.push_back(command);
+    list.command_depths.push_back(depth);
+    ++batches.back().command_count;
+  };
+  for (const std::size_t i : order) {
+    PendingCommand& pending_command = pending[i];
+    std::stable_sort(pending_command.instances.begin(), pending_command.instances.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    DrawCommand command = pending_command.command;
+    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
+    command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
+    for (const auto& [depth, record] : pending_command.instances) list.instances.push_back(record);
+    append(list.opaque, pending_command.state, command, pending_command.nearest);
   }
-  const auto blended_base = static_cast<std::uint32_t>(list.instances.size());
-  list.instances.insert(list.instances.end(), blended_instances.begin(), blended_instances.end());
-  for (DrawItem& item : list.blended) item.first_instance += blended_base;
-  std::stable_sort(list.blended.begin(), list.blended.end(),
-                   [](const DrawItem& a, const DrawItem& b) { return a.view_depth > b.view_depth; });
+  // Blended: farthest first, one instance per command.
+  std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });
+  for (const PendingBlend& item : blended) {
+    DrawCommand command = item.command;
+    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
+    list.instances.push_back(item.instance);
+    append(list.blended, item.state, command, item.depth);
+  }
   return list;
 }
 
-void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items) {
+void draw_items(std::span<const DrawBatch> batches) {
   GLuint bound_vertex_array = 0;
-  const assets::Material* bound_material = nullptr;
+  const DrawBatch* bound_textures = nullptr;
   glEnable(GL_CULL_FACE);
-  for (const DrawItem& item : items) {
-    if (item.vertex_array != bound_vertex_array) {
-      glBindVertexArray(item.vertex_array);
-      bound_vertex_array = item.vertex_array;
+  for (const DrawBatch& batch : batches) {
+    if (batch.vertex_array != bound_vertex_array) {
+      glBindVertexArray(batch.vertex_array);
+      bound_vertex_array = batch.vertex_array;
     }
-    const assets::Material& m = *item.material;
-    if (&m != bound_material) {
-      bound_material = &m;
-      program.set("u_base_color_factor", m.base_color_factor);
-      program.set("u_metallic_factor", m.metallic_factor);
-      program.set("u_roughness_factor", m.roughness_factor);
-      program.set("u_emissive_factor", m.emissive_factor * m.emissive_strength);
-      program.set("u_normal_scale", m.normal_scale);
-      program.set("u_occlusion_strength", m.occlusion_texture.valid() ? m.occlusion_strength : 0.0f);
-      program.set("u_alpha_cutoff", m.alpha_mode == assets::AlphaMode::Mask ? m.alpha_cutoff : -1.0f);
-      program.set("u_has_normal_texture", m.normal_texture.valid() ? 1 : 0);
-      program.set("u_normal_xy_only", gpu.two_channel(m.normal_texture.texture) ? 1 : 0);
-      program.set("u_normal_green_down", m.normal_green_down ? 1 : 0);
-      program.set("u_double_sided", m.double_sided ? 1 : 0);
-      program.set("u_unlit", m.unlit ? 1 : 0);
-      const assets::TextureSlot* slots[kMaterialTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture,
-                                                                 &m.normal_texture, &m.occlusion_texture, &m.emissive_texture};
-      GLuint textures[kMaterialTextureSlots], samplers[kMaterialTextureSlots];
-      glm::mat3 uv_transforms[kMaterialTextureSlots];
-      int uv_sets[kMaterialTextureSlots];
-      for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
-        textures[s] = gpu.texture(slots[s]->texture);
-        samplers[s] = gpu.sampler(slots[s]->sampler);
-        uv_transforms[s] = slots[s]->uv_transform;
-        uv_sets[s] = slots[s]->uv_set;
-      }
-      glBindTextures(0, kMaterialTextureSlots, textures);
-      glBindSamplers(0, kMaterialTextureSlots, samplers);
-      program.set("u_uv_transform", std::span<const glm::mat3>(uv_transforms));
-      program.set("u_uv_set", std::span<const int>(uv_sets));
-      if (m.double_sided) glDisable(GL_CULL_FACE);
-      else glEnable(GL_CULL_FACE);
+    if (!bound_textures || bound_textures->textures != batch.textures || bound_textures->samplers != batch.samplers) {
+      glBindTextures(0, kMaterialTextureSlots, batch.textures.data());
+      glBindSamplers(0, kMaterialTextureSlots, batch.samplers.data());
+      bound_textures = &batch;
     }
-    glFrontFace(item.mirrored ? GL_CW : GL_CCW);
-    glDrawElementsInstancedBaseVertexBaseInstance(
-        GL_TRIANGLES, static_cast<GLsizei>(item.range.index_count), GL_UNSIGNED_INT,
-        reinterpret_cast<const void*>(static_cast<std::uintptr_t>(item.range.first_index) * sizeof(std::uint32_t)),
-        static_cast<GLsizei>(item.instance_count), item.range.base_vertex, item.first_instance);
+    if (batch.double_sided) glDisable(GL_CULL_FACE);
+    else glEnable(GL_CULL_FACE);
+    glFrontFace(batch.mirrored ? GL_CW : GL_CCW);
+    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand)),
+                                static_cast<GLsizei>(batch.command_count), 0);
   }
   glEnable(GL_CULL_FACE);
   glFrontFace(GL_CCW);
@@ -138,7 +226,7 @@ void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& f
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   forward_program.use();
-  draw_items(forward_program, frame.gpu, frame.draws.blended);
+  draw_items(frame.draws.blended);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 }

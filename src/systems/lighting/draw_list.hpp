@@ -1,10 +1,13 @@
-// The frame's geometry as draw items, gathered once from MeshInstance entities
-// and shared by every pass of every technique: opaque and alpha-masked items,
-// one instanced draw per primitive and material however many entities show it,
-// in the order they are first met; blended items one per instance, sorted back
-// to front. Each instance's transforms sit in the frame's instance buffer.
+// The frame's visible geometry as indirect draw batches, gathered once from the
+// MeshInstance entities the frustum culling system marked visible and shared by
+// every pass of every technique. Per-instance data (model matrix, material
+// index) and material parameters live in storage buffers, so one
+// glMultiDrawElementsIndirect draws every primitive that shares a vertex
+// layout, a texture set and a cull state: the number of draws follows the
+// scene's distinct texture sets, not its objects.
 #pragma once
 
+#include <array>
 #include <span>
 #include <vector>
 
@@ -21,44 +24,98 @@ namespace atrium::lighting {
 // Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
 inline constexpr unsigned kMaterialTextureSlots = 5;
 
-// Where mesh.vert finds the instance records (a storage buffer binding).
+// Where mesh.vert finds the instance records and material.glsl the materials
+// (storage buffer bindings).
 inline constexpr unsigned kInstanceStorageBinding = 1;
+inline constexpr unsigned kMaterialStorageBinding = 8;
 
 // std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
 struct InstanceData {
   glm::mat4 model{1.0f};
   glm::mat4 normal_matrix{1.0f};  // inverse transpose of the model's 3x3, in a mat4 to keep std430 simple
+  glm::uvec4 material{0};         // x: index into DrawList::materials
 };
-static_assert(sizeof(InstanceData) == 128, "must match Instance in shaders/common/mesh.vert");
+static_assert(sizeof(InstanceData) == 144, "must match Instance in shaders/common/mesh.vert");
 
-struct DrawItem {
+// Material::flags bits; GLSL twins in shaders/common/material_data.glsl.
+inline constexpr std::uint32_t kMaterialHasNormalTexture = 1u << 0;
+inline constexpr std::uint32_t kMaterialNormalXyOnly = 1u << 1;     // a two-channel (BC5) normal map: z is rebuilt
+inline constexpr std::uint32_t kMaterialNormalGreenDown = 1u << 2;  // DirectX's convention: green points down
+inline constexpr std::uint32_t kMaterialDoubleSided = 1u << 3;
+inline constexpr std::uint32_t kMaterialUnlit = 1u << 4;            // KHR_materials_unlit
+inline constexpr std::uint32_t kMaterialAlphaMasked = 1u << 5;
+
+// std430 twin of Material in shaders/common/material_data.glsl.
+struct MaterialData {
+  glm::vec4 base_color_factor{1.0f};
+  glm::vec4 emissive{0.0f};  // rgb: emissive factor times strength; a: normal scale
+  float metallic_factor = 1.0f;
+  float roughness_factor = 1.0f;
+  float occlusion_strength = 0.0f;  // 0 without an occlusion texture
+  float alpha_cutoff = -1.0f;       // < 0 when the material is not alpha-masked
+  std::uint32_t flags = 0;          // kMaterial* bits
+  std::uint32_t uv_sets = 0;        // bit s: texture slot s reads UV set 1
+  std::uint32_t padding[2] = {0, 0};
+  // Per texture slot, the two rows of its KHR_texture_transform (a 2x3 affine map).
+  std::array<glm::vec4, 2 * kMaterialTextureSlots> uv_transform{};
+};
+static_assert(sizeof(MaterialData) == 224, "must match Material in shaders/common/material_data.glsl");
+
+[[nodiscard]] MaterialData material_data(const assets::Material& material, const assets::GpuAssets& gpu);
+
+// GL's DrawElementsIndirectCommand.
+struct DrawCommand {
+  std::uint32_t count = 0;
+  std::uint32_t instance_count = 0;
+  std::uint32_t first_index = 0;
+  std::int32_t base_vertex = 0;
+  std::uint32_t base_instance = 0;
+};
+static_assert(sizeof(DrawCommand) == 20, "GL reads indirect commands as five 32-bit words");
+
+// One glMultiDrawElementsIndirect: commands sharing a vertex array, the five
+// material textures and samplers, and a cull state.
+struct DrawBatch {
   GLuint vertex_array = 0;
-  assets::GpuPrimitive range;
-  const assets::Material* material = nullptr;
-  std::uint32_t first_instance = 0;  // into DrawList::instances
-  std::uint32_t instance_count = 1;
+  std::array<GLuint, kMaterialTextureSlots> textures{};
+  std::array<GLuint, kMaterialTextureSlots> samplers{};
+  bool double_sided = false;
   // The instances' transforms mirror (negative determinant): glTF then takes
   // clockwise triangles as front faces.
   bool mirrored = false;
-  float view_depth = 0.0f;  // blended items: distance along the view axis to the bounds' centre
+  std::uint32_t first_command = 0;  // into DrawList::commands
+  std::uint32_t command_count = 0;
 };
 
 struct DrawList {
-  std::vector<DrawItem> opaque;   // Opaque and Mask materials, instanced
-  std::vector<DrawItem> blended;  // Blend materials, one per instance, farthest first
+  // Opaque and alpha-masked geometry: ordered by state (masked last, then
+  // vertex array and textures), commands front to back within a batch,
+  // identical primitives instanced.
+  std::vector<DrawBatch> opaque;
+  // Blended geometry, one command per primitive instance, farthest first;
+  // neighbours with the same state share a batch (draw order is kept).
+  std::vector<DrawBatch> blended;
+  std::vector<DrawCommand> commands;
+  std::vector<float> command_depths;  // per command: view depth of its nearest instance's primitive centre
   std::vector<InstanceData> instances;
-  std::size_t triangles = 0;      // over every instance
+  std::vector<MaterialData> materials;
+  std::size_t triangles = 0;        // in the scene, every instance, visible or not
+  std::size_t triangles_drawn = 0;  // by one pass over opaque and blended: what culling kept
+
+  [[nodiscard]] std::size_t draw_calls() const { return opaque.size() + blended.size(); }
 };
 
+// Builds the frame's list from the entities' WorldBounds and Visibility (an
+// entity without them is drawn whole). `view` orders draws by distance.
 [[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
                                        const assets::GpuAssets& gpu, const glm::mat4& view);
 
-// Issues one instanced draw per item with `program`: sets the material
-// uniforms, binds the material's textures to units 0-4, disables back-face
-// culling for double-sided materials and turns the front face for mirrored
-// items. The frame's instance buffer must be bound at kInstanceStorageBinding.
-// Leaves culling enabled and counter-clockwise front faces on return.
-void draw_items(gfx::ShaderProgram& program, const assets::GpuAssets& gpu, std::span<const DrawItem> items);
+// Issues one multi-draw per batch with the program in use, binding each batch's
+// textures to units 0-4, disabling back-face culling for double-sided batches
+// and turning the front face for mirrored ones. The frame's instance, material
+// and indirect buffers must be bound (the MeshRenderer binds them). Leaves
+// culling enabled and counter-clockwise front faces on return.
+void draw_items(std::span<const DrawBatch> batches);
 
 struct FrameContext;
 struct FrameTargets;
@@ -68,7 +125,7 @@ struct FrameTargets;
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
 
 // Binds the HDR target, clears it to the background and depth to 1, and sets
-// the state for drawing scene geometry (depth test LESS with writes, no blend).
+// the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
 void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets);
 
 // A triangle that covers the viewport, for full-screen passes.

@@ -54,7 +54,7 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
   // The albedo target is sRGB: GL encodes the linear values written to it.
   glEnable(GL_FRAMEBUFFER_SRGB);
   program.use();
-  draw_items(program, frame.gpu, frame.draws.opaque);
+  draw_items(frame.draws.opaque);
   glDisable(GL_FRAMEBUFFER_SRGB);
 }
 

@@ -1,5 +1,5 @@
-// Settings some lighting techniques read (--cluster-grid, --active-clusters,
-// --gbuffer). Plain data, kept apart from the GL-facing technique interface so
+// Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
+// --active-clusters, --gbuffer). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -15,9 +15,16 @@ namespace atrium::lighting {
 enum class GBufferLayout { Full, Compact };
 inline constexpr std::array<std::string_view, 2> kGBufferLayoutNames{"full", "compact"};
 
+// What the clustered modes test lights against: each cluster's box of the
+// pixels it holds this frame (tight, the default), or its whole slice of the
+// view frustum (the grid).
+enum class ClusterBounds { Pixels, Grid };
+inline constexpr std::array<std::string_view, 2> kClusterBoundsNames{"pixels", "grid"};
+
 struct TechniqueOptions {
-  glm::uvec3 cluster_grid{16, 9, 24};
-  bool active_clusters = false;
+  glm::uvec3 cluster_grid{16, 9, 32};
+  ClusterBounds cluster_bounds = ClusterBounds::Pixels;
+  bool active_clusters = false;  // grid bounds: only clusters holding a visible pixel get lights
   GBufferLayout gbuffer_layout = GBufferLayout::Full;
   bool operator==(const TechniqueOptions&) const = default;
 };

@@ -1,0 +1,62 @@
+#include "systems/frustum_culling.hpp"
+
+#include <vector>
+
+#include "components/bounds.hpp"
+#include "components/frame_resources.hpp"
+#include "components/visibility.hpp"
+
+namespace atrium {
+
+Frustum frustum_of(const glm::mat4& m) {
+  // Gribb and Hartmann: a clip-space bound is a plane over the matrix's rows.
+  const glm::vec4 x{m[0][0], m[1][0], m[2][0], m[3][0]};
+  const glm::vec4 y{m[0][1], m[1][1], m[2][1], m[3][1]};
+  const glm::vec4 z{m[0][2], m[1][2], m[2][2], m[3][2]};
+  const glm::vec4 w{m[0][3], m[1][3], m[2][3], m[3][3]};
+  // -w <= x, y <= w; 0 <= z <= w holds for both depth directions.
+  return {{w + x, w - x, w + y, w - y, z, w - z}};
+}
+
+bool intersects(const Frustum& frustum, glm::vec3 min, glm::vec3 max) {
+  for (const glm::vec4& plane : frustum.planes) {
+    // The box's corner farthest along the plane's normal.
+    const glm::vec3 corner{plane.x >= 0.0f ? max.x : min.x, plane.y >= 0.0f ? max.y : min.y, plane.z >= 0.0f ? max.z : min.z};
+    if (glm::dot(glm::vec3(plane), corner) + plane.w < 0.0f) return false;
+  }
+  return true;
+}
+
+void update_frustum_culling(ecs::Registry& registry) {
+  std::vector<ecs::Entity> missing;
+  registry.view<WorldBounds>().each([&](ecs::Entity entity, const WorldBounds&) {
+    if (!registry.has<Visibility>(entity)) missing.push_back(entity);
+  });
+  for (const ecs::Entity entity : missing) registry.add<Visibility>(entity);
+  const bool culling = registry.resource<RendererSettings>().frustum_culling;
+  const Frustum frustum = frustum_of(registry.resource<ViewState>().view_projection);
+  CullingStats stats;
+  registry.view<WorldBounds, Visibility>().each([&](const WorldBounds& bounds, Visibility& visibility) {
+    ++stats.objects;
+    stats.primitives += bounds.primitives.size();
+    visibility.primitives.assign(bounds.primitives.size(), 1);
+    visibility.any = !bounds.empty && (!culling || intersects(frustum, bounds.min, bounds.max));
+    if (!visibility.any) {
+      visibility.primitives.assign(bounds.primitives.size(), 0);
+      return;
+    }
+    ++stats.objects_visible;
+    for (std::size_t p = 0; p < bounds.primitives.size(); ++p) {
+      const Box& box = bounds.primitives[p];
+      visibility.primitives[p] = !box.empty && (!culling || intersects(frustum, box.min, box.max));
+      stats.primitives_visible += visibility.primitives[p];
+    }
+  });
+  registry.set_resource<CullingStats>(stats);
+}
+
+void register_frustum_culling(ecs::Scheduler& scheduler) {
+  scheduler.add(ecs::Phase::PostUpdate, "frustum_culling", update_frustum_culling);
+}
+
+}  // namespace atrium

@@ -1,0 +1,35 @@
+// The frustum culling system (PostUpdate, after bounds and camera): tests every
+// primitive box of every WorldBounds against the camera's view frustum and
+// writes each entity's Visibility, so that every pass of every technique draws
+// only what the camera can see. RendererSettings::frustum_culling off marks
+// everything visible (for comparisons).
+#pragma once
+
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "ecs/scheduler.hpp"
+
+namespace atrium {
+
+// The six planes (xyz: inward normal, w: offset) of the frustum of a
+// view-projection matrix with clip z in [0, 1], either depth direction.
+struct Frustum {
+  std::array<glm::vec4, 6> planes;
+};
+
+[[nodiscard]] Frustum frustum_of(const glm::mat4& view_projection);
+// False only when the box lies wholly outside one plane; boxes that cross a
+// corner outside two planes are kept (conservative, never drops what shows).
+// Non-finite planes keep every box.
+[[nodiscard]] bool intersects(const Frustum& frustum, glm::vec3 min, glm::vec3 max);
+
+// Needs ViewState and RendererSettings; adds Visibility to entities with
+// WorldBounds and sets the CullingStats resource.
+void register_frustum_culling(ecs::Scheduler& scheduler);
+
+// One pass of the system (tests; callers that cull outside the schedule).
+void update_frustum_culling(ecs::Registry& registry);
+
+}  // namespace atrium

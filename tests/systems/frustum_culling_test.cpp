@@ -1,0 +1,153 @@
+// Frustum culling: the plane test against boxes with known answers, and in the
+// running engine that culling changes no pixel of any view or mode, drops what
+// the camera cannot see, follows entities that move, and keeps draw calls from
+// growing with copies of the scene.
+#include "systems/frustum_culling.hpp"
+
+#include <limits>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/bounds.hpp"
+#include "components/frame_resources.hpp"
+#include "components/mesh_instance.hpp"
+#include "components/transform.hpp"
+#include "components/visibility.hpp"
+#include "gfx/depth.hpp"
+#include "support/gl_test.hpp"
+#include "support/modes.hpp"
+
+namespace atrium {
+namespace {
+
+// A camera at the origin looking down -Z with a 90-degree field of view.
+Frustum test_frustum() {
+  return frustum_of(gfx::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f));
+}
+
+TEST(FrustumOf, KeepsBoxesInsideOrCrossingAndDropsBoxesOutside) {
+  const Frustum frustum = test_frustum();
+  EXPECT_TRUE(intersects(frustum, {-1, -1, -11}, {1, 1, -9})) << "straight ahead";
+  EXPECT_TRUE(intersects(frustum, {-100, -100, -50}, {100, 100, -40})) << "larger than the view";
+  EXPECT_TRUE(intersects(frustum, {9, -1, -11}, {12, 1, -9})) << "crossing the right plane (x = -z)";
+  EXPECT_TRUE(intersects(frustum, {-1, -1, -1}, {1, 1, 1})) << "around the camera";
+  EXPECT_FALSE(intersects(frustum, {-1, -1, 5}, {1, 1, 7})) << "behind";
+  EXPECT_FALSE(intersects(frustum, {12, -1, -11}, {14, 1, -9})) << "right of the view";
+  EXPECT_FALSE(intersects(frustum, {-1, 12, -11}, {1, 14, -9})) << "above the view";
+  EXPECT_FALSE(intersects(frustum, {-1, -1, -0.05f}, {1, 1, -0.01f})) << "before the near plane";
+  EXPECT_FALSE(intersects(frustum, {-1, -1, -300}, {1, 1, -200})) << "beyond the far plane";
+}
+
+TEST(FrustumOf, ANonFiniteMatrixKeepsEveryBox) {
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  const Frustum frustum = frustum_of(glm::mat4(nan));
+  EXPECT_TRUE(intersects(frustum, {-1, -1, 5}, {1, 1, 7}));
+}
+
+using FrustumCulling = testing::GlTest;
+
+constexpr glm::ivec2 kSize{160, 90};
+
+TEST_F(FrustumCulling, ChangesNoPixelOfAnyViewOrModeAndDropsWhatIsOutOfView) {
+  WorldOptions culled_options{"atrium", 48u, "forward", 1, kSize};
+  WorldOptions whole_options = culled_options;
+  whole_options.frustum_culling = false;
+  World culled(culled_options);
+  World whole(whole_options);
+  for (int view = 1; view <= 5; ++view) {
+    culled.set_view(view);
+    whole.set_view(view);
+    for (const std::string mode : {"forward", "deferred", "clustered-deferred", "light-volumes"}) {
+      culled.set_mode(mode);
+      whole.set_mode(mode);
+      culled.frame(0.0);
+      whole.frame(0.0);
+      EXPECT_LE(assets::max_channel_difference(culled.renderer().read_output(), whole.renderer().read_output()), 1)
+          << mode << " view " << view;
+    }
+    const FrameStats& with = culled.renderer().stats();
+    const FrameStats& without = whole.renderer().stats();
+    EXPECT_EQ(without.triangles_drawn, without.triangles) << "view " << view;
+    EXPECT_EQ(with.triangles, without.triangles);
+    // Every stored view looks into the courtyard: some of it is behind or beside the camera.
+    EXPECT_LT(with.triangles_drawn, with.triangles) << "view " << view;
+    EXPECT_GT(with.triangles_drawn, with.triangles / 2) << "view " << view;
+    EXPECT_LE(with.draw_calls, without.draw_calls);
+  }
+}
+
+TEST_F(FrustumCulling, ACameraLookingAwayFromTheSceneDrawsNothingButTheBackground) {
+  WorldOptions options{"atrium", 16u, "clustered-deferred", 1, kSize};
+  options.camera = assets::NamedView{"away", glm::vec3(0.0f, 5.0f, 60.0f), 180.0f, 0.0f};  // yaw 180 looks along +Z
+  World world(options);
+  world.frame(0.0);
+  const FrameStats& stats = world.renderer().stats();
+  EXPECT_EQ(stats.triangles_drawn, 0u);
+  EXPECT_EQ(stats.draw_calls, 0u);
+  EXPECT_EQ(stats.objects_drawn, 0u);
+  EXPECT_GT(stats.objects, 100u);
+  const assets::Image image = world.renderer().read_output();
+  for (int y = 0; y < kSize.y; y += 7) {
+    for (int x = 0; x < kSize.x; x += 7) ASSERT_EQ(image.pixel(x, y)[0], image.pixel(0, 0)[0]) << x << "," << y;
+  }
+}
+
+TEST_F(FrustumCulling, AnEntityMovedOutOfViewLeavesTheDrawAndItsBoxFollowsIt) {
+  World world({"atrium", 8u, "forward", 4, kSize});  // the overview sees every entity
+  world.frame(0.0);
+  auto& registry = world.registry();
+  ecs::Entity moved{};
+  registry.view<Transform, MeshInstance, Visibility>().each([&](ecs::Entity e, const Transform&, const MeshInstance&, const Visibility& v) {
+    if (v.any && moved.is_null()) moved = e;
+  });
+  ASSERT_FALSE(moved.is_null());
+  const std::size_t drawn_before = world.renderer().stats().objects_drawn;
+  const glm::vec3 box_before = registry.get<WorldBounds>(moved).min;
+  registry.get<Transform>(moved).position.y += 1000.0f;
+  world.frame(0.0);
+  EXPECT_NEAR(registry.get<WorldBounds>(moved).min.y, box_before.y + 1000.0f, 1e-2f);
+  EXPECT_FALSE(registry.get<Visibility>(moved).any);
+  EXPECT_EQ(world.renderer().stats().objects_drawn, drawn_before - 1);
+  registry.get<Transform>(moved).position.y -= 1000.0f;
+  world.frame(0.0);
+  EXPECT_TRUE(registry.get<Visibility>(moved).any);
+  EXPECT_EQ(world.renderer().stats().objects_drawn, drawn_before);
+}
+
+// scenes/courtyard-grid.json: twelve copies of the courtyard.
+const std::string kGrid = std::string(ATRIUM_SOURCE_DIR) + "/scenes/courtyard-grid.json";
+
+TEST_F(FrustumCulling, TheGridSceneIsBistroScaleAndDrawsWithTheDrawCallsOfOneCourtyard) {
+  World single({"atrium", 0u, "deferred", 4, kSize});
+  single.frame(0.0);
+  World grid({kGrid, std::nullopt, "deferred", 1, kSize});
+  grid.frame(0.0);
+  const FrameStats& stats = grid.renderer().stats();
+  EXPECT_GE(stats.triangles, 2'500'000u);
+  EXPECT_GE(stats.objects, 1500u);
+  EXPECT_EQ(stats.lights, 4096u);
+  EXPECT_EQ(stats.objects_drawn, stats.objects) << "the overview sees every copy";
+  EXPECT_EQ(stats.draw_calls, single.renderer().stats().draw_calls) << "copies share materials: no more draws";
+  // A view down into one courtyard submits a small part of the scene.
+  grid.set_view(3);
+  grid.frame(0.0);
+  EXPECT_LT(grid.renderer().stats().triangles_drawn, stats.triangles / 10);
+  EXPECT_LE(grid.renderer().stats().draw_calls, single.renderer().stats().draw_calls);
+}
+
+TEST_F(FrustumCulling, TheGridSceneDrawsTheForwardPictureInClusteredModes) {
+  World grid({kGrid, std::nullopt, "forward", 3, kSize});
+  grid.frame(0.0);
+  const assets::Image reference = grid.renderer().read_output();
+  assets::write_png("grid_view_3_forward.png", reference);
+  for (const std::string mode : {"clustered-deferred", "clustered-forward", "tiled-deferred"}) {
+    grid.set_mode(mode);
+    grid.frame(0.0);
+    EXPECT_GE(assets::psnr(reference, grid.renderer().read_output()), 40.0) << mode;
+  }
+}
+
+}  // namespace
+}  // namespace atrium
