@@ -62,15 +62,15 @@ std::vector<Material> make_materials(AssetManager& assets) {
     m.alpha_mode = spec.alpha;
     m.double_sided = spec.double_sided;
     m.base_color_texture.texture =
-        assets.add_texture({key + "/albedo", std::move(images.albedo), ColorSpace::Srgb}, key + "/albedo");
+        assets.add_texture({key + "/albedo", std::move(images.albedo), ColorSpace::Srgb, std::nullopt}, key + "/albedo");
     m.normal_texture.texture =
-        assets.add_texture({key + "/normal", std::move(images.normal), ColorSpace::Linear}, key + "/normal");
+        assets.add_texture({key + "/normal", std::move(images.normal), ColorSpace::Linear, std::nullopt}, key + "/normal");
     m.metallic_roughness_texture.texture =
-        assets.add_texture({key + "/metallic_roughness", std::move(images.metallic_roughness), ColorSpace::Linear},
+        assets.add_texture({key + "/metallic_roughness", std::move(images.metallic_roughness), ColorSpace::Linear, std::nullopt},
                            key + "/metallic_roughness");
     if (images.emissive) {
       m.emissive_texture.texture =
-          assets.add_texture({key + "/emissive", std::move(*images.emissive), ColorSpace::Srgb}, key + "/emissive");
+          assets.add_texture({key + "/emissive", std::move(*images.emissive), ColorSpace::Srgb, std::nullopt}, key + "/emissive");
       m.emissive_factor = glm::vec3(1.0f);
       m.emissive_strength = spec.emissive_strength;
     }

@@ -125,10 +125,7 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
   for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
     const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
     for (const Material& m : asset.materials) {
-      for (const TextureSlot* slot : {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
-                                      &m.occlusion_texture, &m.emissive_texture}) {
-        make_sampler(slot->sampler);
-      }
+      for (const TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
     }
     // Every vertex buffer once, primitives as index ranges with the base
     // vertex of the buffer they index: shared vertices stay shared.

@@ -78,6 +78,12 @@ struct Material {
   TextureSlot normal_texture;
   TextureSlot occlusion_texture;
   TextureSlot emissive_texture;
+
+  // The texture slots in shader order (texture units 0-4 of material.glsl).
+  static constexpr std::size_t kTextureSlots = 5;
+  [[nodiscard]] std::array<const TextureSlot*, kTextureSlots> texture_slots() const {
+    return {&base_color_texture, &metallic_roughness_texture, &normal_texture, &occlusion_texture, &emissive_texture};
+  }
 };
 
 struct Primitive {

@@ -82,7 +82,8 @@ void PassTimer::end_pass() {
     }
     return;
   }
-  frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1].cpu_milliseconds = cpu_milliseconds;
+  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  frame.passes[frame.used - 1].cpu_milliseconds = cpu_milliseconds;
   glEndQuery(GL_TIME_ELAPSED);
   if (counts_fragments_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }

@@ -39,12 +39,9 @@ void update_frustum_culling(ecs::Registry& registry) {
   registry.view<WorldBounds, Visibility>().each([&](const WorldBounds& bounds, Visibility& visibility) {
     ++stats.objects;
     stats.primitives += bounds.primitives.size();
-    visibility.primitives.assign(bounds.primitives.size(), 1);
     visibility.any = !bounds.empty && (!culling || intersects(frustum, bounds.min, bounds.max));
-    if (!visibility.any) {
-      visibility.primitives.assign(bounds.primitives.size(), 0);
-      return;
-    }
+    visibility.primitives.assign(bounds.primitives.size(), 0);
+    if (!visibility.any) return;
     ++stats.objects_visible;
     for (std::size_t p = 0; p < bounds.primitives.size(); ++p) {
       const Box& box = bounds.primitives[p];

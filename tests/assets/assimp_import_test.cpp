@@ -15,6 +15,7 @@
 #include "assets/gltf_import.hpp"
 #include "assets/image.hpp"
 #include "assets/model_import.hpp"
+#include "support/model_triangles.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -23,11 +24,7 @@ namespace fs = std::filesystem;
 const fs::path kFixtures = fs::path(ATRIUM_SOURCE_DIR) / "tests/data/model-tools";
 const fs::path kTestdata = fs::path(ATRIUM_TESTDATA_DIR);
 
-std::size_t triangles(const AssetManager& assets, const ModelImport& model) {
-  std::size_t count = 0;
-  for (const SceneInstance& instance : model.instances) count += triangle_count(assets.mesh_asset(model.asset).meshes.at(instance.mesh));
-  return count;
-}
+using testing::drawn_triangles;
 
 // A model and its glTF source: the same triangles, the same box within `tolerance`
 // of its size.
@@ -35,7 +32,7 @@ void expect_same_model(const fs::path& file, const fs::path& source, float toler
   AssetManager assets;
   const ModelImport model = import_model(file, assets);
   const ModelImport reference = import_gltf(source, assets);
-  EXPECT_EQ(triangles(assets, model), triangles(assets, reference)) << file.filename();
+  EXPECT_EQ(drawn_triangles(assets, model), drawn_triangles(assets, reference)) << file.filename();
   const float size = glm::length(reference.bounds_max - reference.bounds_min);
   for (int axis = 0; axis < 3; ++axis) {
     EXPECT_NEAR(model.bounds_min[axis], reference.bounds_min[axis], tolerance * size) << file.filename() << " axis " << axis;
@@ -53,11 +50,11 @@ TEST(AssimpImport, FbxFromBlenderIsItsSourceZUpOrYUp) {
 }
 
 // A folder per test holding the cube's OBJ, with its MTL written by the test.
-class ObjFolder : public testing::Test {
+class ObjFolder : public ::testing::Test {
  protected:
   void SetUp() override {
     folder_ = fs::temp_directory_path() /
-              ("atrium_obj_" + std::to_string(::getpid()) + "_" + testing::UnitTest::GetInstance()->current_test_info()->name());
+              ("atrium_obj_" + std::to_string(::getpid()) + "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
     fs::create_directories(folder_);
     fs::copy_file(kFixtures / "cube.assimp.obj", folder_ / "cube.assimp.obj");
   }
@@ -215,7 +212,7 @@ TEST(AssimpImport, UnusableTrianglesAreSkippedWithOneWarningPerReason) {
   AssetManager assets;
   const ModelImport model = import_model(file, assets);
   fs::remove(file);
-  EXPECT_EQ(triangles(assets, model), 1u);
+  EXPECT_EQ(drawn_triangles(assets, model), 1u);
   std::string all;
   for (const std::string& w : model.warnings) all += w + "\n";
   EXPECT_NE(all.find("1 of 4 triangles have a NaN or infinite corner"), std::string::npos) << all;

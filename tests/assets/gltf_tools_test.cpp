@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/gltf_import.hpp"
+#include "support/model_triangles.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -19,13 +20,7 @@ namespace fs = std::filesystem;
 const fs::path kFixtures = fs::path(ATRIUM_SOURCE_DIR) / "tests/data/gltf-tools";
 const fs::path kTestdata = fs::path(ATRIUM_TESTDATA_DIR);
 
-std::size_t drawn_triangles(const AssetManager& assets, const ModelImport& imported) {
-  std::size_t total = 0;
-  for (const SceneInstance& instance : imported.instances) {
-    total += triangle_count(assets.mesh_asset(imported.asset).meshes.at(instance.mesh));
-  }
-  return total;
-}
+using testing::drawn_triangles;
 
 // The JSON of a .glb, to check what the tool actually wrote.
 nlohmann::json glb_json(const fs::path& path) {

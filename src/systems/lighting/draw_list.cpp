@@ -18,9 +18,7 @@ namespace {
 DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
   DrawBatch state;
   state.vertex_array = vertex_array;
-  const assets::TextureSlot* slots[kMaterialTextureSlots] = {&material.base_color_texture, &material.metallic_roughness_texture,
-                                                             &material.normal_texture, &material.occlusion_texture,
-                                                             &material.emissive_texture};
+  const auto slots = material.texture_slots();
   for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
     state.textures[s] = gpu.texture(slots[s]->texture);
     state.samplers[s] = gpu.sampler(slots[s]->sampler);
@@ -30,17 +28,8 @@ DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets&
   return state;
 }
 
-bool same_state(const DrawBatch& a, const DrawBatch& b) {
-  return a.vertex_array == b.vertex_array && a.textures == b.textures && a.samplers == b.samplers &&
-         a.double_sided == b.double_sided && a.mirrored == b.mirrored;
-}
-
-// Masked geometry last (its discard defeats early depth tests on GPUs), then
-// one run per vertex array and texture set.
-bool state_before(const DrawBatch& a, bool a_masked, const DrawBatch& b, bool b_masked) {
-  return std::tie(a_masked, a.vertex_array, a.textures, a.samplers, a.double_sided, a.mirrored) <
-         std::tie(b_masked, b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored);
-}
+// The GL state a batch sets: batches are merged and ordered by it.
+auto state_key(const DrawBatch& b) { return std::tie(b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored); }
 
 // Opaque geometry before it is placed: one command, all instances of a
 // primitive drawn with one material.
@@ -48,8 +37,7 @@ struct PendingCommand {
   DrawBatch state;
   bool masked = false;
   DrawCommand command;
-  std::vector<std::pair<float, InstanceData>> instances;  // view depth, record
-  float nearest = 0.0f;
+  std::vector<std::pair<float, InstanceData>> instances;  // view depth, record; never empty
 };
 
 struct PendingBlend {
@@ -75,8 +63,7 @@ MaterialData material_data(const assets::Material& m, const assets::GpuAssets& g
   if (m.double_sided) data.flags |= kMaterialDoubleSided;
   if (m.unlit) data.flags |= kMaterialUnlit;
   if (m.alpha_mode == assets::AlphaMode::Mask) data.flags |= kMaterialAlphaMasked;
-  const assets::TextureSlot* slots[kMaterialTextureSlots] = {&m.base_color_texture, &m.metallic_roughness_texture, &m.normal_texture,
-                                                             &m.occlusion_texture, &m.emissive_texture};
+  const auto slots = m.texture_slots();
   for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
     if (slots[s]->uv_set == 1) data.uv_sets |= 1u << s;
     const glm::mat3& t = slots[s]->uv_transform;  // column-major: t[column][row]
@@ -137,28 +124,29 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       const CommandKey key{vertex_array, range.first_index, range.base_vertex, &material, mirrored};
       const auto [it, added] = command_of.try_emplace(key, pending.size());
       if (added) {
-        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), material.alpha_mode == assets::AlphaMode::Mask, command,
-                           {}, depth});
+        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), material.alpha_mode == assets::AlphaMode::Mask, command, {}});
       }
-      PendingCommand& target = pending[it->second];
-      target.instances.emplace_back(depth, data);
-      target.nearest = std::min(target.nearest, depth);
+      pending[it->second].instances.emplace_back(depth, data);
     }
   });
 
-  // Opaque: by state, so that a batch holds every command of one state, then
-  // front to back (commands by their nearest instance, instances by depth).
+  // Opaque: masked last (its discard defeats early depth tests on GPUs), then
+  // by state, so that a batch holds every command of one state, then front to
+  // back (instances by depth, commands by their nearest instance).
+  for (PendingCommand& command : pending) {
+    std::stable_sort(command.instances.begin(), command.instances.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
   std::vector<std::size_t> order(pending.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     const PendingCommand& x = pending[a];
     const PendingCommand& y = pending[b];
-    if (state_before(x.state, x.masked, y.state, y.masked)) return true;
-    if (state_before(y.state, y.masked, x.state, x.masked)) return false;
-    return x.nearest < y.nearest;
+    if (x.masked != y.masked) return y.masked;
+    if (state_key(x.state) != state_key(y.state)) return state_key(x.state) < state_key(y.state);
+    return x.instances.front().first < y.instances.front().first;
   });
   auto append = [&](std::vector<DrawBatch>& batches, const DrawBatch& state, DrawCommand command, float depth) {
-    if (batches.empty() || !same_state(batches.back(), state)) {
+    if (batches.empty() || state_key(batches.back()) != state_key(state)) {
       batches.push_back(state);
       batches.back().first_command = static_cast<std::uint32_t>(list.commands.size());
       batches.back().command_count = 0;
@@ -168,14 +156,12 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     ++batches.back().command_count;
   };
   for (const std::size_t i : order) {
-    PendingCommand& pending_command = pending[i];
-    std::stable_sort(pending_command.instances.begin(), pending_command.instances.end(),
-                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    const PendingCommand& pending_command = pending[i];
     DrawCommand command = pending_command.command;
     command.base_instance = static_cast<std::uint32_t>(list.instances.size());
     command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
     for (const auto& [depth, record] : pending_command.instances) list.instances.push_back(record);
-    append(list.opaque, pending_command.state, command, pending_command.nearest);
+    append(list.opaque, pending_command.state, command, pending_command.instances.front().first);
   }
   // Blended: farthest first, one instance per command.
   std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });

@@ -22,7 +22,7 @@
 namespace atrium::lighting {
 
 // Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
-inline constexpr unsigned kMaterialTextureSlots = 5;
+inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlots;
 
 // Where mesh.vert finds the instance records and material.glsl the materials
 // (storage buffer bindings).
