@@ -3,7 +3,9 @@
 // depths, takes their view-space bounds, and tests every light's sphere against
 // the tile's frustum (four side planes and the depth bounds). Matching lights
 // are counted, a range of the global list is reserved with one atomic add per
-// tile, and the indices written: no cap per tile.
+// tile, and the indices written: no cap per tile. With BLENDED it fills the list
+// for blended surfaces instead: a pixel's bounds run from the nearest blended
+// surface in front of its opaque one (u_blended_depth) back to that opaque one.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "common/frame.glsl"
@@ -11,6 +13,10 @@ layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/light_lists.glsl"
 
 layout(binding = 0) uniform sampler2D u_depth;
+#ifdef BLENDED
+// The opaque depth with the blended surfaces drawn over it.
+layout(binding = 1) uniform sampler2D u_blended_depth;
+#endif
 uniform uvec2 u_tiles;
 uniform uint u_list_capacity;
 
@@ -60,11 +66,20 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   if (all(lessThan(pixel, ivec2(u_viewport_size)))) {
     float depth = texelFetch(u_depth, pixel, 0).r;
+#ifdef BLENDED
+    float front = texelFetch(u_blended_depth, pixel, 0).r;
+    if (front > depth) {
+      // Glass over the sky reaches to the far plane.
+      atomicMin(s_min_depth, floatBitsToUint(view_depth_from_depth(front)));
+      atomicMax(s_max_depth, floatBitsToUint(depth > kDepthFar ? view_depth_from_depth(depth) : u_far));
+    }
+#else
     if (depth > kDepthFar) {
       float view_depth = view_depth_from_depth(depth);
       atomicMin(s_min_depth, floatBitsToUint(view_depth));
       atomicMax(s_max_depth, floatBitsToUint(view_depth));
     }
+#endif
   }
   barrier();
   float near_depth = uintBitsToFloat(s_min_depth), far_depth = uintBitsToFloat(s_max_depth);

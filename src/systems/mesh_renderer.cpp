@@ -102,14 +102,15 @@ void MeshRenderer::recreate_technique() {
 
 void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const {
   if (!loop_limit_ || light_count <= loop_limit_) return;
-  const std::string why = lighting::find_technique(mode_)->loops_over_every_light ? "each pixel loops over every light"
-                          : !draws.blended.empty() ? "the scene's blended surfaces are shaded forward over every light"
-                                                   : "";
+  const lighting::LightLoops loops = lighting::find_technique(mode_)->loops_over_every_light;
+  const std::string why = loops.opaque                             ? "each pixel loops over every light"
+                          : loops.blended && !draws.blended.empty() ? "the scene's blended surfaces are shaded forward over every light"
+                                                                    : "";
   if (why.empty()) return;
   throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(light_count) + " lights: " + why +
                                 ", and this driver ends a shader's loops after " + std::to_string(loop_limit_) +
                                 " iterations (llvmpipe), so pixels would leave lights out; use at most " + std::to_string(loop_limit_) +
-                                " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ""));
+                                " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ", or a tiled or clustered mode"));
 }
 
 void MeshRenderer::StreamBuffer::upload(const void* data, std::size_t bytes) {

@@ -1,7 +1,10 @@
 // Extreme light counts: a million lights render in the tiled and clustered
 // modes when their lists fit, are refused with the memory they would need when
 // they do not, and modes whose pixels loop over every light refuse counts the
-// driver cannot loop over. After a refusal the world renders again with fewer.
+// driver cannot loop over. Glass no longer forces that refusal in the tiled and
+// clustered modes, which shade it from their lists; the light-volume modes still
+// shade it over every light and refuse. After a refusal the world renders again
+// with fewer.
 #include <gmock/gmock.h>
 
 #include "app/world.hpp"
@@ -88,6 +91,35 @@ TEST_F(LightLimits, ModesThatLoopOverEveryLightRefuseWhatTheDriverCannotLoop) {
   world.set_light_radius(0.2f);
   world.frame(0.0);
   EXPECT_EQ(world.renderer().stats().lights, limit + 1) << "tiled lists hold only the lights that reach a tile";
+}
+
+TEST_F(LightLimits, GlassUnderMoreLightsThanTheDriverCanLoopRendersAlikeInTiledAndClusteredModes) {
+  const std::uint32_t limit = gfx::shader_loop_limit();
+  if (!limit) GTEST_SKIP() << "this driver has no loop limit";
+  const std::string glass = std::string(ATRIUM_SOURCE_DIR) + "/tests/data/gltf-tools/blender-glass.glb";
+  WorldOptions options{glass, limit + 1, "clustered-deferred", 1, {160, 90}};
+  options.light_radius = 0.4f;
+  World world(options);
+  world.frame(0.0);
+  const assets::Image clustered = world.renderer().read_output();
+  EXPECT_EQ(world.renderer().stats().lights, limit + 1);
+  for (const char* mode : {"clustered-forward", "tiled-deferred"}) {
+    world.set_mode(mode);
+    world.frame(0.0);
+    EXPECT_GE(assets::psnr(clustered, world.renderer().read_output()), 50.0) << mode << " against clustered-deferred";
+  }
+  // They shade the panes over every light: the panes are in view.
+  for (const char* mode : {"light-volumes", "light-volumes-instanced"}) {
+    world.set_mode(mode);
+    EXPECT_THAT(refusal(world), HasSubstr(std::string(mode) + " with " + std::to_string(limit + 1) +
+                                          " lights: the scene's blended surfaces are shaded forward over every light"));
+  }
+  world.set_mode("tiled-deferred");
+  world.set_light_count(0);
+  world.frame(0.0);
+  const auto [brighter, darker] = brighter_and_darker(clustered, world.renderer().read_output(), 4);
+  EXPECT_GT(brighter, 100) << "the lights light the scene";
+  EXPECT_EQ(darker, 0);
 }
 
 }  // namespace

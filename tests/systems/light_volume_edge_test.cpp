@@ -1,7 +1,9 @@
 // Cases where volume- and radius-based techniques classically go wrong, each
 // rendered by every mode and compared with forward: the camera inside a light's
 // sphere, a sphere crossing the near plane, one crossing the far plane, spot and
-// directional lights, and alpha-blended geometry in front of the lit scene.
+// directional lights, alpha-blended geometry in front of the lit scene, and
+// small lights that reach only that glass (its lists must come from the glass,
+// not from the opaque surfaces behind it).
 #include <memory>
 
 #include "app/world.hpp"
@@ -110,6 +112,20 @@ std::vector<assets::SceneLight> straddling_lights() {
   return lights;
 }
 
+// Small lights just in front of the panes, reaching them but not the wall 10 m
+// behind: a pane's tile or cluster must list them though no opaque pixel near
+// them does (the floor below is out of their reach too).
+std::vector<assets::SceneLight> lights_at_the_panes() {
+  std::vector<assets::SceneLight> lights;
+  for (int i = 0; i < 6; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const glm::vec3 position(-0.9f + 0.45f * static_cast<float>(i), 0.55f + 0.3f * static_cast<float>(j), 1.75f - 0.2f * static_cast<float>(i));
+      lights.push_back(point(position, glm::vec3(1.0f, 0.7f + 0.1f * static_cast<float>(j), 0.5f), 0.2f, 0.45f));
+    }
+  }
+  return lights;
+}
+
 const EdgeCase kCases[] = {
     {"camera_inside", {point(glm::vec3(0.3f, 0.8f, 4.5f), glm::vec3(1.0f, 0.9f, 0.8f), 0.6f, 6.0f)}},
     // Centre 1.02 m ahead, radius 1: the sphere reaches 2 cm in front of the
@@ -123,6 +139,7 @@ const EdgeCase kCases[] = {
     {"close_to_wall", {point(glm::vec3(0.3f, 0.8f, -9.7f), glm::vec3(1.0f, 0.8f, 0.6f), 0.2f, 1.5f)}, 20.0f, false, 0.02f,
      glm::vec3(0.0f, 0.8f, -9.98f), 0.0f},
     {"straddling_edges", straddling_lights()},
+    {"lights_at_the_panes", lights_at_the_panes(), 200.0f, true},
 };
 
 class VolumeEdgeCase : public testing::GlTest,
@@ -145,7 +162,7 @@ TEST_P(VolumeEdgeCase, MatchesForward) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase,
-                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()), ::testing::Range(0, 7),
+                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()), ::testing::Range(0, static_cast<int>(std::size(kCases))),
                                             ::testing::ValuesIn(testing::gbuffer_layouts())),
                          [](const auto& info) {
                            return testing::test_name(std::get<0>(info.param), std::get<2>(info.param)) + "_" +

@@ -3,24 +3,34 @@
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
+namespace {
+
+std::vector<gfx::ShaderDefine> mark_defines(bool pixel_bounds) {
+  if (pixel_bounds) return {};
+  return {{"ACTIVE_FLAGS"}};
+}
+
+}  // namespace
+
 ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
       pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels),
       active_only_(options.active_clusters && !pixel_bounds_),
       grid_(options.cluster_grid),
       assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
-      mark_(pixel_bounds_ ? gpu.shaders().get({"clustered/mark_active.comp"}) : gpu.shaders().get({"clustered/mark_active.comp"}, {{"ACTIVE_FLAGS"}})),
+      mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_))),
+      mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
       shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
                         : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
-      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       gbuffer_(options.gbuffer_layout) {}
 
 void ClusteredTechnique::resize(const FrameTargets& targets) {
   if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);
 }
 
-GLuint ClusteredTechnique::mark_clusters(const FrameTargets& targets) {
+GLuint ClusteredTechnique::mark_clusters(const FrameContext& frame, const FrameTargets& targets) {
   GLuint buffer = 0;
   if (pixel_bounds_) {
     grid_.clear_pixel_bounds();
@@ -35,6 +45,19 @@ GLuint ClusteredTechnique::mark_clusters(const FrameTargets& targets) {
   glBindTextureUnit(0, targets.depth_stencil);
   mark_.use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
+  if (!frame.draws.blended.empty()) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glViewport(0, 0, targets.size.x, targets.size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(gfx::kDepthCloser);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    mark_blended_.use();
+    draw_items(frame.draws.blended);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   return buffer;
 }
@@ -53,7 +76,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
   }
   {
     const auto pass = frame.timer.scope("light assignment");
-    const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(targets) : 0;
+    const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(frame, targets) : 0;
     grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   }
   {
@@ -74,7 +97,10 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
       glDepthFunc(gfx::kDepthCloser);
     }
   }
-  draw_transparent(forward_, frame, targets);
+  // Blended surfaces are shaded forward+ from the same lists: their clusters
+  // were marked with the opaque pixels'.
+  grid_.bind();
+  draw_transparent(blended_, frame, targets);
 }
 
 }  // namespace atrium::lighting

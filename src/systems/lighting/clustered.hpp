@@ -4,7 +4,8 @@
 // cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
 // fragment once; deferred shades from the G-buffer. By default a cluster's lights
 // are those touching the box of the pixels it holds this frame (read from the
-// depth buffer); --cluster-bounds grid tests its whole frustum slice instead.
+// depth buffer and from blended fragments); --cluster-bounds grid tests its whole
+// frustum slice instead. Blended surfaces are shaded forward+ from the same lists.
 #pragma once
 
 #include "systems/lighting/cluster_grid.hpp"
@@ -31,8 +32,9 @@ class ClusteredTechnique final : public LightingTechnique {
 
  private:
   // Fills the per-cluster buffer assignment reads (pixel boxes, or active
-  // flags) from the depth buffer; returns it.
-  GLuint mark_clusters(const FrameTargets& targets);
+  // flags) from the depth buffer and the blended fragments in front of it;
+  // returns it.
+  GLuint mark_clusters(const FrameContext& frame, const FrameTargets& targets);
 
   bool deferred_;
   bool pixel_bounds_;
@@ -40,9 +42,10 @@ class ClusteredTechnique final : public LightingTechnique {
   ClusterGrid grid_;
   ClusterAssignPrograms assign_;
   gfx::ShaderProgram& mark_;
+  gfx::ShaderProgram& mark_blended_;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass
   gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading
-  gfx::ShaderProgram& forward_;
+  gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
   GBuffer gbuffer_;
 };
 

@@ -78,10 +78,17 @@ class LightingTechnique {
   [[nodiscard]] virtual const GBuffer* gbuffer() const { return nullptr; }
 };
 
+// Which of a technique's shaders loop over every light, so that a driver's loop
+// limit (gfx::shader_loop_limit) caps the light count it can draw.
+struct LightLoops {
+  bool opaque = false;   // each pixel's shading
+  bool blended = false;  // the shading of blended surfaces
+};
+
 struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
-  bool loops_over_every_light;   // each pixel's shader loops over all lights (see gfx::shader_loop_limit)
+  LightLoops loops_over_every_light;
   // Makes the technique; it takes its shader programs from gpu.shaders().
   std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu, const TechniqueOptions& options);
 };

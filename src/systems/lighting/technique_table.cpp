@@ -18,18 +18,18 @@ std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueO
 }
 
 constexpr TechniqueInfo kTechniques[] = {
-    {"forward", "one geometry pass; every fragment loops over every light (the baseline)", true, &make<ForwardTechnique>},
-    {"deferred", "G-buffer, then one full-screen pass over every light", true, &make<DeferredTechnique, false>},
-    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel", true, &make<DeferredTechnique, true>},
-    {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius", false,
+    {"forward", "one geometry pass; every fragment loops over every light (the baseline)", {true, true}, &make<ForwardTechnique>},
+    {"deferred", "G-buffer, then one full-screen pass over every light", {true, true}, &make<DeferredTechnique, false>},
+    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel", {true, true}, &make<DeferredTechnique, true>},
+    {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius", {false, true},
      &make<LightVolumeTechnique, false>},
-    {"tiled-deferred", "G-buffer, lights culled per 16x16 tile against its depth bounds, each pixel shades its tile's", false,
+    {"tiled-deferred", "G-buffer, lights culled per 16x16 tile against its depth bounds, each pixel shades its tile's", {},
      &make<TiledTechnique>},
-    {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's", false,
+    {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's", {},
      &make<ClusteredTechnique, false>},
-    {"clustered-deferred", "G-buffer, lights assigned to a 3D cluster grid, each pixel shades its cluster's", false,
+    {"clustered-deferred", "G-buffer, lights assigned to a 3D cluster grid, each pixel shades its cluster's", {},
      &make<ClusteredTechnique, true>},
-    {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil", false,
+    {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil", {false, true},
      &make<LightVolumeTechnique, true>},
 };
 

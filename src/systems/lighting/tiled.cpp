@@ -1,22 +1,40 @@
 #include "systems/lighting/tiled.hpp"
 
+#include "gfx/depth.hpp"
+
 namespace atrium::lighting {
 
 TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       assign_(gpu.shaders().get({"tiled/assign.comp"})),
       lighting_(gpu.shaders().get({"post/fullscreen.vert", "tiled/lighting.frag"})),
-      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
+      blended_depth_(gpu.shaders().get({"common/mesh.vert"})),
+      assign_blended_(gpu.shaders().get({"tiled/assign.comp"}, {{"BLENDED"}})),
+      blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
       gbuffer_(options.gbuffer_layout) {}
 
 void TiledTechnique::resize(const FrameTargets& targets) {
   gbuffer_.resize(targets.size, targets.depth_stencil);
   tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
   list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
-  for (gfx::ShaderProgram* program : {&assign_, &lighting_}) {
-    program->set("u_tiles", tiles_);
-    program->set("u_list_capacity", list_->capacity());
-  }
+  blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
+  for (gfx::ShaderProgram* program : {&assign_, &lighting_, &assign_blended_, &blended_}) program->set("u_tiles", tiles_);
+  for (gfx::ShaderProgram* program : {&assign_, &lighting_}) program->set("u_list_capacity", list_->capacity());
+  for (gfx::ShaderProgram* program : {&assign_blended_, &blended_}) program->set("u_list_capacity", blended_list_->capacity());
+  front_depth_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(front_depth_.id(), 1, gfx::kDepthStencilFormat, targets.size.x, targets.size.y);
+  front_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(front_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, front_depth_.id(), 0);
+  glNamedFramebufferDrawBuffer(front_framebuffer_.id(), GL_NONE);
+}
+
+void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, gfx::ShaderProgram& shading) {
+  assign.use();
+  list.assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); },
+              [&](std::uint32_t capacity) {
+                assign.set("u_list_capacity", capacity);
+                shading.set("u_list_capacity", capacity);
+              });
 }
 
 void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
@@ -24,19 +42,43 @@ void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targ
   {
     const auto pass = frame.timer.scope("light culling");
     glBindTextureUnit(0, targets.depth_stencil);
-    assign_.use();
-    list_->assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); },
-                  [&](std::uint32_t capacity) {
-                    assign_.set("u_list_capacity", capacity);
-                    lighting_.set("u_list_capacity", capacity);
-                  });
+    assign_lights(*list_, assign_, lighting_);
   }
   {
     const auto pass = frame.timer.scope("lighting");
     list_->bind();
     gbuffer_.draw_fullscreen(lighting_, targets);
   }
-  draw_transparent(forward_, frame, targets);
+  draw_blended(frame, targets);
+}
+
+void TiledTechnique::draw_blended(const FrameContext& frame, const FrameTargets& targets) {
+  blended_listed_ = !frame.draws.blended.empty();
+  if (!blended_listed_) return;
+  {
+    const auto pass = frame.timer.scope("blended light culling");
+    const glm::ivec2 size = targets.size;
+    glBlitNamedFramebuffer(targets.hdr_framebuffer, front_framebuffer_.id(), 0, 0, size.x, size.y, 0, 0, size.x, size.y,
+                           GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, front_framebuffer_.id());
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(gfx::kDepthCloser);
+    glDepthMask(GL_TRUE);
+    blended_depth_.use();
+    draw_items(frame.draws.blended);
+    glBindTextureUnit(0, targets.depth_stencil);
+    glBindTextureUnit(1, front_depth_.id());
+    assign_lights(*blended_list_, assign_blended_, blended_);
+  }
+  blended_list_->bind();
+  draw_transparent(blended_, frame, targets);
+}
+
+LightingTechnique::ListStats TiledTechnique::light_lists() const {
+  if (!list_) return {};
+  const std::uint32_t blended = blended_listed_ ? blended_list_->last_total() : 0;
+  return {list_->last_total() + blended, list_->overflow_frames() + blended_list_->overflow_frames()};
 }
 
 LightingTechnique::LightBins TiledTechnique::bind_light_bins() const {

@@ -2,6 +2,8 @@
 // compute pass over 16x16-pixel tiles takes each tile's depth bounds from the
 // depth buffer, culls the lights against the tile's frustum and writes per-tile
 // light lists; the lighting pass shades each pixel with its tile's lights.
+// Blended surfaces get lists of their own, bounded by the depths of the glass in
+// front of each tile's opaque surfaces, and are shaded forward from them.
 #pragma once
 
 #include <memory>
@@ -22,20 +24,32 @@ class TiledTechnique final : public LightingTechnique {
   [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
   [[nodiscard]] const LightIndexList& list() const { return *list_; }
+  // The lists of blended surfaces (filled only in frames that draw some).
+  // light_lists() counts both.
+  [[nodiscard]] const LightIndexList& blended_list() const { return *blended_list_; }
   [[nodiscard]] glm::uvec2 tiles() const { return tiles_; }
-  [[nodiscard]] ListStats light_lists() const override {
-    return list_ ? ListStats{list_->last_total(), list_->overflow_frames()} : ListStats{};
-  }
+  [[nodiscard]] ListStats light_lists() const override;
   [[nodiscard]] LightBins bind_light_bins() const override;
 
  private:
+  // Culls the lights into `list` with `assign`, keeping `shading`'s capacity in step.
+  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, gfx::ShaderProgram& shading);
+  // The frame's blended surfaces: their nearest depth over the opaque depth,
+  // their lists, then their forward shading from those lists.
+  void draw_blended(const FrameContext& frame, const FrameTargets& targets);
+
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram& assign_;
   gfx::ShaderProgram& lighting_;
-  gfx::ShaderProgram& forward_;
+  gfx::ShaderProgram& blended_depth_;   // depth only
+  gfx::ShaderProgram& assign_blended_;
+  gfx::ShaderProgram& blended_;         // forward shading from the blended lists
   GBuffer gbuffer_;
   glm::uvec2 tiles_{0};
-  std::unique_ptr<LightIndexList> list_;
+  std::unique_ptr<LightIndexList> list_, blended_list_;
+  bool blended_listed_ = false;         // this frame filled blended_list_
+  gfx::Texture front_depth_;            // the opaque depth with blended surfaces drawn over it
+  gfx::Framebuffer front_framebuffer_;
 };
 
 }  // namespace atrium::lighting

@@ -13,6 +13,8 @@ cd "$here"
 # A model with UVs, colours, tangents, a normal map and an unlit surface,
 # exported by Blender's glTF exporter.
 blender --background --python blender_colors.py -- "$testdata/blender-exports/teapot.gltf" blender-colors.glb
+# Tinted glass panes (alphaMode BLEND) over and beside opaque blocks, by Blender.
+blender --background --python blender_glass.py -- blender-glass.glb
 
 # EXT_meshopt_compression (and KHR_mesh_quantization unless -noq) by gltfpack;
 # -mi writes EXT_mesh_gpu_instancing, whose transforms use the QUATERNION and
