@@ -28,7 +28,10 @@ float visibility_smith_ggx_correlated(float n_dot_v, float n_dot_l, float alpha)
 }
 
 vec3 fresnel_schlick(float cos_theta, vec3 f0) {
-  return f0 + (1.0 - f0) * pow(1.0 - cos_theta, 5.0);
+  // (1 - cos)^5 by multiplication: pow() is exp2(log2()) on software rasterisers.
+  float m = 1.0 - cos_theta;
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * (m2 * m2 * m);
 }
 
 // Outgoing radiance towards V for unit incoming radiance from L, times N.L.
