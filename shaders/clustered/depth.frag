@@ -1,7 +1,8 @@
 #version 450 core
-// Clustered forward+, depth pre-pass: writes depth only, so that the shading
-// pass shades each pixel once. Alpha-masked fragments below the cutoff are
-// discarded here too, or they would hide what is behind their holes.
+// Clustered forward+, depth pre-pass of alpha-masked surfaces (the others go
+// through common/mesh.vert with POSITION_ONLY and common/depth_only.frag):
+// writes depth only, so that the shading pass shades each pixel once, and
+// discards fragments below the cutoff, or they would hide what is behind holes.
 #include "common/frame.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
@@ -14,8 +15,6 @@ in vec4 v_color;
 
 void main() {
   count_fragment();
-  if ((v_material_flags & kMaterialAlphaMasked) != 0u) {
-    Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
-    if (s.alpha < material_alpha_cutoff()) discard;
-  }
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
+  if (s.alpha < material_alpha_cutoff()) discard;
 }

@@ -4,7 +4,9 @@
 // normal, tangent, each texture slot's UV, the vertex colour and the material
 // for material evaluation.
 // Each vertex finds its instance's transforms through a_instance (the
-// instance-index attribute, offset by the draw's base instance).
+// instance-index attribute, offset by the draw's base instance). With
+// POSITION_ONLY (depth-only passes over surfaces without alpha tests) it
+// computes the clip-space position alone.
 #include "common/frame.glsl"
 #include "common/material_table.glsl"
 
@@ -24,6 +26,7 @@ struct Instance {
 };
 layout(std430, binding = 1) readonly buffer Instances { Instance u_instances[]; };
 
+#ifndef POSITION_ONLY
 out vec3 v_position;
 out vec3 v_normal;
 out vec4 v_tangent;
@@ -36,6 +39,7 @@ out vec2 v_uv[5];
 out vec4 v_color;
 flat out uint v_material;
 flat out uint v_material_flags;  // Material.flags, for branches that must agree across a pixel quad
+#endif
 
 // Every pass that draws the same mesh computes the same depth: the depth
 // pre-pass of forward+ and its shading pass compare with LEQUAL.
@@ -44,6 +48,8 @@ invariant gl_Position;
 void main() {
   Instance instance = u_instances[a_instance];
   vec4 world = instance.model * vec4(a_position, 1.0);
+  gl_Position = u_view_projection * world;
+#ifndef POSITION_ONLY
   v_position = world.xyz;
   v_normal = mat3(instance.normal_matrix) * a_normal;
   v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, a_tangent.w);
@@ -55,5 +61,5 @@ void main() {
   v_material_flags = material.flags;
   v_color = a_color;
   v_material = instance.material.x;
-  gl_Position = u_view_projection * world;
+#endif
 }

@@ -69,12 +69,13 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
     bool masked_seen = false;
     for (const DrawBatch& batch : list.opaque) {
       EXPECT_TRUE(states.insert(state_of(batch)).second) << "a state in two batches, view " << view;
-      // Masked materials come after every opaque one.
-      bool masked = false;
+      // Masked materials come after every opaque one, never in one batch with
+      // them (depth-only passes draw the two with different programs).
+      const bool masked = batch.alpha_masked;
       for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
         const DrawCommand& command = list.commands[c];
         const MaterialData& material = list.materials[list.instances[command.base_instance].material.x];
-        masked = (material.flags & kMaterialAlphaMasked) != 0u;
+        EXPECT_EQ((material.flags & kMaterialAlphaMasked) != 0u, masked) << "a batch mixing masked and opaque, view " << view;
         if (c > batch.first_command) EXPECT_LE(list.command_depths[c - 1], list.command_depths[c]) << "front to back";
         instances += command.instance_count;
         triangles += static_cast<std::size_t>(command.count / 3) * command.instance_count;

@@ -21,6 +21,7 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_))),
       mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
+      position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
                         : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
@@ -70,8 +71,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
     const auto pass = frame.timer.scope("depth pre-pass");
     begin_scene_pass(frame, targets);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    geometry_.use();
-    draw_items(frame.draws.opaque);
+    draw_depth(frame.draws.opaque, position_only_, geometry_);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
   {

@@ -25,17 +25,19 @@ DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets&
   }
   state.double_sided = material.double_sided;
   state.mirrored = mirrored;
+  state.alpha_masked = material.alpha_mode == assets::AlphaMode::Mask;
   return state;
 }
 
 // The GL state a batch sets: batches are merged and ordered by it.
-auto state_key(const DrawBatch& b) { return std::tie(b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored); }
+auto state_key(const DrawBatch& b) {
+  return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored);
+}
 
 // Opaque geometry before it is placed: one command, all instances of a
 // primitive drawn with one material.
 struct PendingCommand {
   DrawBatch state;
-  bool masked = false;
   DrawCommand command;
   std::vector<std::pair<float, InstanceData>> instances;  // view depth, record; never empty
 };
@@ -124,7 +126,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       const CommandKey key{vertex_array, range.first_index, range.base_vertex, &material, mirrored};
       const auto [it, added] = command_of.try_emplace(key, pending.size());
       if (added) {
-        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), material.alpha_mode == assets::AlphaMode::Mask, command, {}});
+        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
       }
       pending[it->second].instances.emplace_back(depth, data);
     }
@@ -141,7 +143,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
     const PendingCommand& x = pending[a];
     const PendingCommand& y = pending[b];
-    if (x.masked != y.masked) return y.masked;
+    // alpha_masked leads the state key: false sorts first.
     if (state_key(x.state) != state_key(y.state)) return state_key(x.state) < state_key(y.state);
     return x.instances.front().first < y.instances.front().first;
   });
@@ -199,6 +201,17 @@ void draw_items(std::span<const DrawBatch> batches) {
   glFrontFace(GL_CCW);
   glBindVertexArray(0);
   glBindSamplers(0, kMaterialTextureSlots, nullptr);
+}
+
+void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked) {
+  // build_draw_list puts the masked batches last.
+  const auto first_masked = std::find_if(batches.begin(), batches.end(), [](const DrawBatch& b) { return b.alpha_masked; });
+  const auto split = static_cast<std::size_t>(first_masked - batches.begin());
+  position_only.use();
+  draw_items(batches.first(split));
+  if (split == batches.size()) return;
+  masked.use();
+  draw_items(batches.subspan(split));
 }
 
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {

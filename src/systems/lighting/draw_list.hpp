@@ -83,6 +83,9 @@ struct DrawBatch {
   // The instances' transforms mirror (negative determinant): glTF then takes
   // clockwise triangles as front faces.
   bool mirrored = false;
+  // Alpha-masked: fragments below the cutoff are discarded, so even a depth-only
+  // pass must evaluate the material's alpha.
+  bool alpha_masked = false;
   std::uint32_t first_command = 0;  // into DrawList::commands
   std::uint32_t command_count = 0;
 };
@@ -116,6 +119,12 @@ struct DrawList {
 // and indirect buffers must be bound (the MeshRenderer binds them). Leaves
 // culling enabled and counter-clockwise front faces on return.
 void draw_items(std::span<const DrawBatch> batches);
+
+// Depth only, for pre-passes: batches without an alpha test through
+// `position_only` (common/mesh.vert with POSITION_ONLY and common/depth_only.frag:
+// no varyings, no material reads), alpha-masked ones through `masked`, which
+// discards below the cutoff. Colour writes are the caller's to disable.
+void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked);
 
 struct FrameContext;
 struct FrameTargets;

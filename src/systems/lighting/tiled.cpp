@@ -8,7 +8,7 @@ TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& o
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       assign_(gpu.shaders().get({"tiled/assign.comp"})),
       lighting_(gpu.shaders().get({"post/fullscreen.vert", "tiled/lighting.frag"})),
-      blended_depth_(gpu.shaders().get({"common/mesh.vert"})),
+      blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       assign_blended_(gpu.shaders().get({"tiled/assign.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
       gbuffer_(options.gbuffer_layout) {}

@@ -1,0 +1,7 @@
+#version 450 core
+// Depth-only passes over surfaces without an alpha test (with common/mesh.vert
+// built with POSITION_ONLY): the fixed-function depth write is the pass's
+// output; the shader exists so that the fragments debug view counts them too.
+#include "common/fragment_count.glsl"
+
+void main() { count_fragment(); }
