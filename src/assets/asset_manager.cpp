@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "assets/meshlets.hpp"
+
 namespace atrium::assets {
 
 namespace {
@@ -19,6 +21,10 @@ Handle add_cached(std::vector<T>& values, std::unordered_map<std::string, Handle
 }  // namespace
 
 MeshAssetHandle AssetManager::add_mesh_asset(MeshAsset asset, const std::string& key) {
+  if (!key.empty()) {
+    if (auto it = mesh_keys_.find(key); it != mesh_keys_.end()) return it->second;
+  }
+  build_meshlets(asset);
   return add_cached(mesh_assets_, mesh_keys_, std::move(asset), key);
 }
 

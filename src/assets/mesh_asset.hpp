@@ -86,12 +86,29 @@ struct Material {
   }
 };
 
+// A run of a primitive's triangles that lie close together (a meshlet, built by
+// build_meshlets): a contiguous range of its index list, with the bounds that
+// culling tests in object space.
+struct Meshlet {
+  std::uint32_t first_index = 0;  // into Primitive::indices
+  std::uint32_t index_count = 0;
+  glm::vec3 center{0.0f};         // a sphere holding every triangle
+  float radius = 0.0f;
+  // Normal cone: seen from a point p, every triangle faces away when
+  // dot(normalize(cone_apex - p), cone_axis) >= cone_cutoff (> 1: never).
+  glm::vec3 cone_apex{0.0f};
+  glm::vec3 cone_axis{0.0f, 0.0f, 1.0f};
+  float cone_cutoff = 2.0f;
+};
+
 struct Primitive {
   std::uint32_t vertex_buffer = 0;     // index into MeshAsset::vertex_buffers
   std::vector<std::uint32_t> indices;  // triangle list into that vertex buffer
   std::uint32_t material = 0;          // index into MeshAsset::materials
   glm::vec3 bounds_min{0.0f};          // of the vertices the indices reach
   glm::vec3 bounds_max{0.0f};
+  // Empty, or meshlets covering `indices` in order (large opaque primitives).
+  std::vector<Meshlet> meshlets;
 };
 
 struct Mesh {

@@ -19,12 +19,27 @@ struct Box {
   bool empty = true;  // holds no triangle
 };
 
+// A meshlet (assets/meshlets.hpp) in world space.
+struct MeshletBounds {
+  glm::vec3 center{0.0f};
+  float radius = 0.0f;
+  glm::vec3 cone_apex{0.0f};
+  glm::vec3 cone_axis{0.0f, 0.0f, 1.0f};
+  float cone_cutoff = 2.0f;  // > 1: never culled as facing away
+};
+
 struct WorldBounds {
   glm::vec3 min{0.0f};
   glm::vec3 max{0.0f};
   bool empty = true;  // the instance draws no triangle
   // One box per primitive of the instance's mesh, in the mesh's order.
   std::vector<Box> primitives;
+  // Every primitive's meshlets in order; primitive p's are
+  // [meshlet_offsets[p], meshlet_offsets[p + 1]). Normal cones only where the
+  // model matrix keeps angles and winding (a rotation, a uniform scale and a
+  // translation); elsewhere they never cull.
+  std::vector<MeshletBounds> meshlets;
+  std::vector<std::uint32_t> meshlet_offsets;
   // What the boxes were computed from: the bounds system recomputes them only
   // when the entity's model matrix or mesh changes.
   glm::mat4 model{0.0f};

@@ -1,5 +1,7 @@
 #include "systems/bounds.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
@@ -10,15 +12,40 @@
 namespace atrium {
 namespace {
 
+// Whether a linear map is a rotation times a uniform scale (it keeps angles).
+bool keeps_angles(const glm::mat3& m) {
+  const float a = glm::dot(m[0], m[0]), b = glm::dot(m[1], m[1]), c = glm::dot(m[2], m[2]);
+  const float tolerance = 1e-4f * std::max({a, b, c});
+  return std::abs(a - b) <= tolerance && std::abs(a - c) <= tolerance && std::abs(glm::dot(m[0], m[1])) <= tolerance &&
+         std::abs(glm::dot(m[0], m[2])) <= tolerance && std::abs(glm::dot(m[1], m[2])) <= tolerance;
+}
+
 void compute_boxes(const assets::AssetManager& assets, const MeshInstance& instance, const glm::mat4& model, WorldBounds& bounds) {
   bounds.model = model;
   bounds.asset = instance.asset;
   bounds.mesh = instance.mesh;
   bounds.primitives.clear();
+  bounds.meshlets.clear();
+  bounds.meshlet_offsets.assign(1, 0);
   assets::Bounds whole;
   const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
+  const glm::mat3 linear(model);
+  const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
+  const bool similarity = glm::determinant(linear) > 0.0f && keeps_angles(linear);
   if (instance.mesh < asset.meshes.size()) {
     for (const assets::Primitive& p : asset.meshes[instance.mesh].primitives) {
+      for (const assets::Meshlet& m : p.meshlets) {
+        MeshletBounds world;
+        world.center = glm::vec3(model * glm::vec4(m.center, 1.0f));
+        world.radius = m.radius * scale;
+        if (similarity) {
+          world.cone_apex = glm::vec3(model * glm::vec4(m.cone_apex, 1.0f));
+          world.cone_axis = glm::normalize(linear * m.cone_axis);
+          world.cone_cutoff = m.cone_cutoff;
+        }
+        bounds.meshlets.push_back(world);
+      }
+      bounds.meshlet_offsets.push_back(static_cast<std::uint32_t>(bounds.meshlets.size()));
       assets::Bounds box;
       if (!p.indices.empty()) box.add_box(model, p.bounds_min, p.bounds_max);
       bounds.primitives.push_back({box.min, box.max, box.empty});

@@ -5,6 +5,7 @@
 #include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/visibility.hpp"
+#include "assets/asset_manager.hpp"
 
 namespace atrium {
 
@@ -27,6 +28,46 @@ bool intersects(const Frustum& frustum, glm::vec3 min, glm::vec3 max) {
   return true;
 }
 
+bool intersects(const Frustum& frustum, glm::vec3 center, float radius) {
+  for (const glm::vec4& plane : frustum.planes) {
+    // Planes from a matrix are not unit length: scale the radius with them.
+    if (glm::dot(glm::vec3(plane), center) + plane.w < -radius * glm::length(glm::vec3(plane))) return false;
+  }
+  return true;
+}
+
+bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye) {
+  return glm::dot(glm::normalize(meshlet.cone_apex - eye), meshlet.cone_axis) >= meshlet.cone_cutoff;
+}
+
+namespace {
+
+// Culls primitive p's meshlets; appends the runs of visible ones to `ranges`.
+// Returns whether any is visible.
+bool cull_meshlets(const Frustum& frustum, glm::vec3 eye, const assets::Primitive& primitive, const WorldBounds& bounds,
+                   std::uint32_t p, std::vector<VisibleRange>& ranges, CullingStats& stats) {
+  const std::uint32_t first = bounds.meshlet_offsets[p];
+  bool any = false;
+  bool extend = false;  // the previous meshlet was visible: its run continues
+  for (std::uint32_t m = 0; m < primitive.meshlets.size(); ++m) {
+    const MeshletBounds& world = bounds.meshlets[first + m];
+    ++stats.meshlets;
+    if (!intersects(frustum, world.center, world.radius) || faces_away(world, eye)) {
+      extend = false;
+      continue;
+    }
+    ++stats.meshlets_visible;
+    any = true;
+    const assets::Meshlet& meshlet = primitive.meshlets[m];
+    if (extend) ranges.back().index_count += meshlet.index_count;
+    else ranges.push_back({p, meshlet.first_index, meshlet.index_count});
+    extend = true;
+  }
+  return any;
+}
+
+}  // namespace
+
 void update_frustum_culling(ecs::Registry& registry) {
   std::vector<ecs::Entity> missing;
   registry.view<WorldBounds>().each([&](ecs::Entity entity, const WorldBounds&) {
@@ -34,20 +75,31 @@ void update_frustum_culling(ecs::Registry& registry) {
   });
   for (const ecs::Entity entity : missing) registry.add<Visibility>(entity);
   const bool culling = registry.resource<RendererSettings>().frustum_culling;
-  const Frustum frustum = frustum_of(registry.resource<ViewState>().view_projection);
+  const ViewState& view = registry.resource<ViewState>();
+  const Frustum frustum = frustum_of(view.view_projection);
+  const auto& assets = registry.resource<assets::AssetManager>();
   CullingStats stats;
   registry.view<WorldBounds, Visibility>().each([&](const WorldBounds& bounds, Visibility& visibility) {
     ++stats.objects;
     stats.primitives += bounds.primitives.size();
     visibility.any = !bounds.empty && (!culling || intersects(frustum, bounds.min, bounds.max));
     visibility.primitives.assign(bounds.primitives.size(), 0);
+    visibility.ranges.clear();
     if (!visibility.any) return;
-    ++stats.objects_visible;
-    for (std::size_t p = 0; p < bounds.primitives.size(); ++p) {
+    const auto& primitives = assets.mesh_asset(bounds.asset).meshes.at(bounds.mesh).primitives;
+    bool any = false;
+    for (std::uint32_t p = 0; p < bounds.primitives.size(); ++p) {
       const Box& box = bounds.primitives[p];
-      visibility.primitives[p] = !box.empty && (!culling || intersects(frustum, box.min, box.max));
-      stats.primitives_visible += visibility.primitives[p];
+      bool visible = !box.empty && (!culling || intersects(frustum, box.min, box.max));
+      if (visible && culling && !primitives[p].meshlets.empty()) {
+        visible = cull_meshlets(frustum, view.camera_position, primitives[p], bounds, p, visibility.ranges, stats);
+      }
+      visibility.primitives[p] = visible;
+      stats.primitives_visible += visible;
+      any = any || visible;
     }
+    visibility.any = any;
+    stats.objects_visible += any;
   });
   registry.set_resource<CullingStats>(stats);
 }

@@ -1,14 +1,17 @@
 // The frustum culling system (PostUpdate, after bounds and camera): tests every
-// primitive box of every WorldBounds against the camera's view frustum and
-// writes each entity's Visibility, so that every pass of every technique draws
-// only what the camera can see. RendererSettings::frustum_culling off marks
-// everything visible (for comparisons).
+// primitive box of every WorldBounds against the camera's view frustum, then the
+// meshlets of large primitives against the frustum and their normal cones
+// against the eye, and writes each entity's Visibility (primitives, and runs of
+// visible meshlets), so that every pass of every technique draws only what the
+// camera can see. RendererSettings::frustum_culling off marks everything
+// visible (for comparisons).
 #pragma once
 
 #include <array>
 
 #include <glm/glm.hpp>
 
+#include "components/bounds.hpp"
 #include "ecs/scheduler.hpp"
 
 namespace atrium {
@@ -24,6 +27,11 @@ struct Frustum {
 // corner outside two planes are kept (conservative, never drops what shows).
 // Non-finite planes keep every box.
 [[nodiscard]] bool intersects(const Frustum& frustum, glm::vec3 min, glm::vec3 max);
+// The same for a sphere.
+[[nodiscard]] bool intersects(const Frustum& frustum, glm::vec3 center, float radius);
+// Whether every triangle of the meshlet faces away from `eye` (its normal cone
+// says so); false when the cone cannot tell.
+[[nodiscard]] bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye);
 
 // Needs ViewState and RendererSettings; adds Visibility to entities with
 // WorldBounds and sets the CullingStats resource.

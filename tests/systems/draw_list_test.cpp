@@ -3,6 +3,7 @@
 // to back within a state, and blended draws farthest first.
 #include "systems/lighting/draw_list.hpp"
 
+#include <algorithm>
 #include <set>
 #include <tuple>
 
@@ -84,7 +85,17 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
       masked_seen = masked_seen || masked;
     }
     EXPECT_EQ(triangles, list.triangles_drawn) << "the built-in scene has no blended surface";
-    EXPECT_EQ(instances, registry.resource<CullingStats>().primitives_visible) << view;
+    // One instance per visible primitive, or per run of visible meshlets.
+    std::size_t runs = 0;
+    registry.view<Visibility>().each([&](const Visibility& visibility) {
+      if (!visibility.any) return;
+      for (std::uint32_t p = 0; p < visibility.primitives.size(); ++p) {
+        if (!visibility.primitives[p]) continue;
+        const auto n = std::count_if(visibility.ranges.begin(), visibility.ranges.end(), [&](const VisibleRange& r) { return r.primitive == p; });
+        runs += n ? static_cast<std::size_t>(n) : 1u;
+      }
+    });
+    EXPECT_EQ(instances, runs) << view;
     EXPECT_EQ(list.draw_calls(), world.renderer().stats().draw_calls);
     EXPECT_LE(list.draw_calls(), 10u) << "no more draws than the scene's 10 materials";
   }

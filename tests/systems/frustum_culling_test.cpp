@@ -1,7 +1,8 @@
 // Frustum culling: the plane test against boxes with known answers, and in the
 // running engine that culling changes no pixel of any view or mode, drops what
 // the camera cannot see, follows entities that move, and keeps draw calls from
-// growing with copies of the scene.
+// growing with copies of the scene; meshlets facing away are dropped only where
+// the transform keeps their normal cones true (not mirrored, not stretched).
 #include "systems/frustum_culling.hpp"
 
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "assets/mesh_builder.hpp"
 #include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/mesh_instance.hpp"
@@ -71,11 +73,58 @@ TEST_F(FrustumCulling, ChangesNoPixelOfAnyViewOrModeAndDropsWhatIsOutOfView) {
     const FrameStats& without = whole.renderer().stats();
     EXPECT_EQ(without.triangles_drawn, without.triangles) << "view " << view;
     EXPECT_EQ(with.triangles, without.triangles);
-    // Every stored view looks into the courtyard: some of it is behind or beside the camera.
+    // Every stored view looks into the courtyard: some of it is behind or beside
+    // the camera, and some faces away (whole meshlets of it).
     EXPECT_LT(with.triangles_drawn, with.triangles) << "view " << view;
-    EXPECT_GT(with.triangles_drawn, with.triangles / 2) << "view " << view;
+    EXPECT_GT(with.triangles_drawn, with.triangles / 4) << "view " << view;
     EXPECT_LE(with.draw_calls, without.draw_calls);
   }
+}
+
+// Three spheres in front of the camera: as built, mirrored, and stretched.
+std::unique_ptr<World> spheres(bool culling) {
+  assets::AssetManager manager;
+  assets::MeshAsset asset;
+  asset.materials.emplace_back();
+  asset.meshes.push_back({"sphere", {assets::add_geometry(asset, assets::shapes::sphere(1.0f, 64, 32), 0)}});
+  assets::SceneDescription scene;
+  const assets::MeshAssetHandle handle = manager.add_mesh_asset(std::move(asset));
+  const glm::quat turn = glm::angleAxis(0.7f, glm::normalize(glm::vec3(1.0f, 2.0f, 0.5f)));
+  scene.instances.push_back({handle, 0, Transform{glm::vec3(-2.5f, 0.0f, 0.0f), turn, glm::vec3(1.0f)}});
+  scene.instances.push_back({handle, 0, Transform{glm::vec3(0.0f, 0.0f, 0.0f), turn, glm::vec3(-1.0f, 1.0f, 1.0f)}});
+  scene.instances.push_back({handle, 0, Transform{glm::vec3(2.5f, 0.0f, 0.0f), turn, glm::vec3(0.6f, 1.6f, 1.0f)}});
+  scene.lights.push_back({glm::vec3(0.0f, 2.0f, 4.0f), glm::vec3(1.0f), 8.0f, 20.0f});
+  scene.views.push_back({"front", glm::vec3(0.0f, 0.0f, 6.0f), 0.0f, 0.0f});
+  WorldOptions options{"", std::nullopt, "forward", 1, kSize};
+  options.frustum_culling = culling;
+  return std::make_unique<World>(std::move(manager), std::move(scene), options);
+}
+
+TEST_F(FrustumCulling, MeshletsFacingAwayAreDroppedWithoutChangingAPixelOfMirroredOrStretchedCopies) {
+  const auto culled = spheres(true), whole = spheres(false);
+  for (const std::string mode : {"forward", "clustered-forward", "deferred"}) {
+    culled->set_mode(mode);
+    whole->set_mode(mode);
+    culled->frame(0.0);
+    whole->frame(0.0);
+    const assets::Image image = culled->renderer().read_output();
+    assets::write_png("culling_spheres_" + mode + ".png", image);
+    EXPECT_LE(assets::max_channel_difference(image, whole->renderer().read_output()), 1) << mode;
+  }
+  const CullingStats& stats = culled->registry().resource<CullingStats>();
+  ASSERT_GT(stats.meshlets, 0u);
+  // Only the first sphere's cones may cull, and some of its far side does.
+  EXPECT_LT(stats.meshlets_visible, stats.meshlets);
+  EXPECT_GE(stats.meshlets_visible, stats.meshlets - stats.meshlets / 3);
+  std::size_t index = 0;
+  culled->registry().view<MeshInstance, WorldBounds>().each([&](const MeshInstance&, const WorldBounds& bounds) {
+    std::size_t cones = 0;
+    for (const MeshletBounds& m : bounds.meshlets) cones += m.cone_cutoff <= 1.0f;
+    if (index == 0) EXPECT_GE(cones, bounds.meshlets.size() / 2) << "a rotated copy keeps its cones";
+    else EXPECT_EQ(cones, 0u) << "mirrored or stretched: no cone, copy " << index;
+    ++index;
+  });
+  EXPECT_EQ(index, 3u);
 }
 
 TEST_F(FrustumCulling, ACameraLookingAwayFromTheSceneDrawsNothingButTheBackground) {

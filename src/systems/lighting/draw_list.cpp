@@ -84,8 +84,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     if (added) list.materials.push_back(material_data(material, gpu));
     return it->second;
   };
-  // Identical primitives with one material and winding share a command.
-  using CommandKey = std::tuple<GLuint, std::uint32_t, std::int32_t, const assets::Material*, bool>;
+  // Identical index ranges with one material and winding share a command.
+  using CommandKey = std::tuple<GLuint, std::uint32_t, std::uint32_t, std::int32_t, const assets::Material*, bool>;
   std::map<CommandKey, std::size_t> command_of;
   std::vector<PendingCommand> pending;
   std::vector<PendingBlend> blended;
@@ -105,30 +105,41 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     data.model = bounds ? bounds->model : to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
     const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
-    for (std::size_t p = 0; p < primitives.size(); ++p) {
+    std::size_t next_range = 0;  // into visibility->ranges, which go by primitive
+    for (std::uint32_t p = 0; p < primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
       if (primitive.indices.empty()) continue;
       if (visibility && p < visibility->primitives.size() && !visibility->primitives[p]) continue;
       const assets::Material& material = asset.materials.at(primitive.material);
       const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
-      list.triangles_drawn += primitive.indices.size() / 3;
       data.material.x = index_of(material);
       const glm::vec3 centre = bounds && p < bounds->primitives.size()
                                    ? 0.5f * (bounds->primitives[p].min + bounds->primitives[p].max)
                                    : glm::vec3(data.model * glm::vec4(0.5f * (primitive.bounds_min + primitive.bounds_max), 1.0f));
       const float depth = -(view * glm::vec4(centre, 1.0f)).z;
-      const DrawCommand command{range.index_count, 1, range.first_index, range.base_vertex, 0};
       const GLuint vertex_array = gpu_asset.vertex_array.id();
       if (material.alpha_mode == assets::AlphaMode::Blend) {
-        blended.push_back({batch_state(material, gpu, vertex_array, mirrored), command, data, depth});
+        list.triangles_drawn += primitive.indices.size() / 3;
+        blended.push_back({batch_state(material, gpu, vertex_array, mirrored), {range.index_count, 1, range.first_index, range.base_vertex, 0},
+                           data, depth});
         continue;
       }
-      const CommandKey key{vertex_array, range.first_index, range.base_vertex, &material, mirrored};
-      const auto [it, added] = command_of.try_emplace(key, pending.size());
-      if (added) {
-        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
+      // The primitive's visible meshlet runs, or the whole of it.
+      std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // (first index within the primitive, count)
+      while (visibility && next_range < visibility->ranges.size() && visibility->ranges[next_range].primitive < p) ++next_range;
+      while (visibility && next_range < visibility->ranges.size() && visibility->ranges[next_range].primitive == p) {
+        runs.emplace_back(visibility->ranges[next_range].first_index, visibility->ranges[next_range].index_count);
+        ++next_range;
       }
-      pending[it->second].instances.emplace_back(depth, data);
+      if (runs.empty()) runs.emplace_back(0, range.index_count);
+      for (const auto& [offset, count] : runs) {
+        list.triangles_drawn += count / 3;
+        const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
+        const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
+        const auto [it, added] = command_of.try_emplace(key, pending.size());
+        if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
+        pending[it->second].instances.emplace_back(depth, data);
+      }
     }
   });
 
