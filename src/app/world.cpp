@@ -22,7 +22,7 @@
 #include "systems/camera.hpp"
 #include "systems/frustum_culling.hpp"
 #include "systems/light_buffer.hpp"
-#include "systems/lighting/light_falloff.hpp"
+#include "systems/light_radius.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
@@ -78,15 +78,11 @@ void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene
     else transform.rotation = glm::rotation(forward, glm::normalize(light.direction));
     registry.add<Transform>(e, transform);
     const bool directional = light.kind == assets::LightKind::Directional;
-    if (radius && !directional) {
-      registry.add<LightColor>(e, light.color, lighting::intensity_for_radius(light.color, *radius));
-      registry.add<LightRadius>(e, *radius);
-    } else {
-      registry.add<LightColor>(e, light.color, light.intensity);
-      if (light.radius) registry.add<LightRadius>(e, *light.radius);
-    }
+    registry.add<LightColor>(e, light.color, light.intensity);
+    if (light.radius) registry.add<LightRadius>(e, *light.radius);
     if (light.kind == assets::LightKind::Spot) registry.add<SpotCone>(e, light.inner_cone, light.outer_cone);
     if (directional) registry.add<DirectionalLight>(e);
+    if (radius) set_light_radius(registry, e, *radius);
     if (light.generated && light.kind == assets::LightKind::Point) {
       registry.add<LightAnimation>(e, light.position, kGoldenAngle * static_cast<float>(animated++));
     }

@@ -12,6 +12,7 @@
 #include "components/input.hpp"
 #include "components/light.hpp"
 #include "gfx/gl_object.hpp"
+#include "systems/light_radius.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
@@ -163,11 +164,10 @@ void Overlay::controls(ecs::Registry& registry) {
   if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
     requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, 1'000'000));
   }
-  // One radius for every point and spot light: where each light's reach ends.
+  // One radius for every point and spot light, with the intensity that goes
+  // with it, as --light-radius gives them.
   if (ImGui::SliderFloat("light radius (m)", &light_radius_, 0.5f, 40.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
-    registry.view<LightColor>().each([&](ecs::Entity e, const LightColor&) {
-      if (!registry.has<DirectionalLight>(e)) registry.add<LightRadius>(e, light_radius_);
-    });
+    set_every_light_radius(registry, light_radius_);
   }
   ImGui::PopItemWidth();
 }
