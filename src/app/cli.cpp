@@ -184,7 +184,7 @@ std::string help_text() {
          "  --gl-debug      window: report GL errors through KHR_debug and print their count\n"
          "                  on exit (always on in debug builds)\n"
          "  --no-culling    render, compare, bench, window: draw the whole scene in every pass\n"
-         "                  (frustum culling is on by default; for comparisons)\n"
+         "                  (frustum and back-facing meshlet culling are on by default)\n"
          "  --json          info: print JSON\n"
          "\n"
          "Modes:\n" + modes +
