@@ -20,7 +20,13 @@ SceneInfo gather_info(World& world, const std::string& scene) {
     const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
     info.meshes += asset.meshes.size();
     info.vertices += asset.vertex_count();
-    for (const auto& mesh : asset.meshes) info.primitives += mesh.primitives.size();
+    for (const auto& mesh : asset.meshes) {
+      info.primitives += mesh.primitives.size();
+      for (const auto& p : mesh.primitives) {
+        info.meshlets += p.meshlets.size();
+        info.meshlet_primitives += !p.meshlets.empty();
+      }
+    }
     for (const auto& m : asset.materials) {
       (m.alpha_mode == assets::AlphaMode::Blend ? info.materials_blend
        : m.alpha_mode == assets::AlphaMode::Mask ? info.materials_mask
@@ -65,6 +71,7 @@ std::string format_info_text(const SceneInfo& i) {
                 "entities     %zu (%zu mesh instances, %zu lights, 1 camera)\n"
                 "mesh assets  %zu with %zu meshes, %zu primitives and %zu vertices\n"
                 "drawn        %zu triangles\n"
+                "meshlets     %zu in %zu large primitives (culled one by one)\n"
                 "materials    %zu: %zu opaque, %zu mask, %zu blend\n"
                 "textures     %zu (%.1f MiB in memory, compressed ones as stored)\n"
                 "lights       %zu: %zu point, %zu spot, %zu directional\n"
@@ -72,7 +79,7 @@ std::string format_info_text(const SceneInfo& i) {
                 "load time    parse %.3f s, decode %.3f s, upload %.3f s\n"
                 "warnings     %zu\n",
                 i.scene.c_str(), i.entities, i.mesh_instances, i.point_lights + i.spot_lights + i.directional_lights,
-                i.mesh_assets, i.meshes, i.primitives, i.vertices, i.triangles,
+                i.mesh_assets, i.meshes, i.primitives, i.vertices, i.triangles, i.meshlets, i.meshlet_primitives,
                 i.materials_opaque + i.materials_mask + i.materials_blend, i.materials_opaque, i.materials_mask,
                 i.materials_blend, i.textures, static_cast<double>(i.texture_bytes) / (1024.0 * 1024.0),
                 i.point_lights + i.spot_lights + i.directional_lights, i.point_lights, i.spot_lights, i.directional_lights,
@@ -90,6 +97,8 @@ std::string format_info_json(const SceneInfo& i) {
       {"meshes", i.meshes},
       {"primitives", i.primitives},
       {"triangles", i.triangles},
+      {"meshlets", i.meshlets},
+      {"meshlet_primitives", i.meshlet_primitives},
       {"vertices", i.vertices},
       {"materials", {{"opaque", i.materials_opaque}, {"mask", i.materials_mask}, {"blend", i.materials_blend}}},
       {"textures", i.textures},

@@ -14,6 +14,7 @@ struct SceneInfo {
   std::size_t entities = 0, mesh_instances = 0;
   std::size_t mesh_assets = 0, meshes = 0, primitives = 0;
   std::size_t triangles = 0;  // of the instances drawn
+  std::size_t meshlets = 0, meshlet_primitives = 0;  // held by the mesh assets (assets/meshlets.hpp)
   std::size_t vertices = 0;   // held by the mesh assets (shared ones once), as uploaded
   std::size_t materials_opaque = 0, materials_mask = 0, materials_blend = 0;
   std::size_t textures = 0, texture_bytes = 0;
