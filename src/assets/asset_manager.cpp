@@ -21,11 +21,10 @@ Handle add_cached(std::vector<T>& values, std::unordered_map<std::string, Handle
 }  // namespace
 
 MeshAssetHandle AssetManager::add_mesh_asset(MeshAsset asset, const std::string& key) {
-  if (!key.empty()) {
-    if (auto it = mesh_keys_.find(key); it != mesh_keys_.end()) return it->second;
-  }
-  build_meshlets(asset);
-  return add_cached(mesh_assets_, mesh_keys_, std::move(asset), key);
+  const std::size_t before = mesh_assets_.size();
+  const MeshAssetHandle handle = add_cached(mesh_assets_, mesh_keys_, std::move(asset), key);
+  if (mesh_assets_.size() > before) build_meshlets(mesh_assets_.back());  // new, not a cached key
+  return handle;
 }
 
 TextureHandle AssetManager::add_texture(TextureData texture, const std::string& key) {

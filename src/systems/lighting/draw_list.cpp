@@ -105,7 +105,9 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     data.model = bounds ? bounds->model : to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
     const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
-    std::size_t next_range = 0;  // into visibility->ranges, which go by primitive
+    const std::vector<VisibleRange> no_ranges;
+    const std::vector<VisibleRange>& ranges = visibility ? visibility->ranges : no_ranges;
+    std::size_t next_range = 0;  // into ranges, which go by primitive
     for (std::uint32_t p = 0; p < primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
       if (primitive.indices.empty()) continue;
@@ -124,21 +126,19 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
                            data, depth});
         continue;
       }
-      // The primitive's visible meshlet runs, or the whole of it.
-      std::vector<std::pair<std::uint32_t, std::uint32_t>> runs;  // (first index within the primitive, count)
-      while (visibility && next_range < visibility->ranges.size() && visibility->ranges[next_range].primitive < p) ++next_range;
-      while (visibility && next_range < visibility->ranges.size() && visibility->ranges[next_range].primitive == p) {
-        runs.emplace_back(visibility->ranges[next_range].first_index, visibility->ranges[next_range].index_count);
-        ++next_range;
-      }
-      if (runs.empty()) runs.emplace_back(0, range.index_count);
-      for (const auto& [offset, count] : runs) {
+      // (offset within the primitive, index count): one command per visible meshlet run.
+      auto add_run = [&](std::uint32_t offset, std::uint32_t count) {
         list.triangles_drawn += count / 3;
         const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
         if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
         pending[it->second].instances.emplace_back(depth, data);
+      };
+      while (next_range < ranges.size() && ranges[next_range].primitive < p) ++next_range;
+      if (next_range == ranges.size() || ranges[next_range].primitive != p) add_run(0, range.index_count);  // drawn whole
+      for (; next_range < ranges.size() && ranges[next_range].primitive == p; ++next_range) {
+        add_run(ranges[next_range].first_index, ranges[next_range].index_count);
       }
     }
   });
