@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Plots an `atrium bench` CSV: frame time against light count on log-log axes,
-one line per mode (the median over views of each mode's median frame time).
+one line per mode (the median over views of each mode's median frame time);
+with several --z-slicing schemes in the file, one line per clustered mode and scheme.
 
 usage: tools/plot_bench.py BENCH.csv OUT.png [TITLE]
 """
@@ -23,11 +24,16 @@ def main() -> int:
     times = defaultdict(lambda: defaultdict(list))
     renderer, size = "", ""
     with open(source, newline="") as f:
-        for row in csv.DictReader(f):
-            if row.get("refused"):  # the driver refused this mode at this light count: no time
-                continue
-            times[row["mode"]][int(row["lights"])].append(float(row["median_ms"]))
-            renderer, size = row["renderer"], f'{row["width"]}x{row["height"]}'
+        rows = list(csv.DictReader(f))
+    several_slicings = len({row.get("z_slicing") for row in rows if row.get("z_slicing")}) > 1
+    for row in rows:
+        if row.get("refused"):  # the driver refused this mode at this light count: no time
+            continue
+        label = row["mode"]
+        if several_slicings and row.get("z_slicing"):
+            label += "/" + row["z_slicing"]
+        times[label][int(row["lights"])].append(float(row["median_ms"]))
+        renderer, size = row["renderer"], f'{row["width"]}x{row["height"]}'
     if not times:
         print(f"plot_bench: {source} has no rows", file=sys.stderr)
         return 1

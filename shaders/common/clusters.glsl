@@ -1,12 +1,12 @@
 // The cluster grid shared by the clustered techniques: the view frustum cut into
 // u_grid.x * u_grid.y screen tiles and u_grid.z depth slices. Slice 0 runs from
-// the near plane to u_first_slice_far; slices 1.. are logarithmic in view depth
-// from there to the far plane, so that distant slices are not wasted and near
-// ones are not too thick. C++ twin: ClusterGrid in
+// the near plane to u_slicing.x; past it a depth's slice is f(depth) * scale + bias,
+// f the logarithm (log and plain-log slicing: distant slices are not wasted)
+// or, for uniform slicing, the depth itself. C++ twin: ClusterGrid in
 // src/systems/lighting/cluster_grid.cpp (tested against each other).
 layout(std140, binding = 1) uniform ClusterBlock {
   uvec4 u_grid;             // xyz clusters per axis, w total
-  vec4 u_slicing;           // x first_slice_far, y log scale, z log bias, w unused
+  vec4 u_slicing;           // x first slice's far depth, y scale, z bias, w 1 = uniform (else log)
   uvec4 u_list_info;        // x index list capacity
 };
 
@@ -17,7 +17,7 @@ layout(std140, binding = 1) uniform ClusterBlock {
 // the last slice: every visible fragment has a valid cluster.
 uint cluster_slice(float view_depth) {
   if (view_depth <= u_slicing.x) return 0u;
-  float slice = log(view_depth) * u_slicing.y + u_slicing.z;
+  float slice = (u_slicing.w > 0.5 ? view_depth : log(view_depth)) * u_slicing.y + u_slicing.z;
   return uint(clamp(slice, 1.0, float(u_grid.z - 1u)));
 }
 

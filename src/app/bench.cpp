@@ -60,6 +60,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   world.set_mode(mode);
   BenchRow row;
   row.mode = mode;
+  row.z_slicing = world.registry().resource<RendererSettings>().technique_options.z_slicing;
   row.lights = world.light_count();
   row.view = world.view();
   row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
@@ -67,6 +68,10 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   std::vector<double> frame_ms;
   std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
+  auto slices_depth = [&] {
+    const lighting::LightingTechnique* technique = world.renderer().technique();
+    return technique && technique->bind_light_bins().binning == lighting::LightingTechnique::Binning::Clusters;
+  };
   for (int f = 0; f < warmup + frames; ++f) {
     glFinish();
     const auto start = std::chrono::steady_clock::now();
@@ -74,6 +79,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
       world.frame(1.0 / 60.0);
     } catch (const gfx::ResourceLimitError& e) {
       row.refused = e.what();
+      row.sliced = slices_depth();
       row.median_ms = row.p5_ms = row.p95_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
       return row;
     }
@@ -87,6 +93,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
       pass_cpu_ms[pass.name].push_back(pass.cpu_milliseconds);
     }
   }
+  row.sliced = slices_depth();
   row.median_ms = percentile(frame_ms, 0.5);
   row.p5_ms = percentile(frame_ms, 0.05);
   row.p95_ms = percentile(frame_ms, 0.95);
@@ -132,7 +139,10 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   BenchResult result;
   result.options = options;
   const std::vector<std::string> modes = options.modes.empty() ? lighting::mode_names() : options.modes;
-  const std::size_t total = options.light_counts.size() * modes.size() * std::max<std::size_t>(options.views.size(), 1);
+  const std::vector<lighting::ZSlicing> slicings =
+      options.z_slicings.empty() ? std::vector{options.technique_options.z_slicing} : options.z_slicings;
+  const std::size_t total =
+      options.light_counts.size() * modes.size() * slicings.size() * std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
@@ -145,9 +155,16 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
       world.set_view(view);
       // deferred-radius evaluates exactly the lights whose radius covers a pixel.
       const double reaching = count_evaluations(world, "deferred-radius");
-      for (const std::string& mode : modes) {
-        result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
-        if (progress) progress(++done, total);
+      // Modes that do not slice depth are measured once, with the first slicing.
+      std::vector<std::string> sliced_modes = modes;
+      for (const lighting::ZSlicing slicing : slicings) {
+        world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
+        for (const std::string& mode : modes) {
+          const bool measure = std::find(sliced_modes.begin(), sliced_modes.end(), mode) != sliced_modes.end();
+          if (measure) result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
+          if (measure && !result.rows.back().sliced) std::erase(sliced_modes, mode);
+          if (progress) progress(++done, total);
+        }
       }
     }
     describe_renderer(result, world);
@@ -157,11 +174,18 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
 
 namespace {
 
-// Median over views of each (lights, mode) frame time; NaN where every view was refused.
+// A row's column in the tables: its mode, with the depth slicing when the
+// bench compares several ("clustered-deferred/uniform").
+std::string label(const BenchResult& result, const BenchRow& row) {
+  if (result.options.z_slicings.size() < 2 || !row.sliced) return row.mode;
+  return row.mode + "/" + std::string(lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
+}
+
+// Median over views of each (lights, label) frame time; NaN where every view was refused.
 std::map<std::pair<std::uint32_t, std::string>, double> median_over_views(const BenchResult& result) {
   std::map<std::pair<std::uint32_t, std::string>, std::vector<double>> times;
   for (const BenchRow& row : result.rows) {
-    auto& values = times[{row.lights, row.mode}];
+    auto& values = times[{row.lights, label(result, row)}];
     if (row.refused.empty()) values.push_back(row.median_ms);
   }
   std::map<std::pair<std::uint32_t, std::string>, double> medians;
@@ -172,7 +196,8 @@ std::map<std::pair<std::uint32_t, std::string>, double> median_over_views(const 
 std::vector<std::string> modes_in_order(const BenchResult& result) {
   std::vector<std::string> modes;
   for (const BenchRow& row : result.rows) {
-    if (std::find(modes.begin(), modes.end(), row.mode) == modes.end()) modes.push_back(row.mode);
+    const std::string name = label(result, row);
+    if (std::find(modes.begin(), modes.end(), name) == modes.end()) modes.push_back(name);
   }
   return modes;
 }
@@ -239,7 +264,7 @@ std::string bench_markdown(const BenchResult& result) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
     if (!row.refused.empty()) passes = "refused: " + row.refused;
-    md << "| " << row.mode << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
+    md << "| " << label(result, row) << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
        << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " |\n";
@@ -250,7 +275,7 @@ std::string bench_markdown(const BenchResult& result) {
 std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
-         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes\n";
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -263,7 +288,8 @@ std::string bench_csv(const BenchResult& result) {
         << "," << fixed(row.p95_ms, 4) << "," << fixed(row.fps(), 3) << "," << fixed(row.evaluated_per_pixel, 4) << ","
         << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
         << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
-        << row.draw_calls << ",\"" << cpu_passes << "\"\n";
+        << row.draw_calls << ",\"" << cpu_passes << "\","
+        << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << "\n";
   }
   return csv.str();
 }

@@ -32,11 +32,17 @@ struct BenchOptions {
   bool constant_density = false;             // radii shrink as cbrt(1024 / lights)
   std::string shading = "pbr";
   lighting::TechniqueOptions technique_options;
+  // --z-slicing LIST: every mode is measured with each (empty: technique_options').
+  std::vector<lighting::ZSlicing> z_slicings;
   bool frustum_culling = true;               // --no-culling
 };
 
 struct BenchRow {
   std::string mode;
+  // The depth slicing the row ran with, and whether the mode bins lights by
+  // depth slices at all (a clustered mode): only those are measured per slicing.
+  lighting::ZSlicing z_slicing = lighting::ZSlicing::Log;
+  bool sliced = false;
   std::uint32_t lights = 0;
   int view = 1;
   std::string view_name;

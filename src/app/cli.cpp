@@ -104,6 +104,15 @@ bool parse_bench_option(std::string_view arg, Value&& value, CliOptions& options
     if (text != "all") {
       for (const std::string& view : split_list(text)) bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
     }
+  } else if (arg == "--z-slicing") {
+    bench.z_slicings.clear();
+    for (const std::string& name : split_list(value())) {
+      const auto slicing = parse_choice<lighting::ZSlicing>(name, lighting::kZSlicingNames, "depth slicing", "slicings");
+      if (std::find(bench.z_slicings.begin(), bench.z_slicings.end(), slicing) == bench.z_slicings.end()) {
+        bench.z_slicings.push_back(slicing);
+      }
+    }
+    if (bench.z_slicings.empty()) throw UsageError("--z-slicing expects a comma-separated list of slicings");
   } else if (arg == "--frames") {
     bench.frames = parse_number<int>("--frames", value(), 1, 100000);
   } else if (arg == "--warmup") {
@@ -140,7 +149,7 @@ std::string help_text() {
          "                                           every mode at every view against forward (PSNR,\n"
          "                                           largest difference); exit 1 under 40 dB\n"
          "  atrium bench [SCENE] [--modes all|LIST] [--lights LIST] [--views all|LIST] [--size WxH]\n"
-         "               [--frames N] [--warmup N] [--constant-density]\n"
+         "               [--frames N] [--warmup N] [--constant-density] [--z-slicing LIST]\n"
          "               [--csv FILE] [--md FILE] [--plot FILE.png]\n"
          "                                           frame and pass times over modes, light counts\n"
          "                                           and views (default: all modes, 10,50,110,1024\n"
@@ -159,6 +168,9 @@ std::string help_text() {
          "                  pixels it holds (pixels, default) or its whole frustum slice (grid)\n"
          "  --active-clusters     clustered modes, grid bounds: only clusters holding visible\n"
          "                  pixels get lights\n"
+         "  --z-slicing S   clustered modes: depth slices log (default: a first slice to ten\n"
+         "                  near-plane distances, then logarithmic), plain-log (logarithmic from\n"
+         "                  the near plane) or uniform; bench takes a list and measures each\n"
          "  --gbuffer L     deferred modes: G-buffer layout, full (5 targets, 44 B/px, default)\n"
          "                  or compact (2 targets, 24 B/px; position from depth, octahedral normal)\n"
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
@@ -242,6 +254,9 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     } else if (arg == "--cluster-bounds") {
       options.technique_options.cluster_bounds =
           parse_choice<lighting::ClusterBounds>(value(), lighting::kClusterBoundsNames, "cluster bounds", "bounds");
+    } else if (arg == "--z-slicing") {
+      options.technique_options.z_slicing =
+          parse_choice<lighting::ZSlicing>(value(), lighting::kZSlicingNames, "depth slicing", "slicings");
     } else if (arg == "--gbuffer") {
       options.technique_options.gbuffer_layout =
           parse_choice<lighting::GBufferLayout>(value(), lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");

@@ -49,13 +49,14 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 21u);
+  ASSERT_EQ(header.size(), 22u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
   EXPECT_EQ(header[18], "triangles_drawn");
   EXPECT_EQ(header[19], "draw_calls");
   EXPECT_EQ(header[20], "cpu_passes");
+  EXPECT_EQ(header[21], "z_slicing");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -73,6 +74,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_GE(std::stoul(f[19]), 1u);
     EXPECT_LE(std::stoul(f[19]), 10u);
     EXPECT_NE(f[20].find("tonemap="), std::string::npos) << "per-pass CPU medians";
+    EXPECT_EQ(f[21], "") << "neither mode slices depth";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
@@ -87,6 +89,37 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   const assets::Image plot = assets::read_png(folder / "b.png");
   EXPECT_GT(plot.width, 300);
   EXPECT_GT(plot.height, 200);
+  fs::remove_all(folder);
+}
+
+// --z-slicing LIST: each clustered mode is measured once per scheme and named
+// with it; a mode without a cluster grid is measured once.
+TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_z_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string command = std::string(ATRIUM_BINARY) +
+                              " bench --modes forward,clustered-forward --z-slicing log,uniform,plain-log --lights 40 --views 1"
+                              " --size 32x18 --frames 1 --warmup 0 --csv " + (folder / "z.csv").string() +
+                              " --plot " + (folder / "z.png").string() + " > " + (folder / "stdout.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+  std::istringstream csv(read_text(folder / "z.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::string> measured;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = csv_fields(line);
+    ASSERT_EQ(f.size(), 22u) << line;
+    measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
+    EXPECT_NE(f[11], "-") << "lights evaluated per pixel, counted under each scheme";
+  }
+  EXPECT_EQ(measured, (std::vector<std::string>{"forward", "clustered-forward/log", "clustered-forward/uniform",
+                                                "clustered-forward/plain-log"}));
+  const std::string md = read_text(folder / "stdout.txt");
+  EXPECT_NE(md.find("| lights | forward | clustered-forward/log | clustered-forward/uniform | clustered-forward/plain-log |"),
+            std::string::npos)
+      << md;
+  EXPECT_NE(md.find("| clustered-forward/plain-log | 40 | 1 "), std::string::npos) << md;
+  EXPECT_GT(assets::read_png(folder / "z.png").width, 300);
   fs::remove_all(folder);
 }
 

@@ -1,13 +1,17 @@
 // The cluster grid: the GPU's light lists equal a CPU computation of the same
-// grid (as sets), every depth maps to a valid slice in GLSL and C++ alike, lists
-// grow instead of dropping lights, and --active-clusters changes no pixel.
+// grid (as sets), every depth maps to a valid slice in GLSL and C++ alike and
+// each --z-slicing scheme cuts where it says, lists grow instead of dropping
+// lights, and --active-clusters changes no pixel.
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/camera.hpp"
 #include "components/frame_resources.hpp"
 #include "components/transform.hpp"
+#include "gfx/depth.hpp"
 #include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
 #include "systems/light_buffer.hpp"
@@ -36,17 +40,61 @@ std::vector<std::vector<std::uint32_t>> expect_lists_equal_cpu(World& world) {
   return gpu;
 }
 
+constexpr std::array kSlicings{lighting::ZSlicing::Log, lighting::ZSlicing::Uniform, lighting::ZSlicing::PlainLog};
+
+std::string name_of(lighting::ZSlicing slicing) { return std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]); }
+
 TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
-  World world({"atrium", 300u, "clustered-deferred", 3, {160, 90}});
-  world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
-  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
-  world.frame(0.0);
-  const lighting::ClusterGrid& grid = grid_of(world);
-  ASSERT_EQ(grid.dims(), glm::uvec3(4, 3, 6));
-  std::size_t assignments = 0;
-  for (const auto& list : expect_lists_equal_cpu(world)) assignments += list.size();
-  EXPECT_GT(assignments, 300u) << "lights overlap several clusters";
-  EXPECT_EQ(grid.list().last_total(), assignments);
+  for (const lighting::ZSlicing slicing : kSlicings) {
+    SCOPED_TRACE(name_of(slicing));
+    World world({"atrium", 300u, "clustered-deferred", 3, {160, 90}});
+    auto& options = world.registry().resource<RendererSettings>().technique_options;
+    options.cluster_grid = {4, 3, 6};
+    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    options.z_slicing = slicing;
+    world.frame(0.0);
+    const lighting::ClusterGrid& grid = grid_of(world);
+    ASSERT_EQ(grid.dims(), glm::uvec3(4, 3, 6));
+    ASSERT_EQ(grid.slicing(), slicing);
+    std::size_t assignments = 0;
+    for (const auto& list : expect_lists_equal_cpu(world)) assignments += list.size();
+    EXPECT_GT(assignments, 300u) << "lights overlap several clusters";
+    EXPECT_EQ(grid.list().last_total(), assignments);
+  }
+}
+
+// Near 0.1 m, far 100 m, eight slices: where each scheme puts the boundaries,
+// checked through slice_of and through the clusters' boxes (view depth -z).
+TEST_F(ClusterGridTest, EachSlicingSchemeCutsDepthWhereItSays) {
+  constexpr float kNear = 0.1f, kFar = 100.0f;
+  constexpr std::uint32_t kSlices = 8;
+  const glm::mat4 projection = gfx::perspective(glm::radians(60.0f), 16.0f / 9.0f, kNear, kFar);
+  // Where boundary b (0 = near, kSlices = far) lies under each scheme.
+  auto boundary = [&](lighting::ZSlicing slicing, std::uint32_t b) -> float {
+    const float t = static_cast<float>(b) / kSlices;
+    switch (slicing) {
+      case lighting::ZSlicing::Log:  // the first slice to ten near-plane distances, then equal ratios
+        return b == 0 ? kNear : 1.0f * std::pow(kFar / 1.0f, static_cast<float>(b - 1) / (kSlices - 1));
+      case lighting::ZSlicing::PlainLog: return kNear * std::pow(kFar / kNear, t);
+      case lighting::ZSlicing::Uniform: return kNear + (kFar - kNear) * t;
+    }
+    return 0.0f;
+  };
+  EXPECT_NEAR(boundary(lighting::ZSlicing::PlainLog, 1), 0.23714f, 1e-4f);
+  EXPECT_NEAR(boundary(lighting::ZSlicing::Uniform, 1), 12.5875f, 1e-4f);
+  for (const lighting::ZSlicing slicing : kSlicings) {
+    SCOPED_TRACE(name_of(slicing));
+    lighting::ClusterGrid grid({2, 2, kSlices}, slicing);
+    grid.update(projection, kNear, kFar);
+    for (std::uint32_t z = 0; z < kSlices; ++z) {
+      const float start = boundary(slicing, z), end = boundary(slicing, z + 1);
+      EXPECT_EQ(grid.slice_of(start * 1.001f), z) << "just past the start of slice " << z;
+      EXPECT_EQ(grid.slice_of(end * 0.999f), z) << "just before the end of slice " << z;
+      const lighting::ClusterBox& box = grid.boxes()[z * 4];
+      EXPECT_NEAR(-box.hi.z, start, start * 1e-4f) << "slice " << z;
+      EXPECT_NEAR(-box.lo.z, end, end * 1e-4f) << "slice " << z;
+    }
+  }
 }
 
 TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder) {
@@ -83,28 +131,54 @@ TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
 }
 
 TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
-  World world({"atrium", 4u, "clustered-deferred", 1, {64, 36}});
-  world.frame(0.0);
-  const lighting::ClusterGrid& grid = grid_of(world);
-  const ViewState& view = world.registry().resource<ViewState>();
-  // Depths from before the near plane to beyond the far plane, including the
-  // view depth that window depth 1.0 stands for (the far plane itself).
-  std::vector<float> depths{0.0f, view.near_plane * 0.5f, view.near_plane, view.far_plane, view.far_plane * 2.0f};
-  for (int i = 0; i <= 400; ++i) depths.push_back(view.near_plane * std::pow(view.far_plane / view.near_plane, i / 400.0f));
+  for (const lighting::ZSlicing slicing : kSlicings) {
+    SCOPED_TRACE(name_of(slicing));
+    World world({"atrium", 4u, "clustered-deferred", 1, {64, 36}});
+    world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
+    world.frame(0.0);
+    const lighting::ClusterGrid& grid = grid_of(world);
+    const ViewState& view = world.registry().resource<ViewState>();
+    // Depths from before the near plane to beyond the far plane, including the
+    // view depth that window depth 1.0 stands for (the far plane itself).
+    std::vector<float> depths{0.0f, view.near_plane * 0.5f, view.near_plane, view.far_plane, view.far_plane * 2.0f};
+    for (int i = 0; i <= 400; ++i) depths.push_back(view.near_plane * std::pow(view.far_plane / view.near_plane, i / 400.0f));
+    for (int i = 0; i <= 400; ++i) depths.push_back(view.near_plane + (view.far_plane - view.near_plane) * (i / 400.0f));
 
-  const std::vector<std::uint32_t> slices = testing::evaluate_glsl<std::uint32_t>(
-      "#include \"common/frame.glsl\"\n#include \"common/clusters.glsl\"\n", "float", "uint", "cluster_slice(value)", depths,
-      [&] { grid.bind(); });
-  int disagreements = 0;
-  for (std::size_t i = 0; i < depths.size(); ++i) {
-    EXPECT_LT(slices[i], grid.dims().z) << "depth " << depths[i];
-    // Only a depth on a slice boundary may round either way.
-    disagreements += slices[i] != grid.slice_of(depths[i]);
+    const std::vector<std::uint32_t> slices = testing::evaluate_glsl<std::uint32_t>(
+        "#include \"common/frame.glsl\"\n#include \"common/clusters.glsl\"\n", "float", "uint", "cluster_slice(value)", depths,
+        [&] { grid.bind(); });
+    int disagreements = 0;
+    for (std::size_t i = 0; i < depths.size(); ++i) {
+      EXPECT_LT(slices[i], grid.dims().z) << "depth " << depths[i];
+      // Only a depth on a slice boundary may round either way.
+      disagreements += slices[i] != grid.slice_of(depths[i]);
+    }
+    EXPECT_LE(disagreements, 3);
+    EXPECT_EQ(grid.slice_of(0.0f), 0u);
+    EXPECT_EQ(grid.slice_of(view.far_plane), grid.dims().z - 1);
+    EXPECT_EQ(grid.slice_of(view.far_plane * 2.0f), grid.dims().z - 1);
   }
-  EXPECT_LE(disagreements, 2);
-  EXPECT_EQ(grid.slice_of(0.0f), 0u);
-  EXPECT_EQ(grid.slice_of(view.far_plane), grid.dims().z - 1);
-  EXPECT_EQ(grid.slice_of(view.far_plane * 2.0f), grid.dims().z - 1);
+}
+
+// Slicing moves lights between lists, never out of the picture: both clustered
+// modes under each scheme, with grid and pixel bounds, draw forward's image.
+TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
+  World world({"atrium", 400u, "forward", 2, {160, 90}});
+  world.frame(0.0);
+  const assets::Image reference = world.renderer().read_output();
+  auto& options = world.registry().resource<RendererSettings>().technique_options;
+  for (const char* mode : {"clustered-forward", "clustered-deferred"}) {
+    world.set_mode(mode);
+    for (const lighting::ZSlicing slicing : kSlicings) {
+      for (const lighting::ClusterBounds bounds : {lighting::ClusterBounds::Grid, lighting::ClusterBounds::Pixels}) {
+        options.z_slicing = slicing;
+        options.cluster_bounds = bounds;
+        world.frame(0.0);
+        EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0)
+            << mode << " " << name_of(slicing) << (bounds == lighting::ClusterBounds::Grid ? " grid" : " pixels");
+      }
+    }
+  }
 }
 
 TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {

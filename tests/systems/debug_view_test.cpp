@@ -271,34 +271,41 @@ TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
   EXPECT_EQ(pixel(image, 0, 0), (Rgb{38, 38, 38}));
 }
 
-TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyMode) {
+// Each --z-slicing scheme in a mode with a grid and in one without.
+TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyModeAndScheme) {
   for (const char* mode : {"forward", "clustered-deferred"}) {
-    World world({"atrium", 16u, mode, 1, kSize});
-    world.registry().resource<RendererSettings>().debug_view = "depth-slices";
-    world.frame(0.0);
-    const assets::Image image = world.renderer().read_output();
-    assets::write_png(std::string("debug_view_depth_slices_") + mode + ".png", image);
-    const std::vector<float> depth = world.renderer().read_view_depth();
-    lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid);
-    const auto& view = world.registry().resource<ViewState>();
-    grid.update(view.projection, view.near_plane, view.far_plane);
-    std::map<std::uint32_t, std::map<Rgb, int>> colours;
-    int covered = 0;
-    for (int y = 0; y < kSize.y; ++y) {
-      for (int x = 0; x < kSize.x; ++x) {
-        const float d = depth[static_cast<std::size_t>(y * kSize.x + x)];
-        if (!std::isfinite(d)) continue;
-        ++covered;
-        ++colours[grid.slice_of(d)][pixel(image, x, y)];
+    for (std::size_t scheme = 0; scheme < lighting::kZSlicingNames.size(); ++scheme) {
+      const auto slicing = static_cast<lighting::ZSlicing>(scheme);
+      const std::string label = std::string(mode) + "/" + std::string(lighting::kZSlicingNames[scheme]);
+      World world({"atrium", 16u, mode, 1, kSize});
+      world.registry().resource<RendererSettings>().debug_view = "depth-slices";
+      world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
+      world.frame(0.0);
+      const assets::Image image = world.renderer().read_output();
+      assets::write_png("debug_view_depth_slices_" + std::string(mode) + "_" + std::string(lighting::kZSlicingNames[scheme]) + ".png",
+                        image);
+      const std::vector<float> depth = world.renderer().read_view_depth();
+      lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid, slicing);
+      const auto& view = world.registry().resource<ViewState>();
+      grid.update(view.projection, view.near_plane, view.far_plane);
+      std::map<std::uint32_t, std::map<Rgb, int>> colours;
+      int covered = 0;
+      for (int y = 0; y < kSize.y; ++y) {
+        for (int x = 0; x < kSize.x; ++x) {
+          const float d = depth[static_cast<std::size_t>(y * kSize.x + x)];
+          if (!std::isfinite(d)) continue;
+          ++covered;
+          ++colours[grid.slice_of(d)][pixel(image, x, y)];
+        }
       }
+      EXPECT_GE(colours.size(), 4u) << label << ": the view spans several slices";
+      const auto majority = majority_colours(colours);
+      std::set<Rgb> used;
+      for (const auto& [slice, colour] : majority.colour) {
+        EXPECT_TRUE(used.insert(colour).second) << label << ": slice " << slice << " shares its colour";
+      }
+      EXPECT_GE(majority.agreeing, covered * 98 / 100) << label;
     }
-    EXPECT_GE(colours.size(), 4u) << mode << ": the view spans several slices";
-    const auto majority = majority_colours(colours);
-    std::set<Rgb> used;
-    for (const auto& [slice, colour] : majority.colour) {
-      EXPECT_TRUE(used.insert(colour).second) << mode << ": slice " << slice << " shares its colour";
-    }
-    EXPECT_GE(majority.agreeing, covered * 98 / 100) << mode;
   }
 }
 

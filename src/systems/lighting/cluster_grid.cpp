@@ -23,8 +23,9 @@ ClusterAssignPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, 
   return {step(""), step("STEP_RESERVE"), step("STEP_WRITE")};
 }
 
-ClusterGrid::ClusterGrid(glm::uvec3 dims)
+ClusterGrid::ClusterGrid(glm::uvec3 dims, ZSlicing slicing)
     : dims_(glm::max(dims, glm::uvec3(1, 1, 2))),
+      slicing_(slicing),
       uniform_buffer_(gfx::create_buffer()),
       bounds_(gfx::create_buffer()),
       active_(gfx::create_buffer()),
@@ -57,22 +58,45 @@ void ClusterGrid::update(const glm::mat4& projection, float near_plane, float fa
   near_ = near_plane;
   far_ = far_plane;
   ++rebuilds_;
-  // The first slice ends ten near-plane distances out (or earlier for a short frustum).
-  const float first = std::min(near_plane * 10.0f, near_plane + (far_plane - near_plane) / static_cast<float>(dims_.z));
-  const float scale = static_cast<float>(dims_.z - 1) / std::log(far_plane / first);
+  // Every scheme maps a depth past the first slice to slice = f(depth) * scale + bias,
+  // f the logarithm or (uniform) the identity; boundary b >= 1 lies at f^-1((b - bias) / scale).
+  const auto slices = static_cast<float>(dims_.z);
+  const bool linear = slicing_ == ZSlicing::Uniform;
+  float first = 0.0f, scale = 0.0f, bias = 0.0f;
+  switch (slicing_) {
+    case ZSlicing::Log:
+      // The first slice ends ten near-plane distances out (or earlier for a short frustum).
+      first = std::min(near_plane * 10.0f, near_plane + (far_plane - near_plane) / slices);
+      scale = (slices - 1.0f) / std::log(far_plane / first);
+      bias = 1.0f - std::log(first) * scale;
+      break;
+    case ZSlicing::PlainLog:
+      scale = slices / std::log(far_plane / near_plane);
+      bias = -std::log(near_plane) * scale;
+      first = std::exp((1.0f - bias) / scale);
+      break;
+    case ZSlicing::Uniform:
+      scale = slices / (far_plane - near_plane);
+      bias = -near_plane * scale;
+      first = near_plane + (far_plane - near_plane) / slices;
+      break;
+  }
   uniforms_.grid = glm::uvec4(dims_, cluster_count());
-  uniforms_.slicing = glm::vec4(first, scale, 1.0f - std::log(first) * scale, 0.0f);
+  uniforms_.slicing = glm::vec4(first, scale, bias, linear ? 1.0f : 0.0f);
   upload_uniforms();
 
   // Each cluster's box: the tile's four corner rays cut at the slice's depths.
   const glm::mat4 inverse = glm::inverse(projection);
   auto slice_depth = [&](std::uint32_t boundary) {
     if (boundary == 0) return near_plane;
-    return first * std::pow(far_plane / first, static_cast<float>(boundary - 1) / static_cast<float>(dims_.z - 1));
+    if (boundary == 1) return first;
+    if (boundary == dims_.z) return far_plane;
+    const float x = (static_cast<float>(boundary) - bias) / scale;
+    return linear ? x : std::exp(x);
   };
   boxes_.resize(cluster_count());
   for (std::uint32_t z = 0; z < dims_.z; ++z) {
-    const float d0 = slice_depth(z), d1 = z + 1 == dims_.z ? far_plane : slice_depth(z + 1);
+    const float d0 = slice_depth(z), d1 = slice_depth(z + 1);
     for (std::uint32_t y = 0; y < dims_.y; ++y) {
       for (std::uint32_t x = 0; x < dims_.x; ++x) {
         glm::vec3 lo(1e30f), hi(-1e30f);
@@ -95,7 +119,8 @@ void ClusterGrid::update(const glm::mat4& projection, float near_plane, float fa
 
 std::uint32_t ClusterGrid::slice_of(float view_depth) const {
   if (view_depth <= uniforms_.slicing.x) return 0;
-  const float slice = std::log(view_depth) * uniforms_.slicing.y + uniforms_.slicing.z;
+  const float x = slicing_ == ZSlicing::Uniform ? view_depth : std::log(view_depth);
+  const float slice = x * uniforms_.slicing.y + uniforms_.slicing.z;
   return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
 }
 

@@ -1,6 +1,6 @@
 // The cluster grid of the clustered techniques: the view frustum cut into
-// screen tiles and depth slices (a first slice from the near plane, then
-// logarithmic slices to the far plane), each cluster's view-space bounds
+// screen tiles and depth slices (ZSlicing: by default a first slice from the
+// near plane, then logarithmic slices to the far plane), each cluster's view-space bounds
 // (rebuilt only when the projection changes), and the light assignment
 // (count, reserve, write over cluster and light-chunk pairs) that fills one
 // global light index list (LightIndexList: no cap per cluster).
@@ -26,7 +26,7 @@ inline constexpr unsigned kClusterUniformBinding = 1;
 // std140 twin of ClusterBlock in shaders/common/clusters.glsl.
 struct ClusterUniforms {
   glm::uvec4 grid;      // xyz clusters per axis, w total
-  glm::vec4 slicing;    // x first slice's far depth, y log scale, z log bias
+  glm::vec4 slicing;    // x first slice's far depth, y scale, z bias, w 1 = uniform (else log)
   glm::uvec4 list_info; // x index list capacity
 };
 static_assert(sizeof(ClusterUniforms) == 48, "must match ClusterBlock in shaders/common/clusters.glsl");
@@ -49,7 +49,7 @@ struct ClusterAssignPrograms {
 
 class ClusterGrid {
  public:
-  explicit ClusterGrid(glm::uvec3 dims);
+  explicit ClusterGrid(glm::uvec3 dims, ZSlicing slicing = ZSlicing::Log);
 
   // The assignment programs: with `bounds` Pixels, clusters are tested by the
   // box of their pixels (pixel_bounds_buffer(), filled by
@@ -67,6 +67,7 @@ class ClusterGrid {
   void bind() const;
 
   [[nodiscard]] glm::uvec3 dims() const { return dims_; }
+  [[nodiscard]] ZSlicing slicing() const { return slicing_; }
   [[nodiscard]] std::uint32_t cluster_count() const { return dims_.x * dims_.y * dims_.z; }
   [[nodiscard]] std::uint32_t slice_of(float view_depth) const;
   [[nodiscard]] const std::vector<ClusterBox>& boxes() const { return boxes_; }
@@ -87,6 +88,7 @@ class ClusterGrid {
   void upload_uniforms();
 
   glm::uvec3 dims_;
+  ZSlicing slicing_;
   ClusterUniforms uniforms_{};
   std::vector<ClusterBox> boxes_;
   glm::mat4 projection_{0.0f};

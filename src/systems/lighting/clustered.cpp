@@ -16,7 +16,7 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
     : deferred_(deferred),
       pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels),
       active_only_(options.active_clusters && !pixel_bounds_),
-      grid_(options.cluster_grid),
+      grid_(options.cluster_grid, options.z_slicing),
       assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
       mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_))),
       mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),

@@ -19,7 +19,7 @@ std::string debug_view_names() {
 }
 
 DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
-    : gpu_(gpu), gbuffer_(options.gbuffer_layout), cluster_dims_(options.cluster_grid) {}
+    : gpu_(gpu), gbuffer_(options.gbuffer_layout), cluster_dims_(options.cluster_grid), z_slicing_(options.z_slicing) {}
 
 void DebugViews::resize(const FrameTargets& targets) {
   size_ = targets.size;
@@ -118,7 +118,7 @@ void DebugViews::draw_light_bins(int view, const LightingTechnique& technique, c
   std::vector<gfx::ShaderDefine> defines;
   LightingTechnique::LightBins bins;
   if (view == kDepthSliceView) {
-    if (!slicing_) slicing_ = std::make_unique<ClusterGrid>(cluster_dims_);
+    if (!slicing_) slicing_ = std::make_unique<ClusterGrid>(cluster_dims_, z_slicing_);
     slicing_->update(frame.projection, frame.near_plane, frame.far_plane);
     slicing_->bind();
     defines.push_back({"DEPTH_SLICES"});

@@ -64,6 +64,7 @@ class DebugViews {
   // The slicing the clustered modes use with these options, for depth-slices
   // in any mode; made when that view is first shown.
   glm::uvec3 cluster_dims_;
+  ZSlicing z_slicing_;
   std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
   gfx::Texture counts_;

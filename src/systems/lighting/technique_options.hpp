@@ -1,5 +1,5 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
-// --active-clusters, --gbuffer). Plain data, kept apart from the GL-facing technique interface so
+// --active-clusters, --z-slicing, --gbuffer). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -21,10 +21,18 @@ inline constexpr std::array<std::string_view, 2> kGBufferLayoutNames{"full", "co
 enum class ClusterBounds { Pixels, Grid };
 inline constexpr std::array<std::string_view, 2> kClusterBoundsNames{"pixels", "grid"};
 
+// How the clustered modes cut view depth into slices (shaders/common/clusters.glsl):
+// log, the default, gives the first slice the depths from the near plane to ten
+// near-plane distances and cuts the rest logarithmically; plain-log is logarithmic
+// from the near plane itself; uniform cuts equal thicknesses.
+enum class ZSlicing { Log, Uniform, PlainLog };
+inline constexpr std::array<std::string_view, 3> kZSlicingNames{"log", "uniform", "plain-log"};
+
 struct TechniqueOptions {
   glm::uvec3 cluster_grid{16, 9, 32};
   ClusterBounds cluster_bounds = ClusterBounds::Pixels;
   bool active_clusters = false;  // grid bounds: only clusters holding a visible pixel get lights
+  ZSlicing z_slicing = ZSlicing::Log;
   GBufferLayout gbuffer_layout = GBufferLayout::Full;
   bool operator==(const TechniqueOptions&) const = default;
 };
