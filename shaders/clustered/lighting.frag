@@ -6,14 +6,13 @@
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
 #include "common/cluster_shading.glsl"
-
-layout(location = 0) out vec4 out_color;
+#include "common/lighting_targets.glsl"
 
 void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) {
-    out_color = vec4(u_background.rgb, 1.0);
+    write_background();
     return;
   }
-  out_color = vec4(shade_cluster_lights(s, gl_FragCoord.xy), 1.0);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, gl_FragCoord.xy));
 }

@@ -22,5 +22,5 @@ void main() {
   count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
   if (s.alpha < material_alpha_cutoff()) discard;
-  out_color = vec4(shade_cluster_lights(s, gl_FragCoord.xy), s.alpha);
+  out_color = vec4(shade_unlit_terms(s, u_ambient.rgb) + light_total(shade_cluster_lights(s, gl_FragCoord.xy)), s.alpha);
 }

@@ -34,11 +34,14 @@ vec3 fresnel_schlick(float cos_theta, vec3 f0) {
   return f0 + (1.0 - f0) * (m2 * m2 * m);
 }
 
-// Outgoing radiance towards V for unit incoming radiance from L, times N.L.
+// Outgoing radiance towards V for unit incoming radiance from L, times N.L, as
+// the diffuse and the specular lobe's shares (their sum is the response).
 // Cook-Torrance (shading model `pbr`).
-vec3 brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
+void brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse, out vec3 specular) {
+  diffuse = vec3(0.0);
+  specular = vec3(0.0);
   float n_dot_l = max(dot(n, l), 0.0);
-  if (n_dot_l <= 0.0) return vec3(0.0);
+  if (n_dot_l <= 0.0) return;
   vec3 h = normalize(v + l);
   float n_dot_v = max(dot(n, v), 1e-4);
   float n_dot_h = max(dot(n, h), 0.0);
@@ -46,30 +49,38 @@ vec3 brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, flo
   float alpha = max(roughness * roughness, 2e-3);
   vec3 f0 = mix(vec3(0.04), albedo, metallic);
   vec3 f = fresnel_schlick(v_dot_h, f0);
-  vec3 specular = distribution_ggx(n_dot_h, alpha) * visibility_smith_ggx_correlated(n_dot_v, n_dot_l, alpha) * f;
-  vec3 diffuse = (1.0 - f) * (1.0 - metallic) * albedo / kPi;
-  return (diffuse + specular) * n_dot_l;
+  specular = distribution_ggx(n_dot_h, alpha) * visibility_smith_ggx_correlated(n_dot_v, n_dot_l, alpha) * f * n_dot_l;
+  diffuse = (1.0 - f) * (1.0 - metallic) * albedo / kPi * n_dot_l;
 }
 
-vec3 brdf_phong_family(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
+void brdf_phong_family(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse, out vec3 specular) {
+  diffuse = vec3(0.0);
+  specular = vec3(0.0);
   float n_dot_l = max(dot(n, l), 0.0);
-  if (n_dot_l <= 0.0) return vec3(0.0);
+  if (n_dot_l <= 0.0) return;
   float alpha = max(roughness * roughness, 2e-3);
   float shininess = clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 8192.0);
-  vec3 diffuse = albedo * (1.0 - metallic) / kPi;
   vec3 specular_color = mix(vec3(0.04), albedo, metallic);
 #if SHADING_MODEL == 1
   float lobe = pow(max(dot(n, normalize(v + l)), 0.0), shininess) * (shininess + 8.0) / (8.0 * kPi);
 #else
   float lobe = pow(max(dot(reflect(-l, n), v), 0.0), shininess) * (shininess + 2.0) / (2.0 * kPi);
 #endif
-  return (diffuse + specular_color * lobe) * n_dot_l;
+  diffuse = albedo * (1.0 - metallic) / kPi * n_dot_l;
+  specular = specular_color * lobe * n_dot_l;
+}
+
+void surface_response_split(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse,
+                            out vec3 specular) {
+#if SHADING_MODEL == 0
+  brdf_cook_torrance(n, v, l, albedo, metallic, roughness, diffuse, specular);
+#else
+  brdf_phong_family(n, v, l, albedo, metallic, roughness, diffuse, specular);
+#endif
 }
 
 vec3 surface_response(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {
-#if SHADING_MODEL == 0
-  return brdf_cook_torrance(n, v, l, albedo, metallic, roughness);
-#else
-  return brdf_phong_family(n, v, l, albedo, metallic, roughness);
-#endif
+  vec3 diffuse, specular;
+  surface_response_split(n, v, l, albedo, metallic, roughness, diffuse, specular);
+  return diffuse + specular;
 }

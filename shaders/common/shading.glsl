@@ -39,15 +39,51 @@ bool light_reaches(Light light, vec3 position) {
 layout(r32ui, binding = 0) uniform coherent uimage2D u_light_counts;
 #endif
 
-vec3 shade_light(Surface s, vec3 v, Light light) {
+// What lights add to a surface. With SPLIT_LIGHTING (--split-lighting, the
+// diffuse-light and specular-light views) the diffuse and specular sums stay
+// apart, for the deferred lighting passes to write each to its own target.
+struct LightSum {
+#ifdef SPLIT_LIGHTING
+  vec3 diffuse;
+  vec3 specular;
+#else
+  vec3 total;
+#endif
+};
+
+LightSum no_light() {
+#ifdef SPLIT_LIGHTING
+  return LightSum(vec3(0.0), vec3(0.0));
+#else
+  return LightSum(vec3(0.0));
+#endif
+}
+
+vec3 light_total(LightSum sum) {
+#ifdef SPLIT_LIGHTING
+  return sum.diffuse + sum.specular;
+#else
+  return sum.total;
+#endif
+}
+
+// Adds what `light` reflects from `s` towards the camera (direction v) to `sum`.
+void add_light(inout LightSum sum, Surface s, vec3 v, Light light) {
 #ifdef COUNT_LIGHTS
   imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u);
 #endif
-  if (s.unlit) return vec3(0.0);
+  if (s.unlit) return;
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);
-  if (all(lessThanEqual(radiance, vec3(0.0)))) return vec3(0.0);
-  return surface_response(s.normal, v, l, s.albedo, s.metallic, s.roughness) * radiance;
+  if (all(lessThanEqual(radiance, vec3(0.0)))) return;
+#ifdef SPLIT_LIGHTING
+  vec3 diffuse, specular;
+  surface_response_split(s.normal, v, l, s.albedo, s.metallic, s.roughness, diffuse, specular);
+  sum.diffuse += diffuse * radiance;
+  sum.specular += specular * radiance;
+#else
+  sum.total += surface_response(s.normal, v, l, s.albedo, s.metallic, s.roughness) * radiance;
+#endif
 }
 
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {
@@ -57,7 +93,7 @@ vec3 shade_unlit_terms(Surface s, vec3 ambient) {
 // Everything that lights `s`: the unlit terms plus every light in the buffer.
 vec3 shade_all_lights(Surface s) {
   vec3 v = normalize(u_camera_position.xyz - s.position);
-  vec3 color = shade_unlit_terms(s, u_ambient.rgb);
-  for (uint i = 0u; i < u_light_count; ++i) color += shade_light(s, v, u_lights[i]);
-  return color;
+  LightSum sum = no_light();
+  for (uint i = 0u; i < u_light_count; ++i) add_light(sum, s, v, u_lights[i]);
+  return shade_unlit_terms(s, u_ambient.rgb) + light_total(sum);
 }

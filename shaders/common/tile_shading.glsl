@@ -7,12 +7,13 @@
 uniform uvec2 u_tiles;
 uniform uint u_list_capacity;
 
-vec3 shade_tile_lights(Surface s, vec2 frag_coord) {
+// The sum of the lights in the tile of `s` (the unlit terms are the caller's).
+LightSum shade_tile_lights(Surface s, vec2 frag_coord) {
   uvec2 tile = uvec2(frag_coord) / 16u;
   LightRange range = u_light_ranges[tile.y * u_tiles.x + tile.x];
   vec3 v = normalize(u_camera_position.xyz - s.position);
-  vec3 color = shade_unlit_terms(s, u_ambient.rgb);
+  LightSum sum = no_light();
   uint end = min(range.offset + range.count, u_list_capacity);
-  for (uint i = range.offset; i < end; ++i) color += shade_light(s, v, u_lights[u_light_indices[i]]);
-  return color;
+  for (uint i = range.offset; i < end; ++i) add_light(sum, s, v, u_lights[u_light_indices[i]]);
+  return sum;
 }

@@ -6,23 +6,21 @@
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
-#include "common/shading.glsl"
-
-layout(location = 0) out vec4 out_color;
+#include "common/lighting_targets.glsl"
 
 void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) {
-    out_color = vec4(u_background.rgb, 1.0);
+    write_background();
     return;
   }
   vec3 v = normalize(u_camera_position.xyz - s.position);
-  vec3 color = shade_unlit_terms(s, u_ambient.rgb);
+  LightSum sum = no_light();
   for (uint i = 0u; i < u_light_count; ++i) {
 #ifdef LIGHT_RADIUS_CULL
     if (!light_reaches(u_lights[i], s.position)) continue;
 #endif
-    color += shade_light(s, v, u_lights[i]);
+    add_light(sum, s, v, u_lights[i]);
   }
-  out_color = vec4(color, 1.0);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), sum);
 }

@@ -6,7 +6,7 @@
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
-#include "common/shading.glsl"
+#include "common/lighting_targets.glsl"
 
 #ifndef DIRECTIONAL_ONLY
 flat in uint v_light;
@@ -18,20 +18,19 @@ flat in uint v_light;
 layout(early_fragment_tests) in;
 #endif
 
-
-layout(location = 0) out vec4 out_color;
-
 void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
 #ifdef DIRECTIONAL_ONLY
-  vec3 color = vec3(0.0);
+  LightSum sum = no_light();
   for (uint i = 0u; i < u_light_count; ++i) {
-    if (uint(u_lights[i].color_kind.w) == kLightDirectional) color += shade_light(s, v, u_lights[i]);
+    if (uint(u_lights[i].color_kind.w) == kLightDirectional) add_light(sum, s, v, u_lights[i]);
   }
-  out_color = vec4(color, 1.0);
 #else
-  out_color = vec4(shade_light(s, v, u_lights[v_light]), 1.0);
+  LightSum sum = no_light();
+  add_light(sum, s, v, u_lights[v_light]);
 #endif
+  // Additive: every target gains this pass's light.
+  write_lighting(vec3(0.0), sum);
 }

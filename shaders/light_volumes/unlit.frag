@@ -4,12 +4,10 @@
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
-#include "common/shading.glsl"
-
-layout(location = 0) out vec4 out_color;
+#include "common/lighting_targets.glsl"
 
 void main() {
   Surface s;
-  out_color = read_gbuffer(ivec2(gl_FragCoord.xy), s) ? vec4(shade_unlit_terms(s, u_ambient.rgb), 1.0)
-                                                       : vec4(u_background.rgb, 1.0);
+  if (read_gbuffer(ivec2(gl_FragCoord.xy), s)) write_lighting(shade_unlit_terms(s, u_ambient.rgb), no_light());
+  else write_background();
 }

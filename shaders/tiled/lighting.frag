@@ -5,14 +5,13 @@
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
 #include "common/tile_shading.glsl"
-
-layout(location = 0) out vec4 out_color;
+#include "common/lighting_targets.glsl"
 
 void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) {
-    out_color = vec4(u_background.rgb, 1.0);
+    write_background();
     return;
   }
-  out_color = vec4(shade_tile_lights(s, gl_FragCoord.xy), 1.0);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_tile_lights(s, gl_FragCoord.xy));
 }

@@ -22,5 +22,5 @@ layout(location = 0) out vec4 out_color;
 void main() {
   count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
-  out_color = vec4(shade_tile_lights(s, gl_FragCoord.xy), s.alpha);
+  out_color = vec4(shade_unlit_terms(s, u_ambient.rgb) + light_total(shade_tile_lights(s, gl_FragCoord.xy)), s.alpha);
 }

@@ -173,12 +173,16 @@ std::string help_text() {
          "                  the near plane) or uniform; bench takes a list and measures each\n"
          "  --gbuffer L     deferred modes: G-buffer layout, full (5 targets, 44 B/px, default)\n"
          "                  or compact (2 targets, 24 B/px; position from depth, octahedral normal)\n"
+         "  --split-lighting  deferred modes: also write the diffuse and the specular light\n"
+         "                  sums to targets of their own (the diffuse-light and specular-light\n"
+         "                  views turn this on while shown)\n"
          "  --debug-view V  render or window: show position, normal, albedo, metallic-roughness,\n"
          "                  emissive, depth, light-volumes (outlines), heatmap (lights\n"
          "                  evaluated per pixel in the current mode), light-lists (lights in\n"
          "                  each pixel's tile or cluster list), depth-slices (cluster slices)\n"
-         "                  or fragments (fragments the mode's geometry passes rasterise per\n"
-         "                  pixel: overdraw, a camera in foliage)\n"
+         "                  fragments (fragments the mode's geometry passes rasterise per\n"
+         "                  pixel: overdraw, a camera in foliage), diffuse-light or\n"
+         "                  specular-light (deferred modes: the two light sums apart)\n"
          "  --lights N      number of lights, 0.." + std::to_string(kMaxLights) + " (built-in default: 160); for a\n"
          "                  scene its listed lights come first, then generated ones; for a glTF\n"
          "                  model, N generated lights are added to the model's own\n"
@@ -257,6 +261,8 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     } else if (arg == "--z-slicing") {
       options.technique_options.z_slicing =
           parse_choice<lighting::ZSlicing>(value(), lighting::kZSlicingNames, "depth slicing", "slicings");
+    } else if (arg == "--split-lighting") {
+      options.technique_options.split_lighting = true;
     } else if (arg == "--gbuffer") {
       options.technique_options.gbuffer_layout =
           parse_choice<lighting::GBufferLayout>(value(), lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");

@@ -66,12 +66,39 @@ void MeshRenderer::resize(glm::ivec2 size) {
   output_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
   require_complete(output_framebuffer_.id(), "output");
+  update_split_targets();
   if (technique_) technique_->resize(targets());
   if (debug_views_) debug_views_->resize(targets());
 }
 
+void MeshRenderer::update_split_targets() {
+  if (!split_lighting_ || size_.x <= 0) {
+    lighting_framebuffer_ = {};
+    diffuse_light_ = {};
+    specular_light_ = {};
+    return;
+  }
+  diffuse_light_ = make_target(GL_RGBA16F, size_);
+  specular_light_ = make_target(GL_RGBA16F, size_);
+  lighting_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
+  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT1, diffuse_light_.id(), 0);
+  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT2, specular_light_.id(), 0);
+  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(lighting_framebuffer_.id(), 3, buffers);
+  require_complete(lighting_framebuffer_.id(), "lighting (split)");
+}
+
 lighting::FrameTargets MeshRenderer::targets() const {
-  return {hdr_framebuffer_.id(), hdr_color_.id(), depth_stencil_.id(), size_};
+  const bool split = lighting_framebuffer_.id() != 0;
+  return {hdr_framebuffer_.id(),
+          hdr_color_.id(),
+          depth_stencil_.id(),
+          size_,
+          split ? lighting_framebuffer_.id() : hdr_framebuffer_.id(),
+          diffuse_light_.id(),
+          specular_light_.id()};
 }
 
 void MeshRenderer::select_technique(const std::string& mode) {
@@ -143,17 +170,25 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const bool counting_lights = debug_view == lighting::kHeatmapView;
   const bool counting_fragments = debug_view == lighting::kFragmentView;
   const int counting = counting_lights ? 1 : counting_fragments ? 2 : 0;
-  if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_) {
+  const bool split_lighting = settings.technique_options.split_lighting || debug_view == lighting::kDiffuseLightView ||
+                              debug_view == lighting::kSpecularLightView;
+  if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_ ||
+      split_lighting != split_lighting_) {
     const int model = lighting::shading_model_index(settings.shading);
     if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
     std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
     if (counting_lights) globals.push_back({"COUNT_LIGHTS"});
     if (counting_fragments) globals.push_back({"COUNT_FRAGMENTS"});
     if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
+    if (split_lighting) globals.push_back({"SPLIT_LIGHTING"});
     gpu_.shaders().set_global_defines(std::move(globals));
     shading_ = settings.shading;
     counting_ = counting;
     technique_options_ = settings.technique_options;
+    if (split_lighting != split_lighting_) {
+      split_lighting_ = split_lighting;
+      update_split_targets();
+    }
     // Their programs were compiled with the old globals, their G-buffers in the old layout.
     technique_.reset();
     debug_views_.reset();
@@ -201,6 +236,12 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                      timer_,     view.view, view.projection, view.near_plane,
                                      view.far_plane};
   if (counting) debug_views().begin_counting(debug_view);
+  if (split_lighting_) {
+    // Forward modes leave the sums untouched: they show as no light, not a stale frame.
+    const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+    glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 1, zero);
+    glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 2, zero);
+  }
   refuse_unbounded_loops(draws, lights.count);
   try {
     technique_->execute(frame, targets());
@@ -281,6 +322,17 @@ std::vector<float> MeshRenderer::read_view_depth() const {
     }
   }
   return top_down;
+}
+
+std::vector<glm::vec4> MeshRenderer::read_hdr(HdrTarget target) const {
+  const GLuint texture = target == HdrTarget::Color ? hdr_color_.id()
+                         : target == HdrTarget::DiffuseLight ? diffuse_light_.id()
+                                                             : specular_light_.id();
+  if (texture == 0) return {};
+  std::vector<glm::vec4> texels(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
+  return texels;
 }
 
 void register_mesh_renderer(ecs::Scheduler& scheduler) {

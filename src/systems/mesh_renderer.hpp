@@ -50,6 +50,11 @@ class MeshRenderer {
   // The last frame's view depth (metres along the view axis) per pixel, top
   // row first; infinity where no geometry was drawn.
   [[nodiscard]] std::vector<float> read_view_depth() const;
+  // The last frame's linear HDR colour, or with the split on its diffuse or
+  // specular light sum, as RGBA floats in GL's row order (bottom row first);
+  // empty for a sum while the split is off.
+  enum class HdrTarget { Color, DiffuseLight, SpecularLight };
+  [[nodiscard]] std::vector<glm::vec4> read_hdr(HdrTarget target) const;
 
   [[nodiscard]] const std::string& mode() const { return mode_; }
   // The technique that drew the last frame (tests and tools inspect it).
@@ -69,6 +74,9 @@ class MeshRenderer {
 
  private:
   void resize(glm::ivec2 size);
+  // Makes the diffuse and specular light targets and their framebuffer while
+  // split_lighting_ is on, drops them while it is off.
+  void update_split_targets();
   // Made on first use (a debug view or the thumbnails).
   lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);
@@ -86,12 +94,15 @@ class MeshRenderer {
   std::string shading_;
   lighting::TechniqueOptions technique_options_;
   int counting_ = 0;  // what the shaders count: 0 nothing, 1 lights, 2 fragments
+  bool split_lighting_ = false;  // shaders compiled with SPLIT_LIGHTING
   std::unique_ptr<lighting::DebugViews> debug_views_;
   bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;
   gfx::Framebuffer hdr_framebuffer_;
+  gfx::Texture diffuse_light_, specular_light_;
+  gfx::Framebuffer lighting_framebuffer_;  // hdr_color, diffuse_light, specular_light
   gfx::Texture output_color_;
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;

@@ -160,6 +160,8 @@ void Overlay::controls(ecs::Registry& registry) {
   if (combo("debug view", settings.debug_view.empty() ? views[0] : settings.debug_view, views, chosen)) {
     settings.debug_view = chosen == views[0] ? "" : chosen;
   }
+  // Costs two more target writes per pixel in the deferred modes; the thumbnails show the sums.
+  ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
   if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
     requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, 1'000'000));
@@ -189,7 +191,8 @@ void Overlay::thumbnails(const MeshRenderer& renderer) {
     const ImVec2 uv1(static_cast<float>(column + 1) / DebugViews::kThumbnailColumns, static_cast<float>(row) / kRows);
     ImGui::BeginGroup();
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, uv0, uv1);
-    ImGui::TextUnformatted(std::string(lighting::kDebugViews[static_cast<std::size_t>(view)]).c_str());
+    const int shown = DebugViews::kThumbnailViews[static_cast<std::size_t>(view)];
+    ImGui::TextUnformatted(std::string(lighting::kDebugViews[static_cast<std::size_t>(shown)]).c_str());
     ImGui::EndGroup();
     if (column + 1 < DebugViews::kThumbnailColumns) ImGui::SameLine();
   }

@@ -19,10 +19,13 @@ struct ReferenceMaterial {
   float roughness;
 };
 
-inline glm::vec3 reference_brdf(glm::vec3 n, glm::vec3 v, glm::vec3 l, const ReferenceMaterial& m) {
+// The response to one light, times N.L, as its diffuse and specular lobes' shares.
+inline void reference_brdf_lobes(glm::vec3 n, glm::vec3 v, glm::vec3 l, const ReferenceMaterial& m, glm::vec3& diffuse,
+                                 glm::vec3& specular) {
   constexpr double kPi = 3.14159265358979323846;
+  diffuse = specular = glm::vec3(0.0f);
   const double n_dot_l = std::max(0.0, static_cast<double>(glm::dot(n, l)));
-  if (n_dot_l <= 0.0) return glm::vec3(0.0f);
+  if (n_dot_l <= 0.0) return;
   const glm::vec3 h = glm::normalize(v + l);
   const double n_dot_v = std::max(1e-4, static_cast<double>(glm::dot(n, v)));
   const double n_dot_h = std::max(0.0, static_cast<double>(glm::dot(n, h)));
@@ -33,14 +36,18 @@ inline glm::vec3 reference_brdf(glm::vec3 n, glm::vec3 v, glm::vec3 l, const Ref
   const double d = a2 / (kPi * denom * denom);
   const double vis = 0.5 / (n_dot_l * std::sqrt(n_dot_v * n_dot_v * (1.0 - a2) + a2) +
                             n_dot_v * std::sqrt(n_dot_l * n_dot_l * (1.0 - a2) + a2));
-  glm::vec3 result;
   for (int c = 0; c < 3; ++c) {
     const double f0 = 0.04 * (1.0 - m.metallic) + m.albedo[c] * m.metallic;
     const double f = f0 + (1.0 - f0) * std::pow(1.0 - v_dot_h, 5.0);
-    const double diffuse = (1.0 - f) * (1.0 - m.metallic) * m.albedo[c] / kPi;
-    result[c] = static_cast<float>((diffuse + d * vis * f) * n_dot_l);
+    diffuse[c] = static_cast<float>((1.0 - f) * (1.0 - m.metallic) * m.albedo[c] / kPi * n_dot_l);
+    specular[c] = static_cast<float>(d * vis * f * n_dot_l);
   }
-  return result;
+}
+
+inline glm::vec3 reference_brdf(glm::vec3 n, glm::vec3 v, glm::vec3 l, const ReferenceMaterial& m) {
+  glm::vec3 diffuse, specular;
+  reference_brdf_lobes(n, v, l, m, diffuse, specular);
+  return diffuse + specular;
 }
 
 inline double reference_tonemap_to_srgb(double x) {

@@ -36,8 +36,10 @@ TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
     for (int y = 0; y < kSize.y; ++y) {
       for (int x = 0; x < kSize.x; ++x) lit += assets::luma(images.back(), x, y) > 0.02;
     }
-    // Emission covers only the lamps; everything else fills most of the view.
-    EXPECT_GT(lit, name == "emissive" ? 10 : kSize.x * kSize.y / 3) << name;
+    // Emission covers only the lamps, specular light the highlights (a dielectric
+    // reflects 4% head-on); everything else fills most of the view.
+    const int least = name == "emissive" ? 10 : name == "specular-light" ? kSize.x * kSize.y / 100 : kSize.x * kSize.y / 3;
+    EXPECT_GT(lit, least) << name;
   }
   for (std::size_t a = 0; a < images.size(); ++a) {
     for (std::size_t b = a + 1; b < images.size(); ++b) {
@@ -269,6 +271,53 @@ TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
   const assets::Image image = world.renderer().read_output();
   EXPECT_EQ(pixel(image, 0, 0), pixel(image, kSize.x / 2, kSize.y / 2));
   EXPECT_EQ(pixel(image, 0, 0), (Rgb{38, 38, 38}));
+}
+
+// The light-sum views and thumbnails: grey until a deferred mode writes the sums
+// apart (forward modes never do), the sums once it does.
+TEST_F(DebugViewRender, LightSumViewsAndThumbnailsShowTheSplitOfDeferredModesOnly) {
+  World world({"atrium", 48u, "forward", 1, kSize});
+  auto& settings = world.registry().resource<RendererSettings>();
+  for (const char* view : {"diffuse-light", "specular-light"}) {
+    settings.debug_view = view;
+    world.frame(0.0);
+    const assets::Image image = world.renderer().read_output();
+    EXPECT_EQ(pixel(image, 0, 0), (Rgb{38, 38, 38})) << view;
+    EXPECT_EQ(pixel(image, kSize.x / 2, kSize.y / 2), (Rgb{38, 38, 38})) << view;
+  }
+  settings.debug_view.clear();
+  settings.gbuffer_thumbnails = true;
+  world.set_mode("tiled-deferred");
+  // Each thumbnail cell's set of colours, cells in kThumbnailViews order.
+  auto cell_colours = [&] {
+    const GLuint texture = world.renderer().gbuffer_thumbnails();
+    const glm::ivec2 cell = world.renderer().thumbnail_size();
+    constexpr int kColumns = lighting::DebugViews::kThumbnailColumns, kRows = lighting::DebugViews::kThumbnailCount / kColumns;
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(cell.x * kColumns * cell.y * kRows) * 4);
+    glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rgba.size()), rgba.data());
+    std::vector<std::set<Rgb>> colours(lighting::DebugViews::kThumbnailCount);
+    for (int index = 0; index < lighting::DebugViews::kThumbnailCount; ++index) {
+      const int column = index % kColumns, row = kRows - 1 - index / kColumns;  // GL rows run bottom-up
+      for (int y = row * cell.y; y < (row + 1) * cell.y; ++y) {
+        for (int x = column * cell.x; x < (column + 1) * cell.x; ++x) {
+          const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(cell.x * kColumns) + static_cast<std::size_t>(x)) * 4;
+          colours[static_cast<std::size_t>(index)].insert(Rgb{rgba[i], rgba[i + 1], rgba[i + 2]});
+        }
+      }
+    }
+    return colours;
+  };
+  world.frame(0.0);
+  auto colours = cell_colours();
+  EXPECT_EQ(colours[6], (std::set<Rgb>{{38, 38, 38}})) << "diffuse thumbnail without the split";
+  EXPECT_EQ(colours[7], (std::set<Rgb>{{38, 38, 38}})) << "specular thumbnail without the split";
+  EXPECT_GT(colours[2].size(), 100u) << "albedo thumbnail";
+  settings.technique_options.split_lighting = true;
+  world.frame(0.0);
+  colours = cell_colours();
+  EXPECT_GT(colours[6].size(), 100u) << "diffuse thumbnail with the split";
+  EXPECT_GT(colours[7].size(), 20u) << "specular thumbnail with the split";
+  EXPECT_NE(colours[6], colours[7]);
 }
 
 // Each --z-slicing scheme in a mode with a grid and in one without.

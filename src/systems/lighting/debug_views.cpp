@@ -41,12 +41,17 @@ void DebugViews::draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& tar
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDisable(GL_STENCIL_TEST);
-  gbuffer.bind_textures();
-  glBindTextureUnit(5, targets.depth_stencil);
-  for (int view = 0; view < kThumbnailCount; ++view) {
+  for (int index = 0; index < kThumbnailCount; ++index) {
     // Top row first on screen: GL's rows run bottom-up.
-    const glm::ivec2 cell(view % kThumbnailColumns, kThumbnailCount / kThumbnailColumns - 1 - view / kThumbnailColumns);
+    const glm::ivec2 cell(index % kThumbnailColumns, kThumbnailCount / kThumbnailColumns - 1 - index / kThumbnailColumns);
     glViewport(cell.x * thumbnail_size_.x, cell.y * thumbnail_size_.y, thumbnail_size_.x, thumbnail_size_.y);
+    const int view = kThumbnailViews[static_cast<std::size_t>(index)];
+    if (view == kDiffuseLightView || view == kSpecularLightView) {
+      draw_light_sum(view, targets, glm::vec2(cell * thumbnail_size_), glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
+      continue;
+    }
+    gbuffer.bind_textures();
+    glBindTextureUnit(5, targets.depth_stencil);
     gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
     show.set("u_bounds_min", bounds_min);
     show.set("u_bounds_max", bounds_max);
@@ -67,7 +72,7 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
                       GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
   // Every view is a full-screen pass into the output; the G-buffer, depth and
   // outline views first fill their own G-buffer (and the depth buffer).
-  const bool reads_gbuffer = view != kHeatmapView && view != kFragmentView && view != kLightListView && view != kDepthSliceView;
+  const bool reads_gbuffer = view < kHeatmapView || view == kOutlineView;
   if (reads_gbuffer) gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
   glViewport(0, 0, size_.x, size_.y);
@@ -88,6 +93,11 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
     draw_light_bins(view, technique, frame, targets);
     return;
   }
+  if (view == kDiffuseLightView || view == kSpecularLightView) {
+    // Only a deferred mode's lighting passes write the sums apart.
+    draw_light_sum(view, technique.gbuffer() ? targets : FrameTargets{}, glm::vec2(0.0f), glm::vec2(1.0f));
+    return;
+  }
   gbuffer_.bind_textures();
   if (view == kOutlineView) {
     gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}).use();
@@ -101,6 +111,27 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
   show.set("u_thumbnail_scale", glm::vec2(1.0f));
   glBindTextureUnit(5, targets.depth_stencil);
   show.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::draw_light_sum(int view, const FrameTargets& targets, glm::vec2 origin, glm::vec2 scale) {
+  const GLuint sum = view == kDiffuseLightView ? targets.diffuse_light : targets.specular_light;
+  if (sum == 0) {
+    // Grey says the sums are not there; the scissor keeps a thumbnail's clear in its cell.
+    GLint viewport[4];
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    glScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+    glEnable(GL_SCISSOR_TEST);
+    const float grey[] = {0.15f, 0.15f, 0.15f, 1.0f};
+    glClearBufferfv(GL_COLOR, 0, grey);
+    glDisable(GL_SCISSOR_TEST);
+    return;
+  }
+  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_sum.frag"});
+  program.set("u_thumbnail_origin", origin);
+  program.set("u_thumbnail_scale", scale);
+  glBindTextureUnit(0, sum);
+  program.use();
   fullscreen_.draw();
 }
 

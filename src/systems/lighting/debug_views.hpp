@@ -1,8 +1,9 @@
 // Debug views (--debug-view, `g` in the window): each G-buffer target on its own,
 // depth, light-volume outlines over the lit image, a heatmap of the lights
 // evaluated per pixel by the current mode, the light count of each pixel's tile
-// or cluster, the cluster depth slices, and the fragments the mode's geometry
-// passes rasterise per pixel. The G-buffer views run their own geometry pass, so
+// or cluster, the cluster depth slices, the fragments the mode's geometry
+// passes rasterise per pixel, and the diffuse and specular light sums a
+// deferred mode's lighting passes wrote apart (SPLIT_LIGHTING while shown). The G-buffer views run their own geometry pass, so
 // they work whatever the mode; the heatmap and the fragments view count what the
 // mode's own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while
 // shown); the light-lists view draws the lists the tiled and clustered modes built.
@@ -21,11 +22,11 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 11> kDebugViews{
-    "position", "normal",        "albedo",  "metallic-roughness", "emissive",
-    "depth",    "light-volumes", "heatmap", "light-lists",        "depth-slices", "fragments"};
+inline constexpr std::array<std::string_view, 13> kDebugViews{
+    "position",     "normal",    "albedo",        "metallic-roughness", "emissive",      "depth",         "light-volumes",
+    "heatmap",      "light-lists", "depth-slices", "fragments",         "diffuse-light", "specular-light"};
 inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
-                     kFragmentView = 10;
+                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);
@@ -49,15 +50,21 @@ class DebugViews {
 
   // The overlay's thumbnails: the G-buffer views (position, normal, albedo,
   // metallic-roughness, emissive, depth) of `gbuffer`, decoded as the debug
-  // views decode them, side by side in one texture of kThumbnailColumns x 2
-  // cells of kThumbnailWidth pixels across (rows bottom-up, as GL stores them).
-  static constexpr int kThumbnailWidth = 192, kThumbnailColumns = 3, kThumbnailCount = 6;
+  // views decode them, and the diffuse and specular light sums (grey while the
+  // split is off), side by side in one texture of kThumbnailColumns x 2 cells
+  // of kThumbnailWidth pixels across (rows bottom-up, as GL stores them).
+  static constexpr int kThumbnailWidth = 192, kThumbnailColumns = 4, kThumbnailCount = 8;
+  // The debug view each thumbnail shows, in order.
+  static constexpr std::array<int, kThumbnailCount> kThumbnailViews{0, 1, 2, 3, 4, kDepthView, kDiffuseLightView, kSpecularLightView};
   void draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min, glm::vec3 bounds_max);
   [[nodiscard]] GLuint thumbnails() const { return thumbnails_.id(); }
   [[nodiscard]] glm::ivec2 thumbnail_size() const { return thumbnail_size_; }
 
  private:
   void draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets);
+  // The diffuse or specular light target, tone-mapped, into the bound
+  // framebuffer's viewport (with the thumbnail mapping); grey without it.
+  void draw_light_sum(int view, const FrameTargets& targets, glm::vec2 origin, glm::vec2 scale);
 
   assets::GpuAssets& gpu_;
   GBuffer gbuffer_;

@@ -66,7 +66,7 @@ void GBuffer::bind_textures() const {
 }
 
 void GBuffer::draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

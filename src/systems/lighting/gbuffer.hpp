@@ -46,7 +46,8 @@ class GBuffer {
   void draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame);
   // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures() const;
-  // A full-screen pass with `program` reading the G-buffer into the HDR target.
+  // A full-screen pass with `program` reading the G-buffer into the lighting
+  // targets (FrameTargets::lighting_framebuffer).
   void draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }

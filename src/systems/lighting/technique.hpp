@@ -42,6 +42,13 @@ struct FrameTargets {
   GLuint hdr_color = 0;        // RGBA16F
   GLuint depth_stencil = 0;    // DEPTH24_STENCIL8
   glm::ivec2 size{0};
+  // Where deferred lighting passes draw (shaders/common/lighting_targets.glsl):
+  // hdr_framebuffer, or with the split on (TechniqueOptions::split_lighting, the
+  // diffuse-light and specular-light views) a framebuffer that adds the two
+  // RGBA16F light sums as colour attachments 1 and 2 (0 when the split is off).
+  GLuint lighting_framebuffer = 0;
+  GLuint diffuse_light = 0;
+  GLuint specular_light = 0;
 };
 
 class GBuffer;

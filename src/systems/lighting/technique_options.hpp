@@ -1,5 +1,5 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
-// --active-clusters, --z-slicing, --gbuffer). Plain data, kept apart from the GL-facing technique interface so
+// --active-clusters, --z-slicing, --gbuffer, --split-lighting). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -34,6 +34,9 @@ struct TechniqueOptions {
   bool active_clusters = false;  // grid bounds: only clusters holding a visible pixel get lights
   ZSlicing z_slicing = ZSlicing::Log;
   GBufferLayout gbuffer_layout = GBufferLayout::Full;
+  // Deferred modes also write the diffuse and the specular light sums to targets
+  // of their own (FrameTargets::diffuse_light, specular_light).
+  bool split_lighting = false;
   bool operator==(const TechniqueOptions&) const = default;
 };
 

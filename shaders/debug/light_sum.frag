@@ -1,0 +1,19 @@
+#version 450 core
+// Diffuse-light and specular-light views: one of the light sums a deferred mode
+// wrote apart (SPLIT_LIGHTING), exposed and tone-mapped as the final image is,
+// into the output or an overlay thumbnail (output pixels map to target pixels
+// through the thumbnail origin and scale).
+#include "common/frame.glsl"
+#include "common/tonemap.glsl"
+
+layout(binding = 0) uniform sampler2D u_light_sum;
+uniform vec2 u_thumbnail_origin;
+uniform vec2 u_thumbnail_scale;
+
+layout(location = 0) out vec4 out_color;
+
+void main() {
+  ivec2 pixel = ivec2((gl_FragCoord.xy - u_thumbnail_origin) * u_thumbnail_scale);
+  vec3 light = texelFetch(u_light_sum, pixel, 0).rgb;
+  out_color = vec4(linear_to_srgb(tonemap_aces(light * u_exposure)), 1.0);
+}
