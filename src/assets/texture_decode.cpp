@@ -5,6 +5,7 @@
 #include <limits>
 #include <mutex>
 #include <new>
+#include <string>
 #include <thread>
 
 #include <stb_image.h>
@@ -13,6 +14,33 @@
 #include "assets/load_budget.hpp"
 
 namespace atrium::assets {
+namespace {
+
+// A PNG whose chunk claims more bytes than the file holds, or an empty string.
+// stb_image trusts IDAT lengths and grows its buffer to fit them: a 33 KB file
+// claiming a 1 GB chunk would allocate gigabytes before finding the data
+// missing (found by the texture fuzzer).
+std::string png_chunk_error(std::span<const std::uint8_t> bytes) {
+  constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return {};
+  std::size_t at = 8;
+  while (bytes.size() - at >= 8) {
+    const std::uint32_t length = (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
+                                 (std::uint32_t{bytes[at + 2]} << 8) | std::uint32_t{bytes[at + 3]};
+    const std::string type(reinterpret_cast<const char*>(bytes.data() + at + 4), 4);
+    const std::size_t remaining = bytes.size() - at - 8;
+    // Length, type, data and a four-byte CRC.
+    if (std::size_t{length} + 4 > remaining) {
+      return "PNG chunk '" + type + "' claims " + std::to_string(length) + " bytes but the file holds " +
+             std::to_string(remaining < 4 ? 0 : remaining - 4) + " more";
+    }
+    if (type == "IEND") break;
+    at += 12 + std::size_t{length};
+  }
+  return {};
+}
+
+}  // namespace
 
 DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace space, std::size_t memory_limit) {
   DecodedTexture result;
@@ -33,6 +61,10 @@ DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace sp
     }
     if (bytes.size() > static_cast<std::size_t>(std::numeric_limits<int>::max())) {
       result.error = "the image file is larger than 2 GiB";
+      return result;
+    }
+    if (std::string error = png_chunk_error(bytes); !error.empty()) {
+      result.error = std::move(error);
       return result;
     }
     int w = 0, h = 0, channels = 0;

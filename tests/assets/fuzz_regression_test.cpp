@@ -1,11 +1,14 @@
 // Inputs the fuzzers once found or were seeded with (tests/fuzz/regressions):
 // each must load or be refused with the loader's own error, never crash.
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include <gtest/gtest.h>
 
 #include "assets/gltf_import.hpp"
 #include "assets/scene_file.hpp"
+#include "assets/texture_decode.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -42,6 +45,35 @@ TEST(FuzzRegressions, GltfFilesImportOrAreRefused) {
       EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos) << "the error names the file: " << e.what();
     }
   }
+}
+
+std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+TEST(FuzzRegressions, TexturesDecodeOrAreRefused) {
+  for (const auto& file : inputs("texture")) {
+    const DecodedTexture decoded = decode_texture(read_bytes(file), ColorSpace::Srgb, std::size_t{1} << 30);
+    EXPECT_NE(decoded.texture.has_value(), !decoded.error.empty()) << file << ": a texture or an error, not both";
+  }
+}
+
+// A 33 KB PNG whose second IDAT chunk claims 1 GB: refused before stb_image
+// grows its buffer for it; the PNGs other tools wrote still decode.
+TEST(FuzzRegressions, APngChunkLongerThanTheFileIsRefusedUpFront) {
+  const DecodedTexture decoded =
+      decode_texture(read_bytes(kRegressions / "texture/png-chunk-length-beyond-file.png"), ColorSpace::Srgb, std::size_t{1} << 30);
+  EXPECT_FALSE(decoded.texture);
+  EXPECT_EQ(decoded.error, "PNG chunk 'IDAT' claims 1090519753 bytes but the file holds 823 more");
+  int decoded_pngs = 0;
+  for (const auto& entry : std::filesystem::recursive_directory_iterator(std::filesystem::path(ATRIUM_SOURCE_DIR) / "tests/data")) {
+    if (entry.path().extension() != ".png") continue;
+    const DecodedTexture png = decode_texture(read_bytes(entry.path()), ColorSpace::Srgb, std::size_t{1} << 30);
+    EXPECT_TRUE(png.texture) << entry.path() << ": " << png.error;
+    ++decoded_pngs;
+  }
+  EXPECT_GT(decoded_pngs, 0);
 }
 
 }  // namespace
