@@ -160,6 +160,12 @@ void Overlay::controls(ecs::Registry& registry) {
   if (combo("debug view", settings.debug_view.empty() ? views[0] : settings.debug_view, views, chosen)) {
     settings.debug_view = chosen == views[0] ? "" : chosen;
   }
+  std::vector<std::string> slicings;
+  for (const auto name : lighting::kZSlicingNames) slicings.emplace_back(name);
+  auto& slicing = settings.technique_options.z_slicing;
+  if (combo("z slicing", std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]), slicings, chosen)) {
+    slicing = static_cast<lighting::ZSlicing>(std::find(slicings.begin(), slicings.end(), chosen) - slicings.begin());
+  }
   // Costs two more target writes per pixel in the deferred modes; the thumbnails show the sums.
   ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
@@ -183,7 +189,11 @@ void Overlay::thumbnails(const MeshRenderer& renderer) {
   using lighting::DebugViews;
   const glm::ivec2 cell = renderer.thumbnail_size();
   constexpr int kRows = DebugViews::kThumbnailCount / DebugViews::kThumbnailColumns;
-  const ImVec2 size(static_cast<float>(cell.x) * 0.65f, static_cast<float>(cell.y) * 0.65f);
+  // The cells share the panel's width, however many columns there are.
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  const float width = std::min(static_cast<float>(cell.x),
+                               (ImGui::GetContentRegionAvail().x - spacing * (DebugViews::kThumbnailColumns - 1)) / DebugViews::kThumbnailColumns);
+  const ImVec2 size(width, width * static_cast<float>(cell.y) / static_cast<float>(cell.x));
   for (int view = 0; view < DebugViews::kThumbnailCount; ++view) {
     // GL rows run bottom-up: the cell's top edge has the larger v.
     const int column = view % DebugViews::kThumbnailColumns, row = kRows - 1 - view / DebugViews::kThumbnailColumns;
