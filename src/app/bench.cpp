@@ -156,13 +156,13 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
       // deferred-radius evaluates exactly the lights whose radius covers a pixel.
       const double reaching = count_evaluations(world, "deferred-radius");
       // Modes that do not slice depth are measured once, with the first slicing.
-      std::vector<std::string> sliced_modes = modes;
+      std::vector<std::string> to_measure = modes;
       for (const lighting::ZSlicing slicing : slicings) {
         world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
         for (const std::string& mode : modes) {
-          const bool measure = std::find(sliced_modes.begin(), sliced_modes.end(), mode) != sliced_modes.end();
+          const bool measure = std::find(to_measure.begin(), to_measure.end(), mode) != to_measure.end();
           if (measure) result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
-          if (measure && !result.rows.back().sliced) std::erase(sliced_modes, mode);
+          if (measure && !result.rows.back().sliced) std::erase(to_measure, mode);
           if (progress) progress(++done, total);
         }
       }
