@@ -27,56 +27,68 @@ float visibility_smith_ggx_correlated(float n_dot_v, float n_dot_l, float alpha)
   return 0.5 / max(ggx_v + ggx_l, 1e-6);
 }
 
-vec3 fresnel_schlick(float cos_theta, vec3 f0) {
-  // (1 - cos)^5 by multiplication: pow() is exp2(log2()) on software rasterisers.
+// Schlick's weight (1 - cos)^5: Fresnel's F = f0 + (1 - f0) * weight. By
+// multiplication: pow() is exp2(log2()) on software rasterisers.
+float fresnel_weight(float cos_theta) {
   float m = 1.0 - cos_theta;
   float m2 = m * m;
-  return f0 + (1.0 - f0) * (m2 * m2 * m);
+  return m2 * m2 * m;
 }
 
-// Outgoing radiance towards V for unit incoming radiance from L, times N.L, as
-// the diffuse and the specular lobe's shares (their sum is the response).
-// Cook-Torrance (shading model `pbr`).
-void brdf_cook_torrance(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse, out vec3 specular) {
-  diffuse = vec3(0.0);
-  specular = vec3(0.0);
+// Every model's response to one light is written as three factors that do not
+// depend on the material's colours (brdf_terms), times the material
+// (brdf_combine). The combination is linear, so a light pre-pass can sum each
+// factor over lights first and combine once per pixel with the same result.
+// Cook-Torrance: with E = N.L and w = (1 - V.H)^5, Schlick's F = f0 (1 - w) + w
+// and 1 - F = (1 - f0)(1 - w), so
+//   diffuse  = (1 - f0)(1 - metallic) albedo / pi * [E (1 - w)]
+//   specular = f0 * [E D Vis (1 - w)] + [E D Vis w]
+// The Phong models: diffuse = albedo (1 - metallic) / pi * [E],
+// specular = specular colour * [E lobe], and the third factor is zero.
+// brdf_terms returns the bracketed factors as x (diffuse), y (specular times
+// f0) and z (specular independent of f0).
+vec3 brdf_terms(vec3 n, vec3 v, vec3 l, float roughness) {
   float n_dot_l = max(dot(n, l), 0.0);
-  if (n_dot_l <= 0.0) return;
+  if (n_dot_l <= 0.0) return vec3(0.0);
+  float alpha = max(roughness * roughness, 2e-3);
+#if SHADING_MODEL == 0
   vec3 h = normalize(v + l);
   float n_dot_v = max(dot(n, v), 1e-4);
   float n_dot_h = max(dot(n, h), 0.0);
-  float v_dot_h = max(dot(v, h), 0.0);
-  float alpha = max(roughness * roughness, 2e-3);
-  vec3 f0 = mix(vec3(0.04), albedo, metallic);
-  vec3 f = fresnel_schlick(v_dot_h, f0);
-  specular = distribution_ggx(n_dot_h, alpha) * visibility_smith_ggx_correlated(n_dot_v, n_dot_l, alpha) * f * n_dot_l;
-  diffuse = (1.0 - f) * (1.0 - metallic) * albedo / kPi * n_dot_l;
-}
-
-void brdf_phong_family(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse, out vec3 specular) {
-  diffuse = vec3(0.0);
-  specular = vec3(0.0);
-  float n_dot_l = max(dot(n, l), 0.0);
-  if (n_dot_l <= 0.0) return;
-  float alpha = max(roughness * roughness, 2e-3);
+  float w = fresnel_weight(max(dot(v, h), 0.0));
+  float lobe = distribution_ggx(n_dot_h, alpha) * visibility_smith_ggx_correlated(n_dot_v, n_dot_l, alpha) * n_dot_l;
+  return vec3(n_dot_l * (1.0 - w), lobe * (1.0 - w), lobe * w);
+#else
   float shininess = clamp(2.0 / (alpha * alpha) - 2.0, 1.0, 8192.0);
-  vec3 specular_color = mix(vec3(0.04), albedo, metallic);
 #if SHADING_MODEL == 1
   float lobe = pow(max(dot(n, normalize(v + l)), 0.0), shininess) * (shininess + 8.0) / (8.0 * kPi);
 #else
   float lobe = pow(max(dot(reflect(-l, n), v), 0.0), shininess) * (shininess + 2.0) / (2.0 * kPi);
 #endif
-  diffuse = albedo * (1.0 - metallic) / kPi * n_dot_l;
-  specular = specular_color * lobe * n_dot_l;
+  return vec3(n_dot_l, lobe * n_dot_l, 0.0);
+#endif
 }
 
+// The diffuse and specular light a surface reflects towards V, from the factors
+// of brdf_terms (for one light, or summed over many) times the light's
+// radiance.
+void brdf_combine(vec3 diffuse_term, vec3 specular_f0_term, vec3 specular_term, vec3 albedo, float metallic,
+                  out vec3 diffuse, out vec3 specular) {
+  vec3 f0 = mix(vec3(0.04), albedo, metallic);
+#if SHADING_MODEL == 0
+  diffuse = (1.0 - f0) * (1.0 - metallic) * albedo / kPi * diffuse_term;
+#else
+  diffuse = (1.0 - metallic) * albedo / kPi * diffuse_term;
+#endif
+  specular = f0 * specular_f0_term + specular_term;
+}
+
+// Outgoing radiance towards V for unit incoming radiance from L, times N.L, as
+// the diffuse and the specular lobe's shares (their sum is the response).
 void surface_response_split(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness, out vec3 diffuse,
                             out vec3 specular) {
-#if SHADING_MODEL == 0
-  brdf_cook_torrance(n, v, l, albedo, metallic, roughness, diffuse, specular);
-#else
-  brdf_phong_family(n, v, l, albedo, metallic, roughness, diffuse, specular);
-#endif
+  vec3 t = brdf_terms(n, v, l, roughness);
+  brdf_combine(vec3(t.x), vec3(t.y), vec3(t.z), albedo, metallic, diffuse, specular);
 }
 
 vec3 surface_response(vec3 n, vec3 v, vec3 l, vec3 albedo, float metallic, float roughness) {

@@ -9,8 +9,8 @@
 // and no stencil, so the benchmark shows what the stencil pass buys.
 #pragma once
 
-#include "gfx/gl_object.hpp"
 #include "systems/lighting/gbuffer.hpp"
+#include "systems/lighting/light_sphere.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
@@ -34,11 +34,7 @@ class LightVolumeTechnique final : public LightingTechnique {
   gfx::ShaderProgram& lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  gfx::Buffer sphere_vertices_;
-  gfx::Buffer sphere_indices_;
-  gfx::VertexArray sphere_;
-  GLsizei sphere_index_count_ = 0;
-  float circumscribe_ = 1.0f;  // scales the unit mesh so its faces lie outside the unit sphere
+  LightSphere sphere_;
 };
 
 }  // namespace atrium::lighting

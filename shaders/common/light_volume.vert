@@ -1,7 +1,8 @@
 #version 450 core
-// Light volumes: places the unit sphere mesh around a light, scaled to its
-// radius (the mesh circumscribes the true sphere). The light is u_light_index,
-// or the instance for instanced drawing. Directional lights have no volume.
+// Light volumes (modes light-volumes*, light-prepass): places the unit sphere
+// mesh (LightSphere) around a light, scaled to its radius (the mesh
+// circumscribes the true sphere). The light is u_light_index, or the instance
+// for instanced drawing. Directional lights have no volume.
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 
