@@ -1,7 +1,26 @@
 // The G-buffer of the deferred techniques, written by the geometry pass and read
 // back into a Surface by lighting passes. C++ side: GBuffer in
 // src/systems/lighting/gbuffer.hpp (formats, bytes per pixel). Needs frame.glsl.
-#ifndef COMPACT_GBUFFER
+// The layout is picked by define: THIN_GBUFFER (the light pre-pass's, set by
+// GBuffer::defines()), else COMPACT_GBUFFER (--gbuffer compact), else full.
+
+// World-space direction from the camera through the centre of `pixel`, through
+// the far plane's point: the near plane's lies too close to the camera for its
+// difference with the camera's position to keep float precision.
+vec3 view_ray(ivec2 pixel) {
+  vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
+  vec4 far_point = u_inverse_view_projection * vec4(ndc, kDepthFar, 1.0);
+  return normalize(far_point.xyz / far_point.w - u_camera_position.xyz);
+}
+
+#if defined(THIN_GBUFFER)
+// Thin layout (mode light-prepass: what its light pass needs, 16 B/px with depth):
+//   0 normal, roughness  RGBA16  xyz world-space shading normal * 0.5 + 0.5, w roughness
+//   1 distance           R32F    distance from the camera (0 = no geometry), as in
+//                                the compact layout's fourth word and for the same reasons.
+// Albedo, metallic, occlusion and emission are not stored: the light pre-pass's
+// second geometry pass reads them from the materials.
+#elif !defined(COMPACT_GBUFFER)
 // Full layout (--gbuffer full, the reference's five targets, 44 B/px with depth):
 //   0 position           RGBA32F      xyz world position, w = 1 where geometry was drawn
 //   1 albedo, occlusion  SRGB8_ALPHA8 rgb base colour, a ambient occlusion
@@ -38,19 +57,18 @@ vec3 octahedral_decode(vec2 p) {
   if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * sign_not_zero(n.xy);
   return normalize(n);
 }
-
-// World-space direction from the camera through the centre of `pixel`, through
-// the far plane's point: the near plane's lies too close to the camera for its
-// difference with the camera's position to keep float precision.
-vec3 view_ray(ivec2 pixel) {
-  vec2 ndc = (vec2(pixel) + 0.5) / u_viewport_size * 2.0 - 1.0;
-  vec4 far_point = u_inverse_view_projection * vec4(ndc, kDepthFar, 1.0);
-  return normalize(far_point.xyz / far_point.w - u_camera_position.xyz);
-}
 #endif
 
 #ifdef GBUFFER_WRITE
-#ifndef COMPACT_GBUFFER
+#if defined(THIN_GBUFFER)
+layout(location = 0) out vec4 out_normal_roughness;
+layout(location = 1) out float out_distance;
+
+void write_gbuffer(Surface s) {
+  out_normal_roughness = vec4(s.normal * 0.5 + 0.5, s.roughness);
+  out_distance = max(length(s.position - u_camera_position.xyz), 1e-30);
+}
+#elif !defined(COMPACT_GBUFFER)
 layout(location = 0) out vec4 out_position;
 layout(location = 1) out vec4 out_albedo;
 layout(location = 2) out vec4 out_normal;
@@ -79,7 +97,27 @@ void write_gbuffer(Surface s) {
 }
 #endif
 #else
-#ifndef COMPACT_GBUFFER
+#if defined(THIN_GBUFFER)
+layout(binding = 0) uniform sampler2D u_gbuffer_normal_roughness;
+layout(binding = 1) uniform sampler2D u_gbuffer_distance;
+
+// Fills what the thin layout stores; the material's colours read as black.
+bool read_gbuffer(ivec2 pixel, out Surface s) {
+  float distance = texelFetch(u_gbuffer_distance, pixel, 0).r;
+  if (distance == 0.0) return false;
+  vec4 normal_roughness = texelFetch(u_gbuffer_normal_roughness, pixel, 0);
+  s.position = u_camera_position.xyz + view_ray(pixel) * distance;
+  s.normal = normal_roughness.xyz * 2.0 - 1.0;
+  s.roughness = normal_roughness.w;
+  s.albedo = vec3(0.0);
+  s.alpha = 1.0;
+  s.occlusion = 1.0;
+  s.metallic = 0.0;
+  s.emissive = vec3(0.0);
+  s.unlit = false;
+  return true;
+}
+#elif !defined(COMPACT_GBUFFER)
 layout(binding = 0) uniform sampler2D u_gbuffer_position;
 layout(binding = 1) uniform sampler2D u_gbuffer_albedo;
 layout(binding = 2) uniform sampler2D u_gbuffer_normal;

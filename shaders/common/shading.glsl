@@ -37,6 +37,9 @@ bool light_reaches(Light light, vec3 position) {
 // each evaluation of a light for a fragment adds one to the fragment's pixel.
 #ifdef COUNT_LIGHTS
 layout(r32ui, binding = 0) uniform coherent uimage2D u_light_counts;
+void count_light_evaluation() { imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u); }
+#else
+void count_light_evaluation() {}
 #endif
 
 // What lights add to a surface. With SPLIT_LIGHTING (--split-lighting, the
@@ -59,6 +62,16 @@ LightSum no_light() {
 #endif
 }
 
+// A sum of the diffuse and the specular light that were summed apart elsewhere
+// (the light pre-pass's light buffer).
+LightSum light_sum(vec3 diffuse, vec3 specular) {
+#ifdef SPLIT_LIGHTING
+  return LightSum(diffuse, specular);
+#else
+  return LightSum(diffuse + specular);
+#endif
+}
+
 vec3 light_total(LightSum sum) {
 #ifdef SPLIT_LIGHTING
   return sum.diffuse + sum.specular;
@@ -69,9 +82,7 @@ vec3 light_total(LightSum sum) {
 
 // Adds what `light` reflects from `s` towards the camera (direction v) to `sum`.
 void add_light(inout LightSum sum, Surface s, vec3 v, Light light) {
-#ifdef COUNT_LIGHTS
-  imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u);
-#endif
+  count_light_evaluation();
   if (s.unlit) return;
   vec3 l;
   vec3 radiance = incoming_light(s, light, l);

@@ -1,6 +1,7 @@
 #version 450 core
-// Diffuse-light and specular-light views: one of the light sums a deferred mode
-// wrote apart (SPLIT_LIGHTING), exposed and tone-mapped as the final image is,
+// Diffuse-light, specular-light and light-buffer views: one of the light sums a
+// deferred mode wrote apart (SPLIT_LIGHTING), or the light pre-pass's summed
+// diffuse light before materials, exposed and tone-mapped as the final image is,
 // into the output or an overlay thumbnail (output pixels map to target pixels
 // through the thumbnail origin and scale).
 #include "common/frame.glsl"

@@ -2,7 +2,8 @@
 // Debug views of the G-buffer and depth: reads one target and writes it as a
 // displayable colour straight to the output (no tone mapping). DEBUG_VIEW picks
 // the target: 0 position, 1 normal, 2 albedo, 3 metallic-roughness, 4 emissive,
-// 5 depth. The overlay's thumbnails draw it into a smaller viewport: output
+// 5 depth; in the light pre-pass's thin layout albedo and emissive are grey.
+// The overlay's thumbnails draw it into a smaller viewport: output
 // pixels map to G-buffer pixels through the thumbnail origin and scale.
 #include "common/frame.glsl"
 #include "common/surface.glsl"
@@ -32,10 +33,12 @@ void main() {
     color = clamp((s.position - u_bounds_min) / max(u_bounds_max - u_bounds_min, vec3(1e-6)), 0.0, 1.0);
 #elif DEBUG_VIEW == 1
     color = s.normal * 0.5 + 0.5;
+#elif DEBUG_VIEW == 3
+    color = vec3(s.metallic, s.roughness, 0.0);  // the thin layout stores no metallic: red stays 0
+#elif defined(THIN_GBUFFER)
+    color = vec3(0.15);  // albedo and emission are not in the thin layout: grey says so
 #elif DEBUG_VIEW == 2
     color = linear_to_srgb(s.albedo);
-#elif DEBUG_VIEW == 3
-    color = vec3(s.metallic, s.roughness, 0.0);
 #elif DEBUG_VIEW == 4
     color = linear_to_srgb(tonemap_aces(s.emissive));
 #endif

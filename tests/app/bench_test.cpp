@@ -154,6 +154,7 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   EXPECT_DOUBLE_EQ(evaluated("deferred-radius"), 2.0);
   EXPECT_DOUBLE_EQ(evaluated("light-volumes"), 2.0);
   EXPECT_DOUBLE_EQ(evaluated("light-volumes-instanced"), 2.0);
+  EXPECT_DOUBLE_EQ(evaluated("light-prepass"), 2.0);
   BenchRow row;
   row.evaluated_per_pixel = 6.0;
   row.reaching_per_pixel = 2.0;

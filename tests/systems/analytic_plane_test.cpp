@@ -2,7 +2,8 @@
 // CPU evaluation of the same BRDF, falloff, ambient, tone map and sRGB encoding
 // at every pixel's centre (largest allowed error: 2/255); and with the lighting
 // split, each deferred mode's diffuse and specular sums against the reference's
-// two lobes.
+// two lobes; and the light pre-pass's light buffer against the reference BRDF's
+// factors before any material.
 #include <cmath>
 #include <memory>
 
@@ -11,6 +12,7 @@
 #include "components/frame_resources.hpp"
 #include "support/gl_test.hpp"
 #include "support/reference_shading.hpp"
+#include "systems/lighting/light_prepass.hpp"
 
 namespace atrium {
 namespace {
@@ -101,7 +103,7 @@ void check_case(const Case& c) {
 void check_split(const Case& c) {
   const float radius = c.radius.value_or(lighting::light_radius_from_intensity(c.light_color, c.intensity));
   for (const char* mode : {"deferred", "deferred-radius", "light-volumes", "light-volumes-instanced", "tiled-deferred",
-                           "clustered-deferred"}) {
+                           "clustered-deferred", "light-prepass"}) {
     SCOPED_TRACE(mode);
     const std::unique_ptr<World> plane = plane_world(c, mode);
     World& world = *plane;
@@ -165,6 +167,73 @@ TEST_F(AnalyticPlane, SplitSumsAreTheReferenceLobesInEveryDeferredMode) {
   check_split({{glm::vec3(0.8f, 0.6f, 0.4f), 0.0f, 0.4f}, glm::vec3(0.5f, 1.5f, -0.5f), glm::vec3(1.0f, 0.9f, 0.8f), 2.0f, std::nullopt});
   // A metal has no diffuse lobe: its diffuse target must stay black.
   check_split({{glm::vec3(0.9f, 0.7f, 0.3f), 1.0f, 0.2f}, glm::vec3(-1.0f, 1.0f, 0.0f), glm::vec3(0.6f, 0.8f, 1.0f), 3.0f, 3.0f});
+}
+
+// The light pre-pass sums, per light, factors that hold no material: the
+// reference BRDF gives each through a material that isolates it. A metal with
+// albedo 0 has f0 = 0, so its specular lobe is the f0-free factor; with albedo 1,
+// f0 = 1 and the lobe is both specular factors; a white dielectric's diffuse
+// lobe is 0.96 / pi times the diffuse factor.
+// Per light-buffer target, the largest value either case expects somewhere.
+std::array<float, 3> most_of_all{};
+
+void check_light_buffer(const Case& c) {
+  const std::unique_ptr<World> plane = plane_world(c, "light-prepass");
+  World& world = *plane;
+  world.frame(0.0);
+  const auto* technique = dynamic_cast<const lighting::LightPrepassTechnique*>(world.renderer().technique());
+  ASSERT_NE(technique, nullptr);
+  std::array<std::vector<glm::vec4>, 3> buffer;
+  for (std::size_t t = 0; t < buffer.size(); ++t) {
+    buffer[t].resize(static_cast<std::size_t>(kSize.x * kSize.y));
+    glGetTextureImage(technique->light_buffer_target(t), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(buffer[t].size() * sizeof(glm::vec4)),
+                      buffer[t].data());
+  }
+  const float radius = lighting::light_radius_from_intensity(c.light_color, c.intensity);
+  const float roughness = c.material.roughness;
+  const ViewState& view = world.registry().resource<ViewState>();
+  int compared = 0;
+  std::array<float, 3> worst{}, most{};
+  for (int y = 0; y < kSize.y; ++y) {
+    for (int x = 0; x < kSize.x; ++x) {
+      const auto p = plane_point(view, x, y);
+      if (!p) continue;
+      const glm::vec3 n(0, 1, 0), v = glm::normalize(view.camera_position - *p), to_light = c.light_position - *p;
+      const float d = glm::length(to_light);
+      const glm::vec3 l = to_light / d;
+      const glm::vec3 radiance = c.light_color * c.intensity * lighting::light_attenuation(d, radius);
+      glm::vec3 white_diffuse, unused, metal_f0_zero, metal_f0_one;
+      testing::reference_brdf_lobes(n, v, l, {glm::vec3(1.0f), 0.0f, roughness}, white_diffuse, unused);
+      testing::reference_brdf_lobes(n, v, l, {glm::vec3(0.0f), 1.0f, roughness}, unused, metal_f0_zero);
+      testing::reference_brdf_lobes(n, v, l, {glm::vec3(1.0f), 1.0f, roughness}, unused, metal_f0_one);
+      const float pi = 3.14159265f;
+      const std::array<glm::vec3, 3> want{white_diffuse * pi / 0.96f * radiance, (metal_f0_one - metal_f0_zero) * radiance,
+                                          metal_f0_zero * radiance};
+      const std::size_t i = static_cast<std::size_t>(y) * kSize.x + static_cast<std::size_t>(x);
+      for (std::size_t t = 0; t < 3; ++t) {
+        for (int ch = 0; ch < 3; ++ch) {
+          // As for the split sums: single against double precision, half floats.
+          worst[t] = std::max(worst[t], std::abs(buffer[t][i][ch] - want[t][ch]) / (0.03f * want[t][ch] + 2e-3f));
+          most[t] = std::max(most[t], want[t][ch]);
+        }
+      }
+      ++compared;
+    }
+  }
+  EXPECT_GT(compared, kSize.x * kSize.y / 2);
+  for (std::size_t t = 0; t < 3; ++t) {
+    SCOPED_TRACE(lighting::LightPrepassTechnique::kLightBufferTargets[t]);
+    most_of_all[t] = std::max(most_of_all[t], most[t]);
+    EXPECT_LE(worst[t], 1.0f) << "in units of the tolerance";
+  }
+}
+
+TEST_F(AnalyticPlane, LightPrepassBufferHoldsTheBrdfFactorsBeforeMaterials) {
+  check_light_buffer({{glm::vec3(0.8f), 0.0f, 0.35f}, glm::vec3(0.5f, 1.5f, -0.5f), glm::vec3(1.0f, 0.9f, 0.8f), 2.0f, std::nullopt});
+  // Low behind the plane's far edge, seen against the view: near-grazing
+  // reflection, where Schlick's f0-free term is large.
+  check_light_buffer({{glm::vec3(0.8f), 0.0f, 0.35f}, glm::vec3(0.0f, 0.5f, -9.0f), glm::vec3(1.0f), 30.0f, std::nullopt});
+  for (float most : most_of_all) EXPECT_GT(most, 0.02f) << "each factor is in view, well above the tolerance's floor";
 }
 
 }  // namespace

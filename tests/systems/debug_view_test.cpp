@@ -88,8 +88,9 @@ World stacked_quads(const std::string& mode) {
 TEST_F(DebugViewRender, FragmentsViewCountsWhatEachGeometryPassRasterises) {
   // Forward and the G-buffer modes rasterise the scene once; clustered forward
   // twice (its depth pre-pass, then its shading pass).
+  // The light pre-pass twice too (its thin G-buffer, then its material pass).
   for (const auto& [mode, passes] : {std::pair{"forward", 1}, std::pair{"deferred", 1}, std::pair{"clustered-forward", 2},
-                                     std::pair{"light-volumes", 1}}) {
+                                     std::pair{"light-volumes", 1}, std::pair{"light-prepass", 2}}) {
     World world = stacked_quads(mode);
     world.registry().resource<RendererSettings>().debug_view = "fragments";
     world.frame(0.0);
@@ -129,6 +130,7 @@ TEST_F(DebugViewRender, HeatmapCountsWhatEachModeEvaluates) {
   EXPECT_GE(volumes, radius);
   EXPECT_LE(volumes, radius * 1.1);
   EXPECT_GE(instanced, volumes) << "without the stencil, pixels in front of a sphere are shaded too";
+  EXPECT_DOUBLE_EQ(evaluations(world, "light-prepass"), instanced) << "the light pre-pass sums through the same instanced volumes";
   EXPECT_GE(forward, deferred) << "forward shades overdrawn fragments too";
 }
 
@@ -318,6 +320,44 @@ TEST_F(DebugViewRender, LightSumViewsAndThumbnailsShowTheSplitOfDeferredModesOnl
   EXPECT_GT(colours[6].size(), 100u) << "diffuse thumbnail with the split";
   EXPECT_GT(colours[7].size(), 20u) << "specular thumbnail with the split";
   EXPECT_NE(colours[6], colours[7]);
+}
+
+// The light pre-pass shows its own thin G-buffer (what it does not store is
+// grey) and its light buffer; modes without a light buffer show grey there.
+TEST_F(DebugViewRender, LightPrepassShowsItsThinGBufferAndLightBuffer) {
+  World world({"atrium", 48u, "deferred", 1, kSize});
+  auto& settings = world.registry().resource<RendererSettings>();
+  auto colours_of = [](const assets::Image& image) {
+    std::set<Rgb> colours;
+    for (int y = 0; y < image.height; ++y) {
+      for (int x = 0; x < image.width; ++x) colours.insert(pixel(image, x, y));
+    }
+    return colours;
+  };
+  auto view = [&](const char* name) {
+    settings.debug_view = name;
+    world.frame(0.0);
+    return world.renderer().read_output();
+  };
+  EXPECT_EQ(colours_of(view("light-buffer")), (std::set<Rgb>{{38, 38, 38}})) << "deferred keeps no light buffer";
+  const assets::Image deferred_normal = view("normal");
+  world.set_mode("light-prepass");
+  const assets::Image light_buffer = view("light-buffer");
+  assets::write_png("debug_view_light_prepass_light_buffer.png", light_buffer);
+  EXPECT_GT(colours_of(light_buffer).size(), 200u);
+  // The light buffer holds light before albedo: it is not the lit image.
+  settings.debug_view.clear();
+  world.frame(0.0);
+  EXPECT_LT(assets::psnr(light_buffer, world.renderer().read_output()), 25.0);
+  // Normals: 16 bits in both G-buffers, so the same picture.
+  EXPECT_GE(assets::psnr(deferred_normal, view("normal")), 50.0);
+  for (const char* grey : {"albedo", "emissive"}) {
+    EXPECT_EQ(colours_of(view(grey)), (std::set<Rgb>{{0, 0, 0}, {38, 38, 38}})) << grey << ": background and grey";
+  }
+  settings.debug_view.clear();
+  settings.gbuffer_thumbnails = true;
+  world.frame(0.0);
+  EXPECT_NE(world.renderer().gbuffer_thumbnails(), 0u) << "the thin G-buffer has thumbnails";
 }
 
 // Each --z-slicing scheme in a mode with a grid and in one without.

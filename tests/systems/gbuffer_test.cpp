@@ -61,6 +61,7 @@ TEST(GBufferLayouts, CostTheBytesPerPixelTheDocsState) {
   EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Full), 44u);
   EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Compact), 24u);
   EXPECT_EQ(lighting::GBuffer::targets(lighting::GBufferLayout::Compact).size(), 2u);
+  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Thin), 16u) << "the light pre-pass's";
 }
 
 TEST_F(CompactGBuffer, DrawsWhatTheFullLayoutDrawsInEveryDeferredMode) {

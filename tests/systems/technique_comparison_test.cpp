@@ -20,10 +20,9 @@ constexpr glm::ivec2 kSize{160, 90};
 class TechniqueMatchesForward : public testing::GlTest,
                                 public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
 
-TEST_P(TechniqueMatchesForward, FromEveryView) {
-  const auto& [mode, layout] = GetParam();
-  const std::string name = testing::test_name(mode, layout);
-  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", testing::with_layout(layout)});
+// `mode` against forward in `world` from each stored view; each image is kept
+// as compare_NAME_viewK.png.
+void expect_forward_picture_from_every_view(World& world, const std::string& mode, const std::string& name) {
   for (int view = 1; view <= 5; ++view) {
     world.set_view(view);
     world.set_mode("forward");
@@ -39,10 +38,36 @@ TEST_P(TechniqueMatchesForward, FromEveryView) {
   }
 }
 
+TEST_P(TechniqueMatchesForward, FromEveryView) {
+  const auto& [mode, layout] = GetParam();
+  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", testing::with_layout(layout)});
+  expect_forward_picture_from_every_view(world, mode, testing::test_name(mode, layout));
+}
+
 INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward,
                          ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()),
                                             ::testing::ValuesIn(testing::gbuffer_layouts())),
                          [](const auto& info) { return testing::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+
+// The Phong models factor into the same terms as Cook-Torrance (brdf.glsl's
+// brdf_terms and brdf_combine), which the light pre-pass sums apart: every mode
+// draws forward's picture with them too.
+class TechniqueMatchesForwardShaded : public testing::GlTest,
+                                      public ::testing::WithParamInterface<std::tuple<std::string, std::string>> {};
+
+TEST_P(TechniqueMatchesForwardShaded, FromEveryView) {
+  const auto& [mode, model] = GetParam();
+  World world({"atrium", std::nullopt, "forward", 1, kSize, model});
+  expect_forward_picture_from_every_view(world, mode, mode + "_" + model);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForwardShaded,
+                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()), ::testing::Values("blinn-phong", "phong")),
+                         [](const auto& info) {
+                           std::string name = std::get<0>(info.param) + "_" + std::get<1>(info.param);
+                           for (char& c : name) if (c == '-') c = '_';
+                           return name;
+                         });
 
 using ShadingModels = testing::GlTest;
 

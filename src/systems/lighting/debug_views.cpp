@@ -47,19 +47,28 @@ void DebugViews::draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& tar
     glViewport(cell.x * thumbnail_size_.x, cell.y * thumbnail_size_.y, thumbnail_size_.x, thumbnail_size_.y);
     const int view = kThumbnailViews[static_cast<std::size_t>(index)];
     if (view == kDiffuseLightView || view == kSpecularLightView) {
-      draw_light_sum(view, targets, glm::vec2(cell * thumbnail_size_), glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
+      draw_light_sum(view == kDiffuseLightView ? targets.diffuse_light : targets.specular_light, glm::vec2(cell * thumbnail_size_),
+                     glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
       continue;
     }
-    gbuffer.bind_textures();
-    glBindTextureUnit(5, targets.depth_stencil);
-    gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
-    show.set("u_bounds_min", bounds_min);
-    show.set("u_bounds_max", bounds_max);
-    show.set("u_thumbnail_origin", glm::vec2(cell * thumbnail_size_));
-    show.set("u_thumbnail_scale", glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
-    show.use();
-    fullscreen_.draw();
+    show_gbuffer(view, gbuffer, targets, bounds_min, bounds_max, glm::vec2(cell * thumbnail_size_),
+                 glm::vec2(targets.size) / glm::vec2(thumbnail_size_));
   }
+}
+
+void DebugViews::show_gbuffer(int view, const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min,
+                              glm::vec3 bounds_max, glm::vec2 origin, glm::vec2 scale) {
+  gbuffer.bind_textures();
+  glBindTextureUnit(5, targets.depth_stencil);
+  std::vector<gfx::ShaderDefine> defines = gbuffer.defines();
+  defines.push_back({"DEBUG_VIEW", std::to_string(view)});
+  gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, defines);
+  show.set("u_bounds_min", bounds_min);
+  show.set("u_bounds_max", bounds_max);
+  show.set("u_thumbnail_origin", origin);
+  show.set("u_thumbnail_scale", scale);
+  show.use();
+  fullscreen_.draw();
 }
 
 void DebugViews::begin_counting(int view) {
@@ -70,10 +79,15 @@ void DebugViews::begin_counting(int view) {
 
 void DebugViews::draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
                       GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
-  // Every view is a full-screen pass into the output; the G-buffer, depth and
-  // outline views first fill their own G-buffer (and the depth buffer).
+  // Every view is a full-screen pass into the output. The G-buffer, depth and
+  // outline views show the G-buffer the mode filled this frame, in its layout;
+  // in a mode without one they first fill their own (and the depth buffer).
   const bool reads_gbuffer = view < kHeatmapView || view == kOutlineView;
-  if (reads_gbuffer) gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
+  const GBuffer* gbuffer = technique.gbuffer();
+  if (reads_gbuffer && !gbuffer) {
+    gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
+    gbuffer = &gbuffer_;
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
   glViewport(0, 0, size_.x, size_.y);
   glDisable(GL_DEPTH_TEST);
@@ -95,27 +109,24 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
   }
   if (view == kDiffuseLightView || view == kSpecularLightView) {
     // Only a deferred mode's lighting passes write the sums apart.
-    draw_light_sum(view, technique.gbuffer() ? targets : FrameTargets{}, glm::vec2(0.0f), glm::vec2(1.0f));
+    const GLuint sum = !technique.gbuffer() ? 0 : view == kDiffuseLightView ? targets.diffuse_light : targets.specular_light;
+    draw_light_sum(sum, glm::vec2(0.0f), glm::vec2(1.0f));
     return;
   }
-  gbuffer_.bind_textures();
+  if (view == kLightBufferView) {
+    draw_light_sum(technique.light_buffer(), glm::vec2(0.0f), glm::vec2(1.0f));
+    return;
+  }
   if (view == kOutlineView) {
-    gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}).use();
+    gbuffer->bind_textures();
+    gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}, gbuffer->defines()).use();
     fullscreen_.draw();
     return;
   }
-  gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, {{"DEBUG_VIEW", std::to_string(view)}});
-  show.set("u_bounds_min", bounds_min);
-  show.set("u_bounds_max", bounds_max);
-  show.set("u_thumbnail_origin", glm::vec2(0.0f));
-  show.set("u_thumbnail_scale", glm::vec2(1.0f));
-  glBindTextureUnit(5, targets.depth_stencil);
-  show.use();
-  fullscreen_.draw();
+  show_gbuffer(view, *gbuffer, targets, bounds_min, bounds_max, glm::vec2(0.0f), glm::vec2(1.0f));
 }
 
-void DebugViews::draw_light_sum(int view, const FrameTargets& targets, glm::vec2 origin, glm::vec2 scale) {
-  const GLuint sum = view == kDiffuseLightView ? targets.diffuse_light : targets.specular_light;
+void DebugViews::draw_light_sum(GLuint sum, glm::vec2 origin, glm::vec2 scale) {
   if (sum == 0) {
     // Grey says the sums are not there; the scissor keeps a thumbnail's clear in its cell.
     GLint viewport[4];

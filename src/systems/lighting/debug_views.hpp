@@ -3,8 +3,11 @@
 // evaluated per pixel by the current mode, the light count of each pixel's tile
 // or cluster, the cluster depth slices, the fragments the mode's geometry
 // passes rasterise per pixel, and the diffuse and specular light sums a
-// deferred mode's lighting passes wrote apart (SPLIT_LIGHTING while shown). The G-buffer views run their own geometry pass, so
-// they work whatever the mode; the heatmap and the fragments view count what the
+// deferred mode's lighting passes wrote apart (SPLIT_LIGHTING while shown), and
+// the light pre-pass's light buffer (LightingTechnique::light_buffer). The
+// G-buffer views show the mode's own G-buffer in its layout (the light
+// pre-pass's thin one included), or in a forward mode run a geometry pass of
+// their own, so they work whatever the mode; the heatmap and the fragments view count what the
 // mode's own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while
 // shown); the light-lists view draws the lists the tiled and clustered modes built.
 #pragma once
@@ -22,11 +25,11 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 13> kDebugViews{
+inline constexpr std::array<std::string_view, 14> kDebugViews{
     "position",     "normal",    "albedo",        "metallic-roughness", "emissive",      "depth",         "light-volumes",
-    "heatmap",      "light-lists", "depth-slices", "fragments",         "diffuse-light", "specular-light"};
+    "heatmap",      "light-lists", "depth-slices", "fragments",         "diffuse-light", "specular-light", "light-buffer"};
 inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
-                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12;
+                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12, kLightBufferView = 13;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);
@@ -62,9 +65,14 @@ class DebugViews {
 
  private:
   void draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets);
-  // The diffuse or specular light target, tone-mapped, into the bound
-  // framebuffer's viewport (with the thumbnail mapping); grey without it.
-  void draw_light_sum(int view, const FrameTargets& targets, glm::vec2 origin, glm::vec2 scale);
+  // A G-buffer view (position .. depth) of `gbuffer`, decoded in its layout,
+  // into the bound framebuffer's viewport (with the thumbnail mapping).
+  void show_gbuffer(int view, const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min, glm::vec3 bounds_max,
+                    glm::vec2 origin, glm::vec2 scale);
+  // A light sum (the diffuse or specular light target, the light buffer),
+  // tone-mapped, into the bound framebuffer's viewport (with the thumbnail
+  // mapping); flat grey for 0, a sum this frame did not make.
+  void draw_light_sum(GLuint sum, glm::vec2 origin, glm::vec2 scale);
 
   assets::GpuAssets& gpu_;
   GBuffer gbuffer_;

@@ -7,8 +7,17 @@
 namespace atrium::lighting {
 
 std::span<const GBuffer::Target> GBuffer::targets(GBufferLayout layout) {
-  if (layout == GBufferLayout::Compact) return kCompactLayout;
+  switch (layout) {
+    case GBufferLayout::Compact: return kCompactLayout;
+    case GBufferLayout::Thin: return kThinLayout;
+    case GBufferLayout::Full: break;
+  }
   return kFullLayout;
+}
+
+std::vector<gfx::ShaderDefine> GBuffer::defines() const {
+  if (layout_ == GBufferLayout::Thin) return {{"THIN_GBUFFER"}};
+  return {};
 }
 
 void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {

@@ -1,11 +1,14 @@
 // The G-buffer shared by the deferred techniques plus the renderer's
 // depth-stencil target. Two layouts (--gbuffer): the reference's five targets
 // (full), or two packed targets (compact); shaders/common/gbuffer.glsl writes
-// and reads both, picked by the COMPACT_GBUFFER define the renderer sets.
+// and reads both, picked by the COMPACT_GBUFFER define the renderer sets. A
+// third, thin, holds only what the light pre-pass lights with; programs that
+// write or read it are built with defines().
 #pragma once
 
 #include <array>
 #include <span>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -36,6 +39,9 @@ class GBuffer {
   // (32-bit float) packed into the four words of one integer target.
   static constexpr std::array<Target, 2> kCompactLayout{{{"albedo", GL_SRGB8_ALPHA8, 4},
                                                          {"packed", GL_RGBA32UI, 16}}};
+  // Thin: the light pre-pass's normal and roughness (16-bit unorm each) and the
+  // distance to the camera.
+  static constexpr std::array<Target, 2> kThinLayout{{{"normal-roughness", GL_RGBA16, 8}, {"distance", GL_R32F, 4}}};
 
   explicit GBuffer(GBufferLayout layout = GBufferLayout::Full) : layout_(layout) {}
 
@@ -51,6 +57,10 @@ class GBuffer {
   void draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
+  [[nodiscard]] GBufferLayout layout() const { return layout_; }
+  // The defines a program that writes or reads this G-buffer is built with on
+  // top of the renderer's globals (which carry COMPACT_GBUFFER).
+  [[nodiscard]] std::vector<gfx::ShaderDefine> defines() const;
   [[nodiscard]] GLuint texture(std::size_t index) const { return textures_[index].id(); }
   // Bytes per pixel of the targets plus the shared DEPTH24_STENCIL8.
   [[nodiscard]] static std::size_t bytes_per_pixel(GBufferLayout layout);

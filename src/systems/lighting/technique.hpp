@@ -80,9 +80,14 @@ class LightingTechnique {
     std::uint32_t overflow_capacity = 0; // LightIndexList::overflow_capacity()
   };
   [[nodiscard]] virtual LightBins bind_light_bins() const { return {}; }
-  // The G-buffer the technique filled this frame, for the overlay's
-  // thumbnails; nullptr for forward techniques.
+  // The G-buffer the technique filled this frame, in whatever layout, for the
+  // G-buffer debug views and the overlay's thumbnails; nullptr for forward
+  // techniques.
   [[nodiscard]] virtual const GBuffer* gbuffer() const { return nullptr; }
+  // A technique that sums light before it knows the materials (the light
+  // pre-pass) returns its summed diffuse light for the light-buffer view (an
+  // RGB(A) float texture, shown exposed and tone-mapped); 0 for the others.
+  [[nodiscard]] virtual GLuint light_buffer() const { return 0; }
 };
 
 // Which of a technique's shaders loop over every light, so that a driver's loop

@@ -11,8 +11,10 @@
 namespace atrium::lighting {
 
 // Which G-buffer the deferred modes write: the reference's five targets, or two
-// packed targets with position reconstructed from depth (gbuffer.glsl).
-enum class GBufferLayout { Full, Compact };
+// packed targets with position reconstructed from depth (gbuffer.glsl). Thin is
+// the light pre-pass's own (normal, roughness, distance), not a --gbuffer
+// choice: kGBufferLayoutNames lists only the choices.
+enum class GBufferLayout { Full, Compact, Thin };
 inline constexpr std::array<std::string_view, 2> kGBufferLayoutNames{"full", "compact"};
 
 // What the clustered modes test lights against: each cluster's box of the

@@ -2,6 +2,7 @@
 #include "systems/lighting/clustered.hpp"
 #include "systems/lighting/deferred.hpp"
 #include "systems/lighting/forward.hpp"
+#include "systems/lighting/light_prepass.hpp"
 #include "systems/lighting/light_volumes.hpp"
 #include "systems/lighting/tiled.hpp"
 #include "systems/lighting/technique.hpp"
@@ -31,6 +32,8 @@ constexpr TechniqueInfo kTechniques[] = {
      &make<ClusteredTechnique, true>},
     {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil", {false, true},
      &make<LightVolumeTechnique, true>},
+    {"light-prepass", "thin G-buffer, light volumes sum BRDF factors into a light buffer, a second geometry pass applies materials",
+     {false, true}, &make<LightPrepassTechnique>},
 };
 
 }  // namespace

@@ -1,0 +1,54 @@
+#version 450 core
+// Light pre-pass, light buffer: reads normal, roughness and position from the
+// thin G-buffer and adds one light's BRDF factors (brdf_terms) times its
+// radiance to the three light-buffer targets, blended additively. Drawn on a
+// light's volume, or with DIRECTIONAL_ONLY as one full-screen pass over the
+// directional lights. No material is known yet: the second geometry pass
+// multiplies the sums by it (shade.frag).
+#include "common/frame.glsl"
+#include "common/surface.glsl"
+#include "common/gbuffer.glsl"
+#include "common/shading.glsl"
+
+#ifndef DIRECTIONAL_ONLY
+flat in uint v_light;
+#endif
+
+// Counting has side effects, which make GL run the shader before the depth
+// test; count only what passes it, as a GPU's early tests would.
+#ifdef COUNT_LIGHTS
+layout(early_fragment_tests) in;
+#endif
+
+layout(location = 0) out vec4 out_diffuse;
+layout(location = 1) out vec4 out_specular_f0;
+layout(location = 2) out vec4 out_specular;
+
+vec3 g_diffuse = vec3(0.0), g_specular_f0 = vec3(0.0), g_specular = vec3(0.0);
+
+void accumulate(Surface s, vec3 v, Light light) {
+  count_light_evaluation();
+  vec3 l;
+  vec3 radiance = incoming_light(s, light, l);
+  if (all(lessThanEqual(radiance, vec3(0.0)))) return;
+  vec3 t = brdf_terms(s.normal, v, l, s.roughness);
+  g_diffuse += t.x * radiance;
+  g_specular_f0 += t.y * radiance;
+  g_specular += t.z * radiance;
+}
+
+void main() {
+  Surface s;
+  if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) discard;
+  vec3 v = normalize(u_camera_position.xyz - s.position);
+#ifdef DIRECTIONAL_ONLY
+  for (uint i = 0u; i < u_light_count; ++i) {
+    if (uint(u_lights[i].color_kind.w) == kLightDirectional) accumulate(s, v, u_lights[i]);
+  }
+#else
+  accumulate(s, v, u_lights[v_light]);
+#endif
+  out_diffuse = vec4(g_diffuse, 0.0);
+  out_specular_f0 = vec4(g_specular_f0, 0.0);
+  out_specular = vec4(g_specular, 0.0);
+}

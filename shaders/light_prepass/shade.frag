@@ -1,0 +1,35 @@
+#version 450 core
+// Light pre-pass, material pass: the second geometry pass. Evaluates each
+// visible fragment's material and multiplies the light buffer's sums at its
+// pixel by it (brdf_combine), plus ambient and emission; writes the lit HDR
+// image (and, split, the diffuse and specular sums). Depth is already there:
+// only the visible fragment passes the test.
+#include "common/frame.glsl"
+#include "common/material.glsl"
+#include "common/fragment_count.glsl"
+#include "common/lighting_targets.glsl"
+
+layout(binding = 5) uniform sampler2D u_light_diffuse;
+layout(binding = 6) uniform sampler2D u_light_specular_f0;
+layout(binding = 7) uniform sampler2D u_light_specular;
+
+in vec3 v_position;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv[5];
+in vec4 v_color;
+
+void main() {
+  count_fragment();
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
+  if (s.alpha < material_alpha_cutoff()) discard;
+  LightSum sum = no_light();
+  if (!s.unlit) {
+    ivec2 pixel = ivec2(gl_FragCoord.xy);
+    vec3 diffuse, specular;
+    brdf_combine(texelFetch(u_light_diffuse, pixel, 0).rgb, texelFetch(u_light_specular_f0, pixel, 0).rgb,
+                 texelFetch(u_light_specular, pixel, 0).rgb, s.albedo, s.metallic, diffuse, specular);
+    sum = light_sum(diffuse, specular);
+  }
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), sum);
+}

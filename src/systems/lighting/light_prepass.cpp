@@ -1,0 +1,123 @@
+#include "systems/lighting/light_prepass.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "gfx/depth.hpp"
+
+namespace atrium::lighting {
+namespace {
+
+std::vector<gfx::ShaderDefine> with(std::vector<gfx::ShaderDefine> defines, std::vector<gfx::ShaderDefine> more) {
+  defines.insert(defines.end(), more.begin(), more.end());
+  return defines;
+}
+
+}  // namespace
+
+LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions&)
+    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}, gbuffer_.defines())),
+      directional_(gpu.shaders().get({"post/fullscreen.vert", "light_prepass/accumulate.frag"},
+                                     with(gbuffer_.defines(), {{"DIRECTIONAL_ONLY"}}))),
+      volumes_(gpu.shaders().get({"common/light_volume.vert", "light_prepass/accumulate.frag"}, gbuffer_.defines())),
+      material_(gpu.shaders().get({"common/mesh.vert", "light_prepass/shade.frag"})),
+      forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {
+  sphere_.prepare(volumes_);
+  volumes_.set("u_instanced", 1);
+}
+
+void LightPrepassTechnique::resize(const FrameTargets& targets) {
+  size_ = targets.size;
+  gbuffer_.resize(targets.size, targets.depth_stencil);
+  light_framebuffer_ = gfx::create_framebuffer();
+  std::array<GLenum, kLightBufferTargets.size()> attachments{};
+  for (std::size_t i = 0; i < light_buffer_.size(); ++i) {
+    light_buffer_[i] = gfx::create_texture(GL_TEXTURE_2D);
+    glTextureStorage2D(light_buffer_[i].id(), 1, kLightBufferFormat, size_.x, size_.y);
+    glTextureParameteri(light_buffer_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTextureParameteri(light_buffer_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
+    glNamedFramebufferTexture(light_framebuffer_.id(), attachments[i], light_buffer_[i].id(), 0);
+  }
+  // The scene's depth, for the volumes' depth test (it is not sampled: the
+  // distance comes from the thin G-buffer).
+  glNamedFramebufferTexture(light_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, targets.depth_stencil, 0);
+  glNamedFramebufferDrawBuffers(light_framebuffer_.id(), static_cast<GLsizei>(attachments.size()), attachments.data());
+  if (glCheckNamedFramebufferStatus(light_framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    throw std::runtime_error("the light pre-pass's light buffer is incomplete");
+  }
+}
+
+void LightPrepassTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+  gbuffer_.draw_geometry(geometry_, frame);
+  {
+    const auto pass = frame.timer.scope("light buffer");
+    accumulate_lights(frame);
+  }
+  {
+    const auto pass = frame.timer.scope("material");
+    shade_materials(frame, targets);
+  }
+  draw_transparent(forward_, frame, targets);
+}
+
+void LightPrepassTechnique::accumulate_lights(const FrameContext& frame) {
+  const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+  for (GLint i = 0; i < static_cast<GLint>(light_buffer_.size()); ++i) {
+    glClearNamedFramebufferfv(light_framebuffer_.id(), GL_COLOR, i, zero);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, light_framebuffer_.id());
+  glViewport(0, 0, size_.x, size_.y);
+  gbuffer_.bind_textures();
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  glDepthMask(GL_FALSE);
+  const bool any_directional = std::any_of(frame.lights.begin(), frame.lights.end(), [](const GpuLight& light) {
+    return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+  });
+  if (any_directional) {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_CULL_FACE);
+    directional_.use();
+    fullscreen_.draw();
+  }
+  if (!frame.lights.empty()) {
+    // As light-volumes-instanced: every sphere's back faces at or behind the
+    // scene's depth cover the pixels inside it, the camera inside one
+    // included; depth clamp keeps spheres that cross the near or far plane whole.
+    glEnable(GL_DEPTH_CLAMP);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(gfx::kDepthFartherOrEqual);
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_FRONT);
+    volumes_.use();
+    sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
+    glBindVertexArray(0);
+    glDisable(GL_DEPTH_CLAMP);
+    glCullFace(GL_BACK);
+  }
+  glDisable(GL_BLEND);
+  glDepthFunc(gfx::kDepthCloser);
+  glDepthMask(GL_TRUE);
+}
+
+void LightPrepassTechnique::shade_materials(const FrameContext& frame, const FrameTargets& targets) {
+  // Pixels no surface covers keep the background and no light.
+  const GLfloat background[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, background);
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
+  glViewport(0, 0, size_.x, size_.y);
+  // Each visible fragment is shaded once: the first pass left its depth.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloserOrEqual);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_BLEND);
+  // Units 0-4 are the materials' textures.
+  for (std::size_t i = 0; i < light_buffer_.size(); ++i) glBindTextureUnit(5 + static_cast<GLuint>(i), light_buffer_[i].id());
+  material_.use();
+  draw_items(frame.draws.opaque);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(gfx::kDepthCloser);
+}
+
+}  // namespace atrium::lighting
