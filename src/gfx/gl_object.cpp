@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 #include <unordered_set>
 
 namespace atrium::gfx {
@@ -126,5 +129,23 @@ Query create_query(GLenum target) {
   return create_one<GlKind::Query>(glCreateQueries, target);
 }
 Sampler create_sampler() { return create_one<GlKind::Sampler>(glCreateSamplers); }
+
+Texture create_render_target(GLenum format, int width, int height) {
+  Texture texture = create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, format, width, height);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void require_complete(GLuint framebuffer, std::string_view what) {
+  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
+  if (status == GL_FRAMEBUFFER_COMPLETE) return;
+  char hex[16];
+  std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>(status));
+  throw std::runtime_error("render target " + std::string(what) + " is incomplete (status 0x" + hex + ")");
+}
 
 }  // namespace atrium::gfx

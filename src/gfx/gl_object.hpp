@@ -81,4 +81,11 @@ using Sampler = GlObject<GlKind::Sampler>;
 [[nodiscard]] Query create_query(GLenum target);
 [[nodiscard]] Sampler create_sampler();
 
+// A one-level 2D texture to render into and read back texel by texel: nearest
+// filtering, edges clamped.
+[[nodiscard]] Texture create_render_target(GLenum format, int width, int height);
+// Throws std::runtime_error "render target WHAT is incomplete (status 0x...)"
+// when the framebuffer cannot be drawn to.
+void require_complete(GLuint framebuffer, std::string_view what);
+
 }  // namespace atrium::gfx

@@ -14,27 +14,6 @@
 #include "systems/lighting/shading_model.hpp"
 
 namespace atrium {
-namespace {
-
-gfx::Texture make_target(GLenum format, glm::ivec2 size) {
-  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(texture.id(), 1, format, size.x, size.y);
-  glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(texture.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  return texture;
-}
-
-void require_complete(GLuint framebuffer, const char* what) {
-  const GLenum status = glCheckNamedFramebufferStatus(framebuffer, GL_FRAMEBUFFER);
-  if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error(std::string("render target ") + what + " is incomplete (status 0x" +
-                             std::to_string(status) + ")");
-  }
-}
-
-}  // namespace
 
 MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
@@ -56,16 +35,16 @@ void MeshRenderer::resize(glm::ivec2 size) {
                                   "GL_MAX_RENDERBUFFER_SIZE and GL_MAX_TEXTURE_SIZE); use a smaller --size");
   }
   size_ = size;
-  hdr_color_ = make_target(GL_RGBA16F, size);
-  depth_stencil_ = make_target(gfx::kDepthStencilFormat, size);
+  hdr_color_ = gfx::create_render_target(GL_RGBA16F, size.x, size.y);
+  depth_stencil_ = gfx::create_render_target(gfx::kDepthStencilFormat, size.x, size.y);
   hdr_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
-  require_complete(hdr_framebuffer_.id(), "hdr");
-  output_color_ = make_target(GL_RGBA8, size);
+  gfx::require_complete(hdr_framebuffer_.id(), "hdr");
+  output_color_ = gfx::create_render_target(GL_RGBA8, size.x, size.y);
   output_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
-  require_complete(output_framebuffer_.id(), "output");
+  gfx::require_complete(output_framebuffer_.id(), "output");
   update_split_targets();
   if (technique_) technique_->resize(targets());
   if (debug_views_) debug_views_->resize(targets());
@@ -78,8 +57,8 @@ void MeshRenderer::update_split_targets() {
     specular_light_ = {};
     return;
   }
-  diffuse_light_ = make_target(GL_RGBA16F, size_);
-  specular_light_ = make_target(GL_RGBA16F, size_);
+  diffuse_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y);
+  specular_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y);
   lighting_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT1, diffuse_light_.id(), 0);
@@ -87,7 +66,7 @@ void MeshRenderer::update_split_targets() {
   glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
   const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   glNamedFramebufferDrawBuffers(lighting_framebuffer_.id(), 3, buffers);
-  require_complete(lighting_framebuffer_.id(), "lighting (split)");
+  gfx::require_complete(lighting_framebuffer_.id(), "lighting (split)");
 }
 
 lighting::FrameTargets MeshRenderer::targets() const {

@@ -1,7 +1,5 @@
 #include "systems/lighting/gbuffer.hpp"
 
-#include <stdexcept>
-
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
@@ -26,18 +24,13 @@ void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
   const auto layout = targets();
   std::array<GLenum, kMaxTargets> attachments{};
   for (std::size_t i = 0; i < layout.size(); ++i) {
-    textures_[i] = gfx::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(textures_[i].id(), 1, layout[i].format, size.x, size.y);
-    glTextureParameteri(textures_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(textures_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    textures_[i] = gfx::create_render_target(layout[i].format, size.x, size.y);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(framebuffer_.id(), attachments[i], textures_[i].id(), 0);
   }
   glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil, 0);
   glNamedFramebufferDrawBuffers(framebuffer_.id(), static_cast<GLsizei>(layout.size()), attachments.data());
-  if (glCheckNamedFramebufferStatus(framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error("the G-buffer framebuffer is incomplete");
-  }
+  gfx::require_complete(framebuffer_.id(), "G-buffer");
 }
 
 void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame) {

@@ -1,7 +1,6 @@
 #include "systems/lighting/light_prepass.hpp"
 
 #include <algorithm>
-#include <stdexcept>
 
 #include "gfx/depth.hpp"
 
@@ -32,10 +31,7 @@ void LightPrepassTechnique::resize(const FrameTargets& targets) {
   light_framebuffer_ = gfx::create_framebuffer();
   std::array<GLenum, kLightBufferTargets.size()> attachments{};
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) {
-    light_buffer_[i] = gfx::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(light_buffer_[i].id(), 1, kLightBufferFormat, size_.x, size_.y);
-    glTextureParameteri(light_buffer_[i].id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(light_buffer_[i].id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    light_buffer_[i] = gfx::create_render_target(kLightBufferFormat, size_.x, size_.y);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(light_framebuffer_.id(), attachments[i], light_buffer_[i].id(), 0);
   }
@@ -43,9 +39,7 @@ void LightPrepassTechnique::resize(const FrameTargets& targets) {
   // distance comes from the thin G-buffer).
   glNamedFramebufferTexture(light_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, targets.depth_stencil, 0);
   glNamedFramebufferDrawBuffers(light_framebuffer_.id(), static_cast<GLsizei>(attachments.size()), attachments.data());
-  if (glCheckNamedFramebufferStatus(light_framebuffer_.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    throw std::runtime_error("the light pre-pass's light buffer is incomplete");
-  }
+  gfx::require_complete(light_framebuffer_.id(), "light buffer");
 }
 
 void LightPrepassTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
