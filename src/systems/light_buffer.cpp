@@ -103,4 +103,10 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
   });
 }
 
+bool has_directional_light(std::span<const GpuLight> lights) {
+  return std::any_of(lights.begin(), lights.end(), [](const GpuLight& light) {
+    return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+  });
+}
+
 }  // namespace atrium

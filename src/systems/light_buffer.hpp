@@ -7,6 +7,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <unordered_set>
 #include <vector>
@@ -28,6 +29,10 @@ struct GpuLight {
   glm::vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x
 };
 static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights.glsl");
+
+// Whether any of `lights` is directional: volume techniques light those in a
+// full-screen pass of their own, skipped when there are none.
+[[nodiscard]] bool has_directional_light(std::span<const GpuLight> lights);
 
 struct LightBuffer {
   gfx::Buffer buffer;

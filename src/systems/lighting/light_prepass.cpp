@@ -1,7 +1,5 @@
 #include "systems/lighting/light_prepass.hpp"
 
-#include <algorithm>
-
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
@@ -66,10 +64,7 @@ void LightPrepassTechnique::accumulate_lights(const FrameContext& frame) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glDepthMask(GL_FALSE);
-  const bool any_directional = std::any_of(frame.lights.begin(), frame.lights.end(), [](const GpuLight& light) {
-    return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
-  });
-  if (any_directional) {
+  if (has_directional_light(frame.lights)) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
     directional_.use();

@@ -1,7 +1,5 @@
 #include "systems/lighting/light_volumes.hpp"
 
-#include <algorithm>
-
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
@@ -28,10 +26,7 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  const bool any_directional = std::any_of(frame.lights.begin(), frame.lights.end(), [](const GpuLight& light) {
-    return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
-  });
-  if (any_directional) {
+  if (has_directional_light(frame.lights)) {
     const auto pass = frame.timer.scope("directional");
     gbuffer_.draw_fullscreen(directional_, targets);
   }
