@@ -2,14 +2,14 @@
 // depth, light-volume outlines over the lit image, a heatmap of the lights
 // evaluated per pixel by the current mode, the light count of each pixel's tile
 // or cluster, the cluster depth slices, the fragments the mode's geometry
-// passes rasterise per pixel, and the diffuse and specular light sums a
-// deferred mode's lighting passes wrote apart (SPLIT_LIGHTING while shown), and
-// the light pre-pass's light buffer (LightingTechnique::light_buffer). The
-// G-buffer views show the mode's own G-buffer in its layout (the light
-// pre-pass's thin one included), or in a forward mode run a geometry pass of
-// their own, so they work whatever the mode; the heatmap and the fragments view count what the
-// mode's own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while
-// shown); the light-lists view draws the lists the tiled and clustered modes built.
+// passes rasterise per pixel, the diffuse and specular light sums a deferred
+// mode's lighting passes wrote apart (SPLIT_LIGHTING while shown), and the light
+// pre-pass's light buffer (LightingTechnique::light_buffer). The G-buffer views
+// show the mode's own G-buffer in its layout (the light pre-pass's thin one
+// included), or in a forward mode run a geometry pass of their own, so they work
+// whatever the mode; the heatmap and the fragments view count what the mode's
+// own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while shown);
+// the light-lists view draws the lists the tiled and clustered modes built.
 #pragma once
 
 #include <array>

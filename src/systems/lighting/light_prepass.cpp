@@ -24,12 +24,11 @@ LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const Techn
 }
 
 void LightPrepassTechnique::resize(const FrameTargets& targets) {
-  size_ = targets.size;
   gbuffer_.resize(targets.size, targets.depth_stencil);
   light_framebuffer_ = gfx::create_framebuffer();
   std::array<GLenum, kLightBufferTargets.size()> attachments{};
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) {
-    light_buffer_[i] = gfx::create_render_target(kLightBufferFormat, size_.x, size_.y);
+    light_buffer_[i] = gfx::create_render_target(kLightBufferFormat, targets.size.x, targets.size.y);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(light_framebuffer_.id(), attachments[i], light_buffer_[i].id(), 0);
   }
@@ -44,7 +43,7 @@ void LightPrepassTechnique::execute(const FrameContext& frame, const FrameTarget
   gbuffer_.draw_geometry(geometry_, frame);
   {
     const auto pass = frame.timer.scope("light buffer");
-    accumulate_lights(frame);
+    accumulate_lights(frame, targets);
   }
   {
     const auto pass = frame.timer.scope("material");
@@ -53,13 +52,13 @@ void LightPrepassTechnique::execute(const FrameContext& frame, const FrameTarget
   draw_transparent(forward_, frame, targets);
 }
 
-void LightPrepassTechnique::accumulate_lights(const FrameContext& frame) {
+void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const FrameTargets& targets) {
   const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (GLint i = 0; i < static_cast<GLint>(light_buffer_.size()); ++i) {
     glClearNamedFramebufferfv(light_framebuffer_.id(), GL_COLOR, i, zero);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, light_framebuffer_.id());
-  glViewport(0, 0, size_.x, size_.y);
+  glViewport(0, 0, targets.size.x, targets.size.y);
   gbuffer_.bind_textures();
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
@@ -95,7 +94,7 @@ void LightPrepassTechnique::shade_materials(const FrameContext& frame, const Fra
   const GLfloat background[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
   glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, background);
   glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
-  glViewport(0, 0, size_.x, size_.y);
+  glViewport(0, 0, targets.size.x, targets.size.y);
   // Each visible fragment is shaded once: the first pass left its depth.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloserOrEqual);

@@ -32,7 +32,7 @@ class LightPrepassTechnique final : public LightingTechnique {
   [[nodiscard]] GLuint light_buffer_target(std::size_t index) const { return light_buffer_[index].id(); }
 
  private:
-  void accumulate_lights(const FrameContext& frame);
+  void accumulate_lights(const FrameContext& frame, const FrameTargets& targets);
   void shade_materials(const FrameContext& frame, const FrameTargets& targets);
 
   GBuffer gbuffer_{GBufferLayout::Thin};  // first: the programs below are built with its defines
@@ -45,7 +45,6 @@ class LightPrepassTechnique final : public LightingTechnique {
   FullscreenTriangle fullscreen_;
   std::array<gfx::Texture, kLightBufferTargets.size()> light_buffer_;
   gfx::Framebuffer light_framebuffer_;
-  glm::ivec2 size_{0};
 };
 
 }  // namespace atrium::lighting
