@@ -1,4 +1,5 @@
-// The `atrium` command line: parsing (pure, testable) and the commands.
+// The `atrium` command line: parsing (pure, testable; command_line.cpp) and the
+// commands (cli.cpp).
 // Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.
 #pragma once
 
@@ -29,10 +30,11 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Command { Window, Render, Info, Compare, Bench, Help };
+enum class Command { Window, Render, Info, Compare, Bench, Help, Version };
 
 struct CliOptions {
   Command command = Command::Window;
+  Command help_topic = Command::Window;  // help: the command whose options it lists (Window: the overview)
   std::string scene = "atrium";
   std::optional<std::string> mode;
   std::string shading = "pbr";
@@ -55,7 +57,9 @@ struct CliOptions {
 
 // Throws UsageError with a one-line message naming the bad argument.
 [[nodiscard]] CliOptions parse_cli(std::span<const std::string_view> args);
-[[nodiscard]] std::string help_text();
+// `atrium --help` (the overview), or one command's options for `atrium render --help`.
+[[nodiscard]] std::string help_text(Command command = Command::Window);
+[[nodiscard]] std::string version_text();
 
 // Runs a parsed command; returns the process exit code.
 int run_command(const CliOptions& options);

@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <map>
+#include <sstream>
+
 #include "app/cli.hpp"
 #include "systems/lighting/technique.hpp"
 
@@ -59,6 +62,84 @@ TEST(Cli, BadArgumentsNameTheProblem) {
   EXPECT_EQ(usage_error({"--size", "0x10"}), "--size expects WIDTHxHEIGHT with each side from 1 to 16384, got '0x10'");
   EXPECT_EQ(usage_error({"--mode", "deferred-ish"}).rfind("unknown mode 'deferred-ish' (modes: forward", 0), 0u);
   EXPECT_EQ(usage_error({"a", "b"}), "unexpected argument 'b' (one scene at most)");
+}
+
+TEST(Cli, TakesTheGnuFormAndTheLastOfARepeatedOption) {
+  const CliOptions o = parse({"render", "--out=x.png", "--mode=deferred", "--lights", "3", "--lights=7", "--size=64x36"});
+  EXPECT_EQ(o.out, "x.png");
+  EXPECT_EQ(*o.mode, "deferred");
+  EXPECT_EQ(*o.lights, 7u);
+  EXPECT_EQ(o.size, glm::ivec2(64, 36));
+  EXPECT_EQ(usage_error({"--lights=many"}), "--lights expects a whole number from 0 to 1000000, got 'many'");
+}
+
+TEST(Cli, VersionAndPerCommandHelp) {
+  EXPECT_EQ(parse({"--version"}).command, Command::Version);
+  EXPECT_EQ(version_text().rfind("atrium ", 0), 0u);  // the number itself: the version CLI test
+  const CliOptions help = parse({"render", "--out", "x.png", "--help"});
+  EXPECT_EQ(help.command, Command::Help);
+  EXPECT_EQ(help.help_topic, Command::Render);
+  EXPECT_EQ(parse({"--help"}).help_topic, Command::Window);
+  const std::string render = help_text(Command::Render);
+  EXPECT_EQ(render.rfind("Usage: atrium render", 0), 0u);
+  EXPECT_NE(render.find("\n  --out FILE.png "), std::string::npos);
+  EXPECT_EQ(render.find("--json"), std::string::npos);
+  EXPECT_EQ(render.find("--modes"), std::string::npos);
+  const std::string info = help_text(Command::Info);
+  EXPECT_NE(info.find("\n  --json "), std::string::npos);
+  EXPECT_EQ(info.find("--mode"), std::string::npos);
+  EXPECT_NE(help_text(Command::Bench).find("\n  --lights LIST "), std::string::npos);
+}
+
+TEST(Cli, SuggestsTheNearestOptionAndNamesWhereAnOptionBelongs) {
+  EXPECT_EQ(usage_error({"--ligths", "5"}), "unknown option '--ligths' (did you mean --lights? see atrium --help)");
+  EXPECT_EQ(usage_error({"render", "--out", "x.png", "--shadng=pbr"}),
+            "unknown option '--shadng' (did you mean --shading? see atrium render --help)");
+  EXPECT_EQ(usage_error({"info", "--debug-view", "heatmap"}), "--debug-view is for the window and `atrium render`");
+  EXPECT_EQ(usage_error({"render", "--out", "x.png", "--frames", "3"}), "--frames is for the window and `atrium bench`");
+  EXPECT_EQ(usage_error({"--debug-view", "depth", "info"}), "--debug-view is for the window and `atrium render`");
+  EXPECT_EQ(usage_error({"compare", "--mode", "deferred"}), "compare renders every mode; --mode does not apply");
+  EXPECT_EQ(usage_error({"render", "--out", "x.png", "--view"}), "--view needs a value");
+}
+
+// Every option a command's help lists is one that command accepts: the help,
+// the parser and the code that reads the values come from one table.
+TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
+  const std::map<std::string, std::string> sample{
+      {"--mode", "deferred"},       {"--shading", "phong"},          {"--cluster-grid", "8x4x8"},
+      {"--cluster-bounds", "grid"}, {"--z-slicing", "uniform"},      {"--gbuffer", "compact"},
+      {"--debug-view", "depth"},    {"--lights", "5"},               {"--light-radius", "2"},
+      {"--max-texture-size", "64"}, {"--view", "2"},                 {"--camera", "0,1,2,0,0"},
+      {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},
+      {"--warmup", "1"},            {"--modes", "forward,deferred"}, {"--views", "1,2"},
+      {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"}};
+  for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench}) {
+    std::istringstream help(help_text(command));
+    int options = 0;
+    for (std::string line; std::getline(help, line);) {
+      if (!line.starts_with("  --") || line.starts_with("  --help")) continue;
+      const std::string name = line.substr(2, line.find(' ', 2) - 2);
+      const bool flag = line[2 + name.size() + 1] == ' ';
+      // The overview lists every option, tagging those only some commands take.
+      const std::size_t tag = line.find(" [");
+      if (command == Command::Window && tag != std::string::npos && line.find("window", tag) == std::string::npos) continue;
+      std::vector<std::string> args;
+      if (command == Command::Render) args = {"render", "--out", "x.png"};
+      if (command == Command::Info) args = {"info"};
+      if (command == Command::Compare) args = {"compare"};
+      if (command == Command::Bench) args = {"bench"};
+      if (flag) {
+        args.push_back(name);
+      } else {
+        ASSERT_TRUE(sample.contains(name)) << "give " << name << " a sample value in this test";
+        args.push_back(name + "=" + sample.at(name));
+      }
+      const std::vector<std::string_view> views(args.begin(), args.end());
+      EXPECT_NO_THROW((void)parse_cli(views)) << line;
+      ++options;
+    }
+    EXPECT_GT(options, 2);
+  }
 }
 
 TEST(Cli, AcceptsTheExtremeLightCounts) {

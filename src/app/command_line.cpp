@@ -1,0 +1,537 @@
+// The `atrium` command line, parsed by CLI11. One table names every option,
+// the commands that take it and what it means; the parser, the overview
+// (`atrium --help`) and each command's help (`atrium render --help`) are all
+// built from it, so an option is added in one place.
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/cli.hpp"
+#include "systems/lighting/debug_views.hpp"
+#include "systems/lighting/shading_model.hpp"
+#include "systems/lighting/technique.hpp"
+#include "systems/overlay.hpp"
+
+namespace atrium {
+namespace {
+
+constexpr unsigned on(Command command) { return 1u << static_cast<unsigned>(command); }
+constexpr unsigned kWindow = on(Command::Window), kRender = on(Command::Render), kInfo = on(Command::Info),
+                   kCompare = on(Command::Compare), kBench = on(Command::Bench);
+constexpr unsigned kDrawing = kWindow | kRender | kCompare | kBench;  // the commands that draw frames
+
+struct CommandSpec {
+  Command command;
+  std::string_view name;  // empty: the window, which is `atrium` with no command
+  std::string_view usage;
+  std::string_view summary;
+};
+
+constexpr std::array kCommands{
+    CommandSpec{Command::Window, "", "atrium [SCENE] [options]", "open the demo window"},
+    CommandSpec{Command::Render, "render", "atrium render [SCENE] --out FILE.png [options]",
+                "render one frame headless to a PNG"},
+    CommandSpec{Command::Info, "info", "atrium info [SCENE] [options]", "what the scene holds and what loading cost"},
+    CommandSpec{Command::Compare, "compare", "atrium compare [SCENE] [options]",
+                "every mode at every view against forward (PSNR, largest difference); exit 1 under 40 dB"},
+    CommandSpec{Command::Bench, "bench", "atrium bench [SCENE] [options]",
+                "frame and pass times over modes, light counts and views (default: all modes, 10,50,110,1024 "
+                "lights, all views, 320x180, 30 frames, 5 warm-up)"},
+};
+
+const CommandSpec& command_spec(Command command) {
+  return *std::find_if(kCommands.begin(), kCommands.end(), [&](const CommandSpec& c) { return c.command == command; });
+}
+
+struct OptionSpec {
+  std::string name;   // "--lights"
+  std::string value;  // "N"; empty for a flag
+  unsigned commands;  // which commands take it
+  std::string help;
+};
+
+// Every option. One name may appear twice when its value means something else
+// in `atrium bench` (a list there).
+const std::vector<OptionSpec>& option_table() {
+  static const std::vector<OptionSpec> table{
+      {"--mode", "M", kWindow | kRender,
+       "lighting technique (default: the scene's, 'forward'): " + lighting::technique_names()},
+      {"--shading", "S", kDrawing, "shading model: pbr (default), blinn-phong or phong"},
+      {"--cluster-grid", "XxYxZ", kDrawing, "clustered modes: clusters per axis (default 16x9x32)"},
+      {"--cluster-bounds", "B", kDrawing,
+       "clustered modes: test lights against each cluster's box of the pixels it holds (pixels, default) or its "
+       "whole frustum slice (grid)"},
+      {"--active-clusters", "", kDrawing, "clustered modes, grid bounds: only clusters holding visible pixels get lights"},
+      {"--z-slicing", "S", kWindow | kRender | kCompare,
+       "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
+       "plain-log (logarithmic from the near plane) or uniform"},
+      {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)"},
+      {"--gbuffer", "L", kDrawing,
+       "deferred modes: G-buffer layout, full (5 targets, 44 B/px, default) or compact (2 targets, 24 B/px; position "
+       "from depth, octahedral normal)"},
+      {"--split-lighting", "", kDrawing,
+       "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
+       "diffuse-light and specular-light views turn this on while shown)"},
+      {"--debug-view", "V", kWindow | kRender,
+       "show position, normal, albedo, metallic-roughness, emissive, depth, light-volumes (outlines), heatmap (lights "
+       "evaluated per pixel in the current mode), light-lists (lights in each pixel's tile or cluster list), "
+       "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
+       "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
+       "light-buffer (light-prepass: light summed before materials)"},
+      {"--lights", "N", kWindow | kRender | kInfo | kCompare,
+       "number of lights, 0.." + std::to_string(kMaxLights) +
+           " (built-in default: 160); for a scene its listed lights come first, then generated ones; for a glTF "
+           "model, N generated lights are added to the model's own"},
+      {"--lights", "LIST", kBench, "comma-separated light counts to measure (default 10,50,110,1024)"},
+      {"--light-radius", "R", kDrawing,
+       "every point and spot light reaches R metres (its intensity scaled to match); bench --constant-density "
+       "shrinks R as lights grow"},
+      {"--max-texture-size", "N", kDrawing | kInfo,
+       "textures wider or taller than N pixels are downscaled (default: what the GL context allows, "
+       "GL_MAX_TEXTURE_SIZE)"},
+      {"--view", "K", kWindow | kRender, "stored view 1..5 (default 1)"},
+      {"--camera", "X,Y,Z,YAW,PITCH", kDrawing,
+       "look from here instead of the stored views (metres; degrees, yaw 0 looks along -Z, 90 along +X; pitch up > "
+       "0). The window's c key prints the camera."},
+      {"--size", "WxH", kDrawing, "image or window size in pixels (default 1280x720; compare and bench: 320x180)"},
+      {"--out", "FILE.png", kRender, "where to write the image"},
+      {"--frames", "N", kWindow, "quit after N frames (for scripted runs)"},
+      {"--frames", "N", kBench, "frames measured per run (default 30)"},
+      {"--warmup", "N", kBench, "frames drawn before measuring each run (default 5)"},
+      {"--modes", "all|LIST", kBench, "the modes to measure (default all)"},
+      {"--views", "all|LIST", kBench, "the stored views to measure from (default all)"},
+      {"--constant-density", "", kBench, "shrink the light radius as the light count grows, keeping lights per pixel level"},
+      {"--csv", "FILE", kBench, "write the results as CSV"},
+      {"--md", "FILE", kBench, "write the results as a Markdown table"},
+      {"--plot", "FILE.png", kBench, "plot frame time against light count (python3 with matplotlib)"},
+      {"--gl-debug", "", kWindow, "report GL errors through KHR_debug and print their count on exit (always on in debug builds)"},
+      {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum and back-facing meshlet culling are on by default)"},
+      {"--json", "", kInfo, "print JSON"},
+  };
+  return table;
+}
+
+// "the window and `atrium render`": the commands in `commands`, for messages and help.
+std::string command_list(unsigned commands) {
+  std::vector<std::string> names;
+  for (const CommandSpec& c : kCommands) {
+    if (commands & on(c.command)) names.push_back(c.name.empty() ? "the window" : "`atrium " + std::string(c.name) + "`");
+  }
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  }
+  return text;
+}
+
+// `text` wrapped to kWidth columns, its first line starting at column `first`
+// and the others at `indent`.
+std::string wrap(std::string_view text, std::size_t first, std::size_t indent) {
+  constexpr std::size_t kWidth = 92;
+  std::string out;
+  std::size_t column = first;
+  bool line_start = true;
+  for (std::size_t start = 0; start < text.size();) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line_start && column + 1 + word.size() > kWidth) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+      line_start = true;
+    }
+    if (!line_start) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    line_start = false;
+    start = end + 1;
+  }
+  return out + "\n";
+}
+
+// "  --view K        stored view 1..5": the help column starts at kColumn, or two
+// spaces after a long option.
+std::string option_help(const OptionSpec& option, bool tag_commands) {
+  constexpr std::size_t kColumn = 18;
+  std::string head = "  " + option.name + (option.value.empty() ? "" : " " + option.value);
+  head += std::string(head.size() + 2 <= kColumn ? kColumn - head.size() : 2, ' ');
+  std::string help = option.help;
+  if (tag_commands && (option.commands & kDrawing) != kDrawing) {
+    std::string names;
+    for (const CommandSpec& c : kCommands) {
+      if (option.commands & on(c.command)) names += (names.empty() ? "" : ", ") + std::string(c.name.empty() ? "window" : c.name);
+    }
+    help = "[" + names + "] " + help;
+  }
+  return head + wrap(help, head.size(), kColumn);
+}
+
+// The enumerator whose name is `text`; `what` and `plural` word the refusal:
+// "unknown G-buffer layout 'x' (layouts: full, compact)".
+template <typename Enum, std::size_t N>
+Enum parse_choice(std::string_view text, const std::array<std::string_view, N>& names, const char* what, const char* plural) {
+  const auto found = std::find(names.begin(), names.end(), text);
+  if (found == names.end()) {
+    std::string list;
+    for (const std::string_view name : names) list += (list.empty() ? "" : ", ") + std::string(name);
+    throw UsageError("unknown " + std::string(what) + " '" + std::string(text) + "' (" + plural + ": " + list + ")");
+  }
+  return static_cast<Enum>(found - names.begin());
+}
+
+template <typename T>
+T parse_number(std::string_view flag, std::string_view text, T min, T max) {
+  T value{};
+  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+  if (error != std::errc() || end != text.data() + text.size() || value < min || value > max) {
+    throw UsageError(std::string(flag) + " expects a whole number from " + std::to_string(min) + " to " +
+                     std::to_string(max) + ", got '" + std::string(text) + "'");
+  }
+  return value;
+}
+
+glm::ivec2 parse_size(std::string_view text) {
+  const auto x = text.find('x');
+  if (x == std::string_view::npos) throw UsageError("--size expects WIDTHxHEIGHT (e.g. 640x360), got '" + std::string(text) + "'");
+  try {
+    return {parse_number<int>("--size", text.substr(0, x), 1, kMaxImageSide),
+            parse_number<int>("--size", text.substr(x + 1), 1, kMaxImageSide)};
+  } catch (const UsageError&) {
+    throw UsageError("--size expects WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide) +
+                     ", got '" + std::string(text) + "'");
+  }
+}
+
+std::vector<std::string> split_list(std::string_view text) {
+  std::vector<std::string> items;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t comma = text.find(',', start);
+    const std::string_view item = text.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start);
+    if (!item.empty()) items.emplace_back(item);
+    if (comma == std::string_view::npos) break;
+    start = comma + 1;
+  }
+  return items;
+}
+
+// The options only `atrium bench` has, or whose meaning differs there
+// (--lights takes a list). Returns false for an option that is not one.
+bool apply_bench_option(std::string_view name, std::string_view value, CliOptions& options) {
+  BenchOptions& bench = options.bench;
+  if (name == "--modes") {
+    bench.modes.clear();
+    if (value != "all") {
+      for (const std::string& mode : split_list(value)) {
+        if (!lighting::find_technique(mode)) {
+          throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
+        }
+        bench.modes.push_back(mode);
+      }
+      if (bench.modes.empty()) throw UsageError("--modes expects all or a comma-separated list of modes");
+    }
+  } else if (name == "--lights") {
+    bench.light_counts.clear();
+    for (const std::string& count : split_list(value)) {
+      bench.light_counts.push_back(parse_number<std::uint32_t>("--lights", count, 0, kMaxLights));
+    }
+    if (bench.light_counts.empty()) throw UsageError("--lights expects a comma-separated list of light counts");
+  } else if (name == "--views") {
+    bench.views.clear();
+    if (value != "all") {
+      for (const std::string& view : split_list(value)) bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
+    }
+  } else if (name == "--z-slicing") {
+    bench.z_slicings.clear();
+    for (const std::string& item : split_list(value)) {
+      const auto slicing = parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
+      if (std::find(bench.z_slicings.begin(), bench.z_slicings.end(), slicing) == bench.z_slicings.end()) {
+        bench.z_slicings.push_back(slicing);
+      }
+    }
+    if (bench.z_slicings.empty()) throw UsageError("--z-slicing expects a comma-separated list of slicings");
+  } else if (name == "--frames") {
+    bench.frames = parse_number<int>("--frames", value, 1, 100000);
+  } else if (name == "--warmup") {
+    bench.warmup = parse_number<int>("--warmup", value, 0, 100000);
+  } else if (name == "--constant-density") {
+    bench.constant_density = true;
+  } else if (name == "--csv") {
+    options.csv = std::string(value);
+  } else if (name == "--md") {
+    options.md = std::string(value);
+  } else if (name == "--plot") {
+    options.plot = std::string(value);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// One option given on the command line, already known to belong to the command.
+void apply_option(std::string_view name, std::string_view value, CliOptions& options) {
+  if (options.command == Command::Bench && apply_bench_option(name, value, options)) return;
+  if (name == "--mode") {
+    options.mode = std::string(value);
+  } else if (name == "--cluster-grid") {
+    const std::string text(value);
+    const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
+    if (x1 == std::string::npos || x2 == std::string::npos) {
+      throw UsageError("--cluster-grid expects XxYxZ (e.g. 16x9x24), got '" + text + "'");
+    }
+    options.technique_options.cluster_grid = {
+        parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
+        parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
+        parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)};
+  } else if (name == "--active-clusters") {
+    options.technique_options.active_clusters = true;
+  } else if (name == "--cluster-bounds") {
+    options.technique_options.cluster_bounds =
+        parse_choice<lighting::ClusterBounds>(value, lighting::kClusterBoundsNames, "cluster bounds", "bounds");
+  } else if (name == "--z-slicing") {
+    options.technique_options.z_slicing =
+        parse_choice<lighting::ZSlicing>(value, lighting::kZSlicingNames, "depth slicing", "slicings");
+  } else if (name == "--split-lighting") {
+    options.technique_options.split_lighting = true;
+  } else if (name == "--gbuffer") {
+    options.technique_options.gbuffer_layout =
+        parse_choice<lighting::GBufferLayout>(value, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
+  } else if (name == "--debug-view") {
+    options.debug_view = std::string(value);
+    if (lighting::debug_view_index(options.debug_view) < 0) {
+      throw UsageError("unknown debug view '" + options.debug_view + "' (views: " + lighting::debug_view_names() + ")");
+    }
+  } else if (name == "--shading") {
+    options.shading = std::string(value);
+    if (lighting::shading_model_index(options.shading) < 0) {
+      throw UsageError("unknown shading model '" + options.shading + "' (models: " + lighting::shading_model_names() + ")");
+    }
+  } else if (name == "--lights") {
+    options.lights = parse_number<std::uint32_t>("--lights", value, 0, kMaxLights);
+  } else if (name == "--light-radius") {
+    const std::string text(value);
+    char* end = nullptr;
+    const float radius = std::strtof(text.c_str(), &end);
+    if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
+      throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
+    }
+    options.light_radius = radius;
+  } else if (name == "--max-texture-size") {
+    options.max_texture_size = parse_number<int>("--max-texture-size", value, 1, 65536);
+  } else if (name == "--view") {
+    options.view = parse_number<int>("--view", value, 1, 1000);
+  } else if (name == "--camera") {
+    options.camera = assets::parse_camera_argument(value);
+    if (!options.camera) {
+      throw UsageError("--camera expects X,Y,Z,YAW,PITCH (metres, then degrees; pitch from -90 to 90), got '" +
+                       std::string(value) + "'");
+    }
+  } else if (name == "--size") {
+    options.size = parse_size(value);
+  } else if (name == "--out") {
+    options.out = std::string(value);
+  } else if (name == "--json") {
+    options.json = true;
+  } else if (name == "--frames") {
+    options.frames = parse_number<std::uint64_t>("--frames", value, 1, 1'000'000'000);
+  } else if (name == "--no-culling") {
+    options.frustum_culling = false;
+  } else if (name == "--gl-debug") {
+    options.gl_debug = true;
+  } else {
+    throw std::logic_error("the option table names " + std::string(name) + " but nothing reads it");
+  }
+}
+
+// Edit distance with adjacent transpositions: how far a misspelt option is from a real one.
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1])});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1]) d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+// The refusal of `argument`, an option the command does not take: which
+// commands do take it, or the nearest option this one does.
+UsageError unknown_option(std::string_view argument, Command command) {
+  const std::string name(argument.substr(0, argument.find('=')));
+  if (command == Command::Compare && name == "--mode") return UsageError("compare renders every mode; --mode does not apply");
+  unsigned elsewhere = 0;
+  for (const OptionSpec& option : option_table()) elsewhere |= option.name == name ? option.commands : 0u;
+  if (elsewhere != 0) return UsageError(name + " is for " + command_list(elsewhere));
+  const CommandSpec& spec = command_spec(command);
+  const std::string help = spec.name.empty() ? "atrium --help" : "atrium " + std::string(spec.name) + " --help";
+  std::string nearest;
+  std::size_t best = std::max<std::size_t>(2, name.size() / 4) + 1;
+  for (const OptionSpec& option : option_table()) {
+    if (!(option.commands & on(command))) continue;
+    const std::size_t distance = edit_distance(name, option.name);
+    if (distance < best) best = distance, nearest = option.name;
+  }
+  if (!nearest.empty()) return UsageError("unknown option '" + name + "' (did you mean " + nearest + "? see " + help + ")");
+  return UsageError("unknown option '" + name + "' (see " + help + ")");
+}
+
+// Every option and the scene on `app`, which parses the command line of `command`.
+void declare(CLI::App& app, Command command) {
+  app.allow_extras();  // refused below, with the message the user needs
+  for (const OptionSpec& option : option_table()) {
+    if (!(option.commands & on(command))) continue;
+    CLI::Option* added = option.value.empty() ? app.add_flag(option.name) : app.add_option(option.name);
+    if (!option.value.empty()) added->type_name(option.value);
+    // The GNU convention: a repeated option's last value wins.
+    added->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  }
+  app.add_option("scene");
+}
+
+// The arguments `app` took, as (name, value) in the table's order; the scene as "scene".
+void collect(const CLI::App& app, std::vector<std::pair<std::string, std::string>>& given) {
+  for (const CLI::Option* option : app.get_options()) {
+    if (option->count() == 0 || option->get_name() == "--help" || option->get_name() == "-h") continue;
+    const std::string name = option->get_positional() ? "scene" : option->get_name();
+    given.emplace_back(name, option->get_expected_min() == 0 ? std::string() : option->results().back());
+  }
+}
+
+}  // namespace
+
+std::string help_text(Command command) {
+  if (command == Command::Window || command == Command::Help || command == Command::Version) {
+    std::string text = "Usage:\n";
+    for (const CommandSpec& c : kCommands) {
+      text += "  " + std::string(c.usage) + "\n" + std::string(4, ' ') + wrap(c.summary, 4, 4);
+    }
+    text += "  atrium --version                          print the version\n"
+            "  atrium [COMMAND] --help                   this text, or one command's options\n"
+            "\n"
+            "SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json,\n"
+            "see docs/scene-format.md) or a model file: glTF (.gltf, .glb), OBJ, FBX and the other\n"
+            "formats libassimp reads (.dae, .3ds, .ply, .stl, .x, .lwo, .ase, .off).\n"
+            "Options take their value as `--opt value` or `--opt=value`; the last one given wins.\n"
+            "\n"
+            "Options ([render, bench]: only for those commands; the others are for every command that draws):\n";
+    for (const OptionSpec& option : option_table()) text += option_help(option, true);
+    std::string modes;
+    for (const auto& info : lighting::technique_table()) {
+      constexpr std::size_t kColumn = 26;
+      const std::size_t padding = info.name.size() + 2 < kColumn ? kColumn - info.name.size() : 2;
+      modes += "  " + std::string(info.name) + std::string(padding, ' ') + std::string(info.description) + "\n";
+    }
+    return text + "\nModes:\n" + modes + "\nWindow keys:\n" + key_help() +
+           "\nExit codes: 0 success, 1 runtime failure (no GL context, shader error, a frame the\n"
+           "driver cannot hold: the message names the limit), 2 bad usage or bad input.\n";
+  }
+  const CommandSpec& spec = command_spec(command);
+  std::string text = "Usage: " + std::string(spec.usage) + "\n" + wrap(spec.summary, 0, 0) + "\nOptions:\n";
+  for (const OptionSpec& option : option_table()) {
+    if (option.commands & on(command)) text += option_help(option, false);
+  }
+  return text + "  --help          this text\n\nSCENE and the modes: atrium --help.\n";
+}
+
+std::string version_text() { return std::string("atrium ") + ATRIUM_VERSION + "\n"; }
+
+CliOptions parse_cli(std::span<const std::string_view> args) {
+  CLI::App app("", "atrium");
+  declare(app, Command::Window);
+  app.add_flag("--version");
+  std::vector<std::pair<CLI::App*, Command>> commands;
+  for (const CommandSpec& spec : kCommands) {
+    if (spec.name.empty()) continue;
+    CLI::App* sub = app.add_subcommand(std::string(spec.name), std::string(spec.summary));
+    declare(*sub, spec.command);
+    commands.emplace_back(sub, spec.command);
+  }
+  app.require_subcommand(0, 1);
+
+  CliOptions options;
+  auto chosen = [&]() -> std::pair<const CLI::App*, Command> {
+    for (const auto& [sub, command] : commands) {
+      if (sub->parsed()) return {sub, command};
+    }
+    return {&app, Command::Window};
+  };
+  std::vector<std::string> reversed(args.rbegin(), args.rend());  // CLI11 takes them last first
+  try {
+    app.parse(reversed);
+  } catch (const CLI::CallForHelp&) {
+    options.command = Command::Help;
+    options.help_topic = chosen().second;
+    return options;
+  } catch (const CLI::ArgumentMismatch& e) {
+    // CLI11 words a missing value "--view: 1 required K missing".
+    const std::string what = e.what();
+    const std::size_t colon = what.find(':');
+    if (colon != std::string::npos && what.ends_with(" missing")) throw UsageError(what.substr(0, colon) + " needs a value");
+    throw UsageError(what);
+  } catch (const CLI::ParseError& e) {
+    throw UsageError(e.what());
+  }
+  if (app.get_option("--version")->count() > 0) {
+    options.command = Command::Version;
+    return options;
+  }
+  const auto [parsed, command] = chosen();
+  options.command = command;
+  if (command == Command::Bench || command == Command::Compare) options.size = {320, 180};
+  for (const std::string& extra : app.remaining(true)) {
+    if (extra == "--") continue;
+    if (extra.starts_with("-")) throw unknown_option(extra, command);
+    throw UsageError("unexpected argument '" + extra + "' (one scene at most)");
+  }
+
+  std::vector<std::pair<std::string, std::string>> given;
+  collect(app, given);
+  if (parsed != &app) {
+    // Options before the command's name belong to the window's parser; the
+    // command must take them too.
+    for (const auto& [name, value] : given) {
+      if (name != "scene" && name != "--version" && parsed->get_option_no_throw(name) == nullptr) {
+        throw unknown_option(name, command);
+      }
+    }
+    collect(*parsed, given);
+  }
+  bool scene_given = false;
+  for (const auto& [name, value] : given) {
+    if (name == "scene") {
+      if (scene_given) throw UsageError("unexpected argument '" + value + "' (one scene at most)");
+      options.scene = value;
+      scene_given = true;
+    } else if (name != "--version") {
+      apply_option(name, value, options);
+    }
+  }
+
+  if (options.command == Command::Render && options.out.empty()) throw UsageError("render needs --out FILE.png");
+  if (options.camera && options.view != 1) throw UsageError("--camera replaces the scene's views; --view does not apply");
+  if (options.camera && options.command == Command::Bench && options.bench.views.size() > 0) {
+    throw UsageError("--camera replaces the scene's views; --views does not apply");
+  }
+  if (options.mode) {
+    try {
+      require_known_mode(*options.mode);
+    } catch (const InputError& e) {
+      throw UsageError(e.what());
+    }
+  }
+  return options;
+}
+
+}  // namespace atrium
