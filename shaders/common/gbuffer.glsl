@@ -3,6 +3,9 @@
 // src/systems/lighting/gbuffer.hpp (formats, bytes per pixel). Needs frame.glsl.
 // The layout is picked by define: THIN_GBUFFER (the light pre-pass's, set by
 // GBuffer::defines()), else COMPACT_GBUFFER (--gbuffer compact), else full.
+// With MSAA every target is multisampled: read_gbuffer() reads the sample the
+// pass runs at (common/msaa.glsl), gbuffer_samples_differ() finds the edges.
+#include "common/msaa.glsl"
 
 // World-space direction from the camera through the centre of `pixel`, through
 // the far plane's point: the near plane's lies too close to the camera for its
@@ -98,14 +101,14 @@ void write_gbuffer(Surface s) {
 #endif
 #else
 #if defined(THIN_GBUFFER)
-layout(binding = 0) uniform sampler2D u_gbuffer_normal_roughness;
-layout(binding = 1) uniform sampler2D u_gbuffer_distance;
+layout(binding = 0) uniform target2D u_gbuffer_normal_roughness;
+layout(binding = 1) uniform target2D u_gbuffer_distance;
 
 // Fills what the thin layout stores; the material's colours read as black.
-bool read_gbuffer(ivec2 pixel, out Surface s) {
-  float distance = texelFetch(u_gbuffer_distance, pixel, 0).r;
+bool read_gbuffer_sample(ivec2 pixel, int i, out Surface s) {
+  float distance = fetch_sample(u_gbuffer_distance, pixel, i).r;
   if (distance == 0.0) return false;
-  vec4 normal_roughness = texelFetch(u_gbuffer_normal_roughness, pixel, 0);
+  vec4 normal_roughness = fetch_sample(u_gbuffer_normal_roughness, pixel, i);
   s.position = u_camera_position.xyz + view_ray(pixel) * distance;
   s.normal = normal_roughness.xyz * 2.0 - 1.0;
   s.roughness = normal_roughness.w;
@@ -118,37 +121,37 @@ bool read_gbuffer(ivec2 pixel, out Surface s) {
   return true;
 }
 #elif !defined(COMPACT_GBUFFER)
-layout(binding = 0) uniform sampler2D u_gbuffer_position;
-layout(binding = 1) uniform sampler2D u_gbuffer_albedo;
-layout(binding = 2) uniform sampler2D u_gbuffer_normal;
-layout(binding = 3) uniform sampler2D u_gbuffer_metallic_roughness;
-layout(binding = 4) uniform sampler2D u_gbuffer_emissive;
+layout(binding = 0) uniform target2D u_gbuffer_position;
+layout(binding = 1) uniform target2D u_gbuffer_albedo;
+layout(binding = 2) uniform target2D u_gbuffer_normal;
+layout(binding = 3) uniform target2D u_gbuffer_metallic_roughness;
+layout(binding = 4) uniform target2D u_gbuffer_emissive;
 
 // False where no geometry covers the pixel (the background shows).
-bool read_gbuffer(ivec2 pixel, out Surface s) {
-  vec4 position = texelFetch(u_gbuffer_position, pixel, 0);
+bool read_gbuffer_sample(ivec2 pixel, int i, out Surface s) {
+  vec4 position = fetch_sample(u_gbuffer_position, pixel, i);
   if (position.w == 0.0) return false;
-  vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
-  vec4 mr = texelFetch(u_gbuffer_metallic_roughness, pixel, 0);
+  vec4 albedo = fetch_sample(u_gbuffer_albedo, pixel, i);
+  vec4 mr = fetch_sample(u_gbuffer_metallic_roughness, pixel, i);
   s.position = position.xyz;
-  s.normal = texelFetch(u_gbuffer_normal, pixel, 0).xyz * 2.0 - 1.0;
+  s.normal = fetch_sample(u_gbuffer_normal, pixel, i).xyz * 2.0 - 1.0;
   s.albedo = albedo.rgb;
   s.alpha = 1.0;
   s.occlusion = albedo.a;
   s.metallic = mr.r;
   s.roughness = mr.g;
   s.unlit = mr.b > 0.5;
-  s.emissive = texelFetch(u_gbuffer_emissive, pixel, 0).rgb;
+  s.emissive = fetch_sample(u_gbuffer_emissive, pixel, i).rgb;
   return true;
 }
 #else
-layout(binding = 0) uniform sampler2D u_gbuffer_albedo;
-layout(binding = 1) uniform usampler2D u_gbuffer_packed;
+layout(binding = 0) uniform target2D u_gbuffer_albedo;
+layout(binding = 1) uniform utarget2D u_gbuffer_packed;
 
-bool read_gbuffer(ivec2 pixel, out Surface s) {
-  uvec4 words = texelFetch(u_gbuffer_packed, pixel, 0);
+bool read_gbuffer_sample(ivec2 pixel, int i, out Surface s) {
+  uvec4 words = fetch_sample(u_gbuffer_packed, pixel, i);
   if (words.w == 0u) return false;
-  vec4 albedo = texelFetch(u_gbuffer_albedo, pixel, 0);
+  vec4 albedo = fetch_sample(u_gbuffer_albedo, pixel, i);
   vec4 mr = unpackUnorm4x8(words.z);
   float distance = uintBitsToFloat(words.w);
   s.position = u_camera_position.xyz + view_ray(pixel) * abs(distance);
@@ -163,4 +166,28 @@ bool read_gbuffer(ivec2 pixel, out Surface s) {
   return true;
 }
 #endif
+bool read_gbuffer(ivec2 pixel, out Surface s) { return read_gbuffer_sample(pixel, kThisSample, s); }
+
+// Whether shading sample 0 for the whole pixel would differ from shading each
+// sample: some samples hold other surfaces (a silhouette, a crease, a material
+// boundary) or none. Samples of one triangle are identical (the geometry pass
+// runs once per pixel), so only pixels a triangle edge crosses are tested.
+bool gbuffer_samples_differ(ivec2 pixel) {
+  Surface first;
+  bool covered = read_gbuffer_sample(pixel, 0, first);
+  for (int i = 1; i < kSamples; ++i) {
+    Surface other;
+    if (read_gbuffer_sample(pixel, i, other) != covered) return true;
+    if (!covered) continue;
+    float range = length(first.position - u_camera_position.xyz);
+    if (distance(first.position, other.position) > 1e-3 * range || dot(first.normal, other.normal) < 0.9995 ||
+        any(greaterThan(abs(first.albedo - other.albedo), vec3(0.5 / 255.0))) ||
+        any(greaterThan(abs(first.emissive - other.emissive), vec3(1e-3) * max(first.emissive, 1.0))) ||
+        abs(first.metallic - other.metallic) > 0.5 / 255.0 || abs(first.roughness - other.roughness) > 0.5 / 255.0 ||
+        abs(first.occlusion - other.occlusion) > 0.5 / 255.0 || first.unlit != other.unlit) {
+      return true;
+    }
+  }
+  return false;
+}
 #endif

@@ -7,8 +7,9 @@
 #include "common/frame.glsl"
 #include "common/colour_map.glsl"
 #include "common/clusters.glsl"
+#include "common/msaa.glsl"
 
-layout(binding = 5) uniform sampler2D u_depth;
+layout(binding = 5) uniform target2D u_depth;  // with MSAA: sample 0
 uniform uvec2 u_tiles;
 uniform uint u_tile_size;
 uniform float u_scale_max;
@@ -17,7 +18,7 @@ uniform uint u_overflow_capacity;  // the list's size before it grew this frame;
 layout(location = 0) out vec4 out_color;
 
 void main() {
-  float depth = texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r;
+  float depth = fetch_sample(u_depth, ivec2(gl_FragCoord.xy), 0).r;
   float view_depth = view_depth_from_depth(depth);
 #ifdef DEPTH_SLICES
   // Alternate bright and dim slices so that neighbours stay apart.

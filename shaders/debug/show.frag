@@ -4,13 +4,14 @@
 // the target: 0 position, 1 normal, 2 albedo, 3 metallic-roughness, 4 emissive,
 // 5 depth; in the light pre-pass's thin layout albedo and emissive are grey.
 // The overlay's thumbnails draw it into a smaller viewport: output
-// pixels map to G-buffer pixels through the thumbnail origin and scale.
+// pixels map to G-buffer pixels through the thumbnail origin and scale. With
+// MSAA they show sample 0.
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
 #include "common/tonemap.glsl"
 
-layout(binding = 5) uniform sampler2D u_depth;
+layout(binding = 5) uniform target2D u_depth;
 uniform vec3 u_bounds_min;
 uniform vec3 u_bounds_max;
 uniform vec2 u_thumbnail_origin;
@@ -25,7 +26,7 @@ void main() {
   vec3 color = vec3(0.0);
 #if DEBUG_VIEW == 5
   // Linear view depth, near white, far black, on a log scale.
-  float d = texelFetch(u_depth, pixel, 0).r;
+  float d = fetch_sample(u_depth, pixel, 0).r;
   color = vec3(d > kDepthFar ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
 #else
   if (covered) {

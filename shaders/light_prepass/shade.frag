@@ -3,15 +3,17 @@
 // visible fragment's material and multiplies the light buffer's sums at its
 // pixel by it (brdf_combine), plus ambient and emission; writes the lit HDR
 // image (and, split, the diffuse and specular sums). Depth is already there:
-// only the visible fragment passes the test.
+// only the visible fragment passes the test. With MSAA, PER_SAMPLE builds the
+// edge pixels' variant, which reads the light of each sample.
 #include "common/frame.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/lighting_targets.glsl"
+#include "common/msaa.glsl"
 
-layout(binding = 5) uniform sampler2D u_light_diffuse;
-layout(binding = 6) uniform sampler2D u_light_specular_f0;
-layout(binding = 7) uniform sampler2D u_light_specular;
+layout(binding = 5) uniform target2D u_light_diffuse;
+layout(binding = 6) uniform target2D u_light_specular_f0;
+layout(binding = 7) uniform target2D u_light_specular;
 
 in vec3 v_position;
 in vec3 v_normal;
@@ -27,8 +29,8 @@ void main() {
   if (!s.unlit) {
     ivec2 pixel = ivec2(gl_FragCoord.xy);
     vec3 diffuse, specular;
-    brdf_combine(texelFetch(u_light_diffuse, pixel, 0).rgb, texelFetch(u_light_specular_f0, pixel, 0).rgb,
-                 texelFetch(u_light_specular, pixel, 0).rgb, s.albedo, s.metallic, diffuse, specular);
+    brdf_combine(fetch_sample(u_light_diffuse, pixel, kThisSample).rgb, fetch_sample(u_light_specular_f0, pixel, kThisSample).rgb,
+                 fetch_sample(u_light_specular, pixel, kThisSample).rgb, s.albedo, s.metallic, diffuse, specular);
     sum = light_sum(diffuse, specular);
   }
   write_lighting(shade_unlit_terms(s, u_ambient.rgb), sum);

@@ -6,16 +6,18 @@
 // tile, and the indices written: no cap per tile. With BLENDED it fills the list
 // for blended surfaces instead: a pixel's bounds run from the nearest blended
 // surface in front of its opaque one (u_blended_depth) back to that opaque one.
+// With MSAA the bounds take in every sample.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 #include "common/light_lists.glsl"
+#include "common/msaa.glsl"
 
-layout(binding = 0) uniform sampler2D u_depth;
+layout(binding = 0) uniform target2D u_depth;
 #ifdef BLENDED
 // The opaque depth with the blended surfaces drawn over it.
-layout(binding = 1) uniform sampler2D u_blended_depth;
+layout(binding = 1) uniform target2D u_blended_depth;
 #endif
 uniform uvec2 u_tiles;
 uniform uint u_list_capacity;
@@ -64,10 +66,10 @@ void main() {
   }
   barrier();
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (all(lessThan(pixel, ivec2(u_viewport_size)))) {
-    float depth = texelFetch(u_depth, pixel, 0).r;
+  for (int i = 0; i < kSamples && all(lessThan(pixel, ivec2(u_viewport_size))); ++i) {
+    float depth = fetch_sample(u_depth, pixel, i).r;
 #ifdef BLENDED
-    float front = texelFetch(u_blended_depth, pixel, 0).r;
+    float front = fetch_sample(u_blended_depth, pixel, i).r;
     if (front > depth) {
       // Glass over the sky reaches to the far plane.
       atomicMin(s_min_depth, floatBitsToUint(view_depth_from_depth(front)));

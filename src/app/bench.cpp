@@ -223,6 +223,7 @@ std::string bench_markdown(const BenchResult& result) {
      << " warm-up, shading " << o.shading;
   if (o.light_radius) md << ", light radius " << fixed(*o.light_radius, 2) << " m";
   if (o.constant_density) md << ", constant density";
+  if (o.technique_options.msaa > 1) md << ", MSAA " << o.technique_options.msaa << "x";
   md << ".\nRenderer: " << result.renderer << "; pass timing: " << result.timing_method
      << ". Frames per second from the median frame time (median over views).\n\n";
   md << "| lights |";

@@ -78,12 +78,16 @@ const std::vector<OptionSpec>& option_table() {
       {"--split-lighting", "", kDrawing,
        "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
        "diffuse-light and specular-light views turn this on while shown)"},
+      {"--msaa", "N", kDrawing,
+       "multisample anti-aliasing with N = 1 (off, the default), 2, 4 or 8 samples per pixel, up to what the driver "
+       "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges)"},
       {"--debug-view", "V", kWindow | kRender,
        "show position, normal, albedo, metallic-roughness, emissive, depth, light-volumes (outlines), heatmap (lights "
        "evaluated per pixel in the current mode), light-lists (lights in each pixel's tile or cluster list), "
        "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
        "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
-       "light-buffer (light-prepass: light summed before materials)"},
+       "light-buffer (light-prepass: light summed before materials), msaa-edges (with --msaa: the pixels the deferred "
+       "modes shade per sample, in red)"},
       {"--lights", "N", kWindow | kRender | kInfo | kCompare,
        "number of lights, 0.." + std::to_string(kMaxLights) +
            " (built-in default: 160); for a scene its listed lights come first, then generated ones; for a glTF "
@@ -305,6 +309,10 @@ void apply_option(std::string_view name, std::string_view value, CliOptions& opt
   } else if (name == "--gbuffer") {
     options.technique_options.gbuffer_layout =
         parse_choice<lighting::GBufferLayout>(value, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
+  } else if (name == "--msaa") {
+    const int samples = parse_number<int>("--msaa", value, 1, 8);
+    if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
+    options.technique_options.msaa = samples;
   } else if (name == "--debug-view") {
     options.debug_view = std::string(value);
     if (lighting::debug_view_index(options.debug_view) < 0) {

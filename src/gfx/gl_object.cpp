@@ -130,7 +130,12 @@ Query create_query(GLenum target) {
 }
 Sampler create_sampler() { return create_one<GlKind::Sampler>(glCreateSamplers); }
 
-Texture create_render_target(GLenum format, int width, int height) {
+Texture create_render_target(GLenum format, int width, int height, int samples) {
+  if (samples > 1) {
+    Texture texture = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
+    glTextureStorage2DMultisample(texture.id(), samples, format, width, height, GL_TRUE);
+    return texture;
+  }
   Texture texture = create_texture(GL_TEXTURE_2D);
   glTextureStorage2D(texture.id(), 1, format, width, height);
   glTextureParameteri(texture.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);

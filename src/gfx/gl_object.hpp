@@ -83,7 +83,9 @@ using Sampler = GlObject<GlKind::Sampler>;
 
 // A one-level 2D texture to render into and read back texel by texel: nearest
 // filtering, edges clamped.
-[[nodiscard]] Texture create_render_target(GLenum format, int width, int height);
+// With samples > 1 a GL_TEXTURE_2D_MULTISAMPLE texture (fixed sample locations:
+// every target of a framebuffer must agree).
+[[nodiscard]] Texture create_render_target(GLenum format, int width, int height, int samples = 1);
 // Throws std::runtime_error "render target WHAT is incomplete (status 0x...)"
 // when the framebuffer cannot be drawn to.
 void require_complete(GLuint framebuffer, std::string_view what);

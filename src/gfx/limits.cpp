@@ -30,6 +30,15 @@ glm::ivec2 max_render_size() {
   return {std::min({viewport[0], width, renderbuffer, texture}), std::min({viewport[1], height, renderbuffer, texture})};
 }
 
+int max_msaa_samples() {
+  GLint samples = 0, color = 0, depth = 0, integer = 0;
+  glGetIntegerv(GL_MAX_SAMPLES, &samples);
+  glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &color);
+  glGetIntegerv(GL_MAX_DEPTH_TEXTURE_SAMPLES, &depth);
+  glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &integer);
+  return std::max(1, std::min({samples, color, depth, integer}));
+}
+
 bool is_software_renderer() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string_view name = renderer ? renderer : "";

@@ -25,6 +25,10 @@ class ResourceLimitError : public std::runtime_error {
 // renderbuffer and texture limits, per axis.
 [[nodiscard]] glm::ivec2 max_render_size();
 
+// The most MSAA samples every render target of a frame may have: the smallest of
+// GL_MAX_SAMPLES, GL_MAX_COLOR_TEXTURE_SAMPLES, GL_MAX_DEPTH_TEXTURE_SAMPLES and
+// GL_MAX_INTEGER_SAMPLES (the compact G-buffer's packed target is integer).
+[[nodiscard]] int max_msaa_samples();
 // Mesa's software rasterisers (llvmpipe, lavapipe, softpipe).
 [[nodiscard]] bool is_software_renderer();
 // The most loop iterations one shader invocation may run, all its loops

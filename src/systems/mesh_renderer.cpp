@@ -19,7 +19,7 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
-      tonemap_(gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
+      tonemap_(&gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
       loop_limit_(gfx::shader_loop_limit()) {
   glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
@@ -34,9 +34,16 @@ void MeshRenderer::resize(glm::ivec2 size) {
                                   ": the smallest of GL_MAX_VIEWPORT_DIMS, GL_MAX_FRAMEBUFFER_WIDTH/HEIGHT, "
                                   "GL_MAX_RENDERBUFFER_SIZE and GL_MAX_TEXTURE_SIZE); use a smaller --size");
   }
+  const int samples = technique_options_.msaa;
+  if (samples > gfx::max_msaa_samples()) {
+    throw gfx::ResourceLimitError("MSAA with " + std::to_string(samples) + " samples: this context allows at most " +
+                                  std::to_string(gfx::max_msaa_samples()) +
+                                  " (the smallest of GL_MAX_SAMPLES and the colour, depth and integer texture sample limits); "
+                                  "use a smaller --msaa");
+  }
   size_ = size;
-  hdr_color_ = gfx::create_render_target(GL_RGBA16F, size.x, size.y);
-  depth_stencil_ = gfx::create_render_target(gfx::kDepthStencilFormat, size.x, size.y);
+  hdr_color_ = gfx::create_render_target(GL_RGBA16F, size.x, size.y, samples);
+  depth_stencil_ = gfx::create_render_target(gfx::kDepthStencilFormat, size.x, size.y, samples);
   hdr_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
@@ -57,8 +64,8 @@ void MeshRenderer::update_split_targets() {
     specular_light_ = {};
     return;
   }
-  diffuse_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y);
-  specular_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y);
+  diffuse_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
+  specular_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
   lighting_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
   glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT1, diffuse_light_.id(), 0);
@@ -75,6 +82,7 @@ lighting::FrameTargets MeshRenderer::targets() const {
           hdr_color_.id(),
           depth_stencil_.id(),
           size_,
+          technique_options_.msaa,
           split ? lighting_framebuffer_.id() : hdr_framebuffer_.id(),
           diffuse_light_.id(),
           specular_light_.id()};
@@ -141,7 +149,6 @@ void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
-  if (size != size_) resize(size);
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
   const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
@@ -160,9 +167,13 @@ void MeshRenderer::render(ecs::Registry& registry) {
     if (counting_fragments) globals.push_back({"COUNT_FRAGMENTS"});
     if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
     if (split_lighting) globals.push_back({"SPLIT_LIGHTING"});
+    if (settings.technique_options.msaa > 1) globals.push_back({"MSAA_SAMPLES", std::to_string(settings.technique_options.msaa)});
     gpu_.shaders().set_global_defines(std::move(globals));
+    tonemap_ = &gpu_.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"});
     shading_ = settings.shading;
     counting_ = counting;
+    // Every target is remade with the new sample count.
+    if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
     technique_options_ = settings.technique_options;
     if (split_lighting != split_lighting_) {
       split_lighting_ = split_lighting;
@@ -172,6 +183,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
     technique_.reset();
     debug_views_.reset();
   }
+  if (size != size_) resize(size);
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
 
   const auto& view = registry.resource<ViewState>();
@@ -240,7 +252,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_CULL_FACE);
-    tonemap_.use();
+    tonemap_->use();
     glBindTextureUnit(0, hdr_color_.id());
     glBindVertexArray(empty_vertex_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -285,12 +297,25 @@ assets::Image MeshRenderer::read_output() const {
   return image;
 }
 
+gfx::Texture MeshRenderer::resolve(GLuint texture, GLenum format, bool depth) const {
+  gfx::Texture resolved = gfx::create_render_target(format, size_.x, size_.y);
+  const gfx::Framebuffer from = gfx::create_framebuffer(), to = gfx::create_framebuffer();
+  const GLenum attachment = depth ? GL_DEPTH_STENCIL_ATTACHMENT : GL_COLOR_ATTACHMENT0;
+  glNamedFramebufferTexture(from.id(), attachment, texture, 0);
+  glNamedFramebufferTexture(to.id(), attachment, resolved.id(), 0);
+  glBlitNamedFramebuffer(from.id(), to.id(), 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
+                         depth ? GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  return resolved;
+}
+
 std::vector<float> MeshRenderer::read_view_depth() const {
   const std::size_t count = static_cast<std::size_t>(size_.x) * size_.y;
   std::vector<float> bottom_up(count);
   if (count == 0) return bottom_up;
+  const bool multisampled = technique_options_.msaa > 1;
+  const gfx::Texture resolved = multisampled ? resolve(depth_stencil_.id(), gfx::kDepthStencilFormat, true) : gfx::Texture{};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(depth_stencil_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
+  glGetTextureImage(multisampled ? resolved.id() : depth_stencil_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
                     bottom_up.data());
   std::vector<float> top_down(count);
   for (int y = 0; y < size_.y; ++y) {
@@ -309,8 +334,10 @@ std::vector<glm::vec4> MeshRenderer::read_hdr(HdrTarget target) const {
                                                              : specular_light_.id();
   if (texture == 0) return {};
   std::vector<glm::vec4> texels(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
+  const bool multisampled = technique_options_.msaa > 1;
+  const gfx::Texture resolved = multisampled ? resolve(texture, GL_RGBA16F, false) : gfx::Texture{};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
+  glGetTextureImage(multisampled ? resolved.id() : texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
   return texels;
 }
 

@@ -48,7 +48,8 @@ class MeshRenderer {
   // The last frame's display image (sRGB, top row first).
   [[nodiscard]] assets::Image read_output() const;
   // The last frame's view depth (metres along the view axis) per pixel, top
-  // row first; infinity where no geometry was drawn.
+  // row first; infinity where no geometry was drawn. With MSAA the targets
+  // below are read resolved (colour: samples averaged; depth: one sample).
   [[nodiscard]] std::vector<float> read_view_depth() const;
   // The last frame's linear HDR colour, or with the split on its diffuse or
   // specular light sum, as RGBA floats in GL's row order (bottom row first);
@@ -73,6 +74,8 @@ class MeshRenderer {
   void recreate_technique();
 
  private:
+  // A single-sample copy of a multisampled target, for reading back.
+  [[nodiscard]] gfx::Texture resolve(GLuint texture, GLenum format, bool depth) const;
   void resize(glm::ivec2 size);
   // Makes the diffuse and specular light targets and their framebuffer while
   // split_lighting_ is on, drops them while it is off.
@@ -115,7 +118,7 @@ class MeshRenderer {
   StreamBuffer instances_, materials_, commands_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
-  gfx::ShaderProgram& tonemap_;
+  gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
   FrameStats stats_;
   gfx::PassTimer timer_;
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once

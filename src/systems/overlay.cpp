@@ -12,6 +12,7 @@
 #include "components/input.hpp"
 #include "components/light.hpp"
 #include "gfx/gl_object.hpp"
+#include "gfx/limits.hpp"
 #include "systems/light_radius.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
@@ -165,6 +166,13 @@ void Overlay::controls(ecs::Registry& registry) {
   auto& slicing = settings.technique_options.z_slicing;
   if (combo("z slicing", std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]), slicings, chosen)) {
     slicing = static_cast<lighting::ZSlicing>(std::find(slicings.begin(), slicings.end(), chosen) - slicings.begin());
+  }
+  // The sample counts this context can hold: a larger one is not offered.
+  std::vector<std::string> sample_counts{"off"};
+  for (int samples = 2; samples <= std::min(8, gfx::max_msaa_samples()); samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
+  int& msaa = settings.technique_options.msaa;
+  if (combo("MSAA", msaa > 1 ? std::to_string(msaa) + "x" : "off", sample_counts, chosen)) {
+    msaa = chosen == "off" ? 1 : std::stoi(chosen);
   }
   // Costs two more target writes per pixel in the deferred modes; the thumbnails show the sums.
   ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);

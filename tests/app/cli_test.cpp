@@ -112,7 +112,8 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--max-texture-size", "64"}, {"--view", "2"},                 {"--camera", "0,1,2,0,0"},
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},
       {"--warmup", "1"},            {"--modes", "forward,deferred"}, {"--views", "1,2"},
-      {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"}};
+      {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
+      {"--msaa", "2"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench}) {
     std::istringstream help(help_text(command));
     int options = 0;

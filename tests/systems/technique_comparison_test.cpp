@@ -8,6 +8,7 @@
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/gl_object.hpp"
+#include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
 #include "systems/lighting/technique.hpp"
@@ -20,28 +21,10 @@ constexpr glm::ivec2 kSize{160, 90};
 class TechniqueMatchesForward : public testing::GlTest,
                                 public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
 
-// `mode` against forward in `world` from each stored view; each image is kept
-// as compare_NAME_viewK.png.
-void expect_forward_picture_from_every_view(World& world, const std::string& mode, const std::string& name) {
-  for (int view = 1; view <= 5; ++view) {
-    world.set_view(view);
-    world.set_mode("forward");
-    world.frame(0.0);
-    const assets::Image reference = world.renderer().read_output();
-    world.set_mode(mode);
-    world.frame(0.0);
-    const assets::Image image = world.renderer().read_output();
-    assets::write_png("compare_" + name + "_view" + std::to_string(view) + ".png", image);
-    const double psnr = assets::psnr(reference, image);
-    EXPECT_GE(psnr, 40.0) << name << " view " << view;
-    EXPECT_LE(assets::max_channel_difference(reference, image), 8) << name << " view " << view;
-  }
-}
-
 TEST_P(TechniqueMatchesForward, FromEveryView) {
   const auto& [mode, layout] = GetParam();
   World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", testing::with_layout(layout)});
-  expect_forward_picture_from_every_view(world, mode, testing::test_name(mode, layout));
+  testing::expect_forward_picture_from_every_view(world, mode, testing::test_name(mode, layout));
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward,
@@ -58,7 +41,7 @@ class TechniqueMatchesForwardShaded : public testing::GlTest,
 TEST_P(TechniqueMatchesForwardShaded, FromEveryView) {
   const auto& [mode, model] = GetParam();
   World world({"atrium", std::nullopt, "forward", 1, kSize, model});
-  expect_forward_picture_from_every_view(world, mode, mode + "_" + model);
+  testing::expect_forward_picture_from_every_view(world, mode, mode + "_" + model);
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForwardShaded,

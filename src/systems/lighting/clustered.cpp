@@ -22,10 +22,10 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
-      shading_(deferred ? gpu.shaders().get({"post/fullscreen.vert", "clustered/lighting.frag"})
-                        : gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
+      shading_(deferred ? SampleRatePrograms(gpu.shaders(), {"post/fullscreen.vert", "clustered/lighting.frag"}, {}, options.msaa)
+                        : SampleRatePrograms(gpu.shaders(), {"common/mesh.vert", "clustered/shade.frag"}, {}, 1)),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
-      gbuffer_(options.gbuffer_layout) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
 void ClusteredTechnique::resize(const FrameTargets& targets) {
   if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);
@@ -91,7 +91,7 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
       glEnable(GL_DEPTH_TEST);
       glDepthFunc(gfx::kDepthCloserOrEqual);
       glDepthMask(GL_FALSE);
-      shading_.use();
+      shading_.per_pixel().use();
       draw_items(frame.draws.opaque);
       glDepthMask(GL_TRUE);
       glDepthFunc(gfx::kDepthCloser);

@@ -45,7 +45,7 @@ class ClusteredTechnique final : public LightingTechnique {
   gfx::ShaderProgram& mark_blended_;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
   gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
-  gfx::ShaderProgram& shading_;   // deferred: full-screen lighting; forward+: forward shading
+  SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)
   gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
   GBuffer gbuffer_;
 };

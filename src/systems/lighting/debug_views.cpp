@@ -19,7 +19,7 @@ std::string debug_view_names() {
 }
 
 DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
-    : gpu_(gpu), gbuffer_(options.gbuffer_layout), cluster_dims_(options.cluster_grid), z_slicing_(options.z_slicing) {}
+    : gpu_(gpu), gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa), cluster_dims_(options.cluster_grid), z_slicing_(options.z_slicing) {}
 
 void DebugViews::resize(const FrameTargets& targets) {
   size_ = targets.size;
@@ -82,7 +82,7 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
   // Every view is a full-screen pass into the output. The G-buffer, depth and
   // outline views show the G-buffer the mode filled this frame, in its layout;
   // in a mode without one they first fill their own (and the depth buffer).
-  const bool reads_gbuffer = view < kHeatmapView || view == kOutlineView;
+  const bool reads_gbuffer = view < kHeatmapView || view == kOutlineView || view == kMsaaEdgeView;
   const GBuffer* gbuffer = technique.gbuffer();
   if (reads_gbuffer && !gbuffer) {
     gbuffer_.draw_geometry(gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame);
@@ -121,6 +121,15 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
     gbuffer->bind_textures();
     gpu_.shaders().get({"post/fullscreen.vert", "debug/outlines.frag"}, gbuffer->defines()).use();
     fullscreen_.draw();
+    return;
+  }
+  if (view == kMsaaEdgeView) {
+    gbuffer->bind_textures();
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    gpu_.shaders().get({"post/fullscreen.vert", "debug/msaa_edges.frag"}, gbuffer->defines()).use();
+    fullscreen_.draw();
+    glDisable(GL_BLEND);
     return;
   }
   show_gbuffer(view, *gbuffer, targets, bounds_min, bounds_max, glm::vec2(0.0f), glm::vec2(1.0f));

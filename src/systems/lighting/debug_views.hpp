@@ -4,7 +4,8 @@
 // or cluster, the cluster depth slices, the fragments the mode's geometry
 // passes rasterise per pixel, the diffuse and specular light sums a deferred
 // mode's lighting passes wrote apart (SPLIT_LIGHTING while shown), and the light
-// pre-pass's light buffer (LightingTechnique::light_buffer). The G-buffer views
+// pre-pass's light buffer (LightingTechnique::light_buffer), and with MSAA the
+// edge pixels the deferred modes shade per sample. The G-buffer views
 // show the mode's own G-buffer in its layout (the light pre-pass's thin one
 // included), or in a forward mode run a geometry pass of their own, so they work
 // whatever the mode; the heatmap and the fragments view count what the mode's
@@ -25,11 +26,13 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 14> kDebugViews{
-    "position",     "normal",    "albedo",        "metallic-roughness", "emissive",      "depth",         "light-volumes",
-    "heatmap",      "light-lists", "depth-slices", "fragments",         "diffuse-light", "specular-light", "light-buffer"};
+inline constexpr std::array<std::string_view, 15> kDebugViews{
+    "position",     "normal",      "albedo",       "metallic-roughness", "emissive",      "depth",
+    "light-volumes", "heatmap",    "light-lists",  "depth-slices",       "fragments",     "diffuse-light",
+    "specular-light", "light-buffer", "msaa-edges"};
 inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
-                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12, kLightBufferView = 13;
+                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12, kLightBufferView = 13,
+                     kMsaaEdgeView = 14;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);

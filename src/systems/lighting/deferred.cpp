@@ -4,11 +4,11 @@ namespace atrium::lighting {
 
 DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
-      lighting_(gpu.shaders().get({"post/fullscreen.vert", "deferred/lighting.frag"},
-                                  cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}}
-                                                 : std::vector<gfx::ShaderDefine>{})),
+      lighting_(gpu.shaders(), {"post/fullscreen.vert", "deferred/lighting.frag"},
+                cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}} : std::vector<gfx::ShaderDefine>{},
+                options.msaa),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
-      gbuffer_(options.gbuffer_layout) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
 void DeferredTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
 

@@ -20,7 +20,7 @@ class DeferredTechnique final : public LightingTechnique {
 
  private:
   gfx::ShaderProgram& geometry_;
-  gfx::ShaderProgram& lighting_;
+  SampleRatePrograms lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
 };

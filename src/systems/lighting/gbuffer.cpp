@@ -13,6 +13,10 @@ std::span<const GBuffer::Target> GBuffer::targets(GBufferLayout layout) {
   return kFullLayout;
 }
 
+GBuffer::GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples) : layout_(layout), samples_(samples) {
+  if (samples_ > 1) edges_ = &shaders.get({"post/fullscreen.vert", "deferred/edges.frag"}, defines());
+}
+
 std::vector<gfx::ShaderDefine> GBuffer::defines() const {
   if (layout_ == GBufferLayout::Thin) return {{"THIN_GBUFFER"}};
   return {};
@@ -24,7 +28,7 @@ void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
   const auto layout = targets();
   std::array<GLenum, kMaxTargets> attachments{};
   for (std::size_t i = 0; i < layout.size(); ++i) {
-    textures_[i] = gfx::create_render_target(layout[i].format, size.x, size.y);
+    textures_[i] = gfx::create_render_target(layout[i].format, size.x, size.y, samples_);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(framebuffer_.id(), attachments[i], textures_[i].id(), 0);
   }
@@ -58,6 +62,27 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
   program.use();
   draw_items(frame.draws.opaque);
   glDisable(GL_FRAMEBUFFER_SRGB);
+  if (edges_) mark_edges();
+}
+
+void GBuffer::mark_edges() const {
+  // A full-screen triangle covers every sample, so a pixel the shader keeps gets
+  // the bit in all of its samples.
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glEnable(GL_STENCIL_TEST);
+  glStencilMask(kEdgeStencilBit);
+  glStencilFunc(GL_ALWAYS, kEdgeStencilBit, kEdgeStencilBit);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  bind_textures();
+  edges_->use();
+  fullscreen_.draw();
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilMask(0xff);
+  glDisable(GL_STENCIL_TEST);
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glEnable(GL_DEPTH_TEST);
 }
 
 void GBuffer::bind_textures() const {
@@ -67,14 +92,16 @@ void GBuffer::bind_textures() const {
   glBindTextures(0, static_cast<GLsizei>(count), names.data());
 }
 
-void GBuffer::draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const {
+void GBuffer::draw_fullscreen(const SampleRatePrograms& programs, const FrameTargets& targets) const {
   glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
   bind_textures();
-  program.use();
-  fullscreen_.draw();
+  programs.draw([&](gfx::ShaderProgram& program) {
+    program.use();
+    fullscreen_.draw();
+  });
 }
 
 std::size_t GBuffer::bytes_per_pixel(GBufferLayout layout) {

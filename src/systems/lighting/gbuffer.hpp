@@ -13,7 +13,9 @@
 #include <glm/glm.hpp>
 
 #include "gfx/gl_object.hpp"
+#include "gfx/shader_library.hpp"
 #include "gfx/shader_program.hpp"
+#include "systems/lighting/sample_rate.hpp"
 #include "systems/lighting/technique.hpp"
 #include "systems/lighting/technique_options.hpp"
 
@@ -43,18 +45,21 @@ class GBuffer {
   // distance to the camera.
   static constexpr std::array<Target, 2> kThinLayout{{{"normal-roughness", GL_RGBA16, 8}, {"distance", GL_R32F, 4}}};
 
-  explicit GBuffer(GBufferLayout layout = GBufferLayout::Full) : layout_(layout) {}
+  // `samples` > 1: multisampled targets (the renderer's --msaa), edges marked
+  // after the geometry pass.
+  GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples);
 
   // (Re)allocates the colour targets; depth and stencil are the renderer's.
   void resize(glm::ivec2 size, GLuint depth_stencil);
 
-  // Fills the G-buffer with the opaque and masked draw items.
+  // Fills the G-buffer with the opaque and masked draw items; with MSAA then
+  // sets kEdgeStencilBit on the pixels whose samples differ.
   void draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame);
   // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures() const;
-  // A full-screen pass with `program` reading the G-buffer into the lighting
-  // targets (FrameTargets::lighting_framebuffer).
-  void draw_fullscreen(gfx::ShaderProgram& program, const FrameTargets& targets) const;
+  // A full-screen pass with `programs` reading the G-buffer into the lighting
+  // targets (FrameTargets::lighting_framebuffer), per pixel or per sample.
+  void draw_fullscreen(const SampleRatePrograms& programs, const FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
   // The defines a program that writes or reads this G-buffer is built with on
@@ -66,7 +71,11 @@ class GBuffer {
   [[nodiscard]] static std::span<const Target> targets(GBufferLayout layout);
 
  private:
+  void mark_edges() const;
+
   GBufferLayout layout_;
+  int samples_;
+  gfx::ShaderProgram* edges_ = nullptr;  // with MSAA: shaders/deferred/edges.frag
   glm::ivec2 size_{0};
   std::array<gfx::Texture, kMaxTargets> textures_;
   gfx::Framebuffer framebuffer_;

@@ -12,15 +12,18 @@ std::vector<gfx::ShaderDefine> with(std::vector<gfx::ShaderDefine> defines, std:
 
 }  // namespace
 
-LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions&)
-    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}, gbuffer_.defines())),
-      directional_(gpu.shaders().get({"post/fullscreen.vert", "light_prepass/accumulate.frag"},
-                                     with(gbuffer_.defines(), {{"DIRECTIONAL_ONLY"}}))),
-      volumes_(gpu.shaders().get({"common/light_volume.vert", "light_prepass/accumulate.frag"}, gbuffer_.defines())),
-      material_(gpu.shaders().get({"common/mesh.vert", "light_prepass/shade.frag"})),
+LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
+    : gbuffer_(gpu.shaders(), GBufferLayout::Thin, options.msaa),
+      geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}, gbuffer_.defines())),
+      directional_(gpu.shaders(), {"post/fullscreen.vert", "light_prepass/accumulate.frag"},
+                   with(gbuffer_.defines(), {{"DIRECTIONAL_ONLY"}}), options.msaa),
+      volumes_(gpu.shaders(), {"common/light_volume.vert", "light_prepass/accumulate.frag"}, gbuffer_.defines(), options.msaa),
+      material_(gpu.shaders(), {"common/mesh.vert", "light_prepass/shade.frag"}, {}, options.msaa),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {
-  sphere_.prepare(volumes_);
-  volumes_.set("u_instanced", 1);
+  volumes_.each([&](gfx::ShaderProgram& program) {
+    sphere_.prepare(program);
+    program.set("u_instanced", 1);
+  });
 }
 
 void LightPrepassTechnique::resize(const FrameTargets& targets) {
@@ -28,7 +31,7 @@ void LightPrepassTechnique::resize(const FrameTargets& targets) {
   light_framebuffer_ = gfx::create_framebuffer();
   std::array<GLenum, kLightBufferTargets.size()> attachments{};
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) {
-    light_buffer_[i] = gfx::create_render_target(kLightBufferFormat, targets.size.x, targets.size.y);
+    light_buffer_[i] = gfx::create_render_target(kLightBufferFormat, targets.size.x, targets.size.y, targets.samples);
     attachments[i] = GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i);
     glNamedFramebufferTexture(light_framebuffer_.id(), attachments[i], light_buffer_[i].id(), 0);
   }
@@ -66,8 +69,10 @@ void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const F
   if (has_directional_light(frame.lights)) {
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_CULL_FACE);
-    directional_.use();
-    fullscreen_.draw();
+    directional_.draw([&](gfx::ShaderProgram& program) {
+      program.use();
+      fullscreen_.draw();
+    });
   }
   if (!frame.lights.empty()) {
     // As light-volumes-instanced: every sphere's back faces at or behind the
@@ -78,8 +83,10 @@ void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const F
     glDepthFunc(gfx::kDepthFartherOrEqual);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    volumes_.use();
-    sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
+    volumes_.draw([&](gfx::ShaderProgram& program) {
+      program.use();
+      sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
+    });
     glBindVertexArray(0);
     glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);
@@ -102,8 +109,10 @@ void LightPrepassTechnique::shade_materials(const FrameContext& frame, const Fra
   glDisable(GL_BLEND);
   // Units 0-4 are the materials' textures.
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) glBindTextureUnit(5 + static_cast<GLuint>(i), light_buffer_[i].id());
-  material_.use();
-  draw_items(frame.draws.opaque);
+  material_.draw([&](gfx::ShaderProgram& program) {
+    program.use();
+    draw_items(frame.draws.opaque);
+  });
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);
 }

@@ -35,11 +35,13 @@ class LightPrepassTechnique final : public LightingTechnique {
   void accumulate_lights(const FrameContext& frame, const FrameTargets& targets);
   void shade_materials(const FrameContext& frame, const FrameTargets& targets);
 
-  GBuffer gbuffer_{GBufferLayout::Thin};  // first: the programs below are built with its defines
+  GBuffer gbuffer_;  // first: the programs below are built with its defines
   gfx::ShaderProgram& geometry_;
-  gfx::ShaderProgram& directional_;
-  gfx::ShaderProgram& volumes_;
-  gfx::ShaderProgram& material_;
+  SampleRatePrograms directional_;
+  SampleRatePrograms volumes_;
+  // With MSAA the material pass runs per sample on the edge pixels too: a
+  // fragment there must read the light of its own samples.
+  SampleRatePrograms material_;
   gfx::ShaderProgram& forward_;
   LightSphere sphere_;
   FullscreenTriangle fullscreen_;

@@ -7,13 +7,14 @@ namespace atrium::lighting {
 LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced)
     : instanced_(instanced),
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
-      unlit_(gpu.shaders().get({"post/fullscreen.vert", "light_volumes/unlit.frag"})),
-      directional_(gpu.shaders().get({"post/fullscreen.vert", "light_volumes/lighting.frag"}, {{"DIRECTIONAL_ONLY"}})),
+      unlit_(gpu.shaders(), {"post/fullscreen.vert", "light_volumes/unlit.frag"}, {}, options.msaa),
+      directional_(gpu.shaders(), {"post/fullscreen.vert", "light_volumes/lighting.frag"}, {{"DIRECTIONAL_ONLY"}}, options.msaa),
       stencil_(gpu.shaders().get({"common/light_volume.vert", "light_volumes/stencil.frag"})),
-      lighting_(gpu.shaders().get({"common/light_volume.vert", "light_volumes/lighting.frag"})),
+      lighting_(gpu.shaders(), {"common/light_volume.vert", "light_volumes/lighting.frag"}, {}, options.msaa),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
-      gbuffer_(options.gbuffer_layout) {
-  for (gfx::ShaderProgram* program : {&stencil_, &lighting_}) sphere_.prepare(*program);
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {
+  sphere_.prepare(stencil_);
+  lighting_.each([&](gfx::ShaderProgram& program) { sphere_.prepare(program); });
 }
 
 void LightVolumeTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
@@ -48,9 +49,12 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   draw_transparent(forward_, frame, targets);
 }
 
+// The volume count lives in the stencil bits below kEdgeStencilBit; with MSAA
+// that bit marks the G-buffer's edge pixels, which are lit per sample.
 void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) {
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
+  glStencilMask(kBelowEdgeBits);
   glClear(GL_STENCIL_BUFFER_BIT);
   for (std::size_t i = 0; i < frame.lights.size(); ++i) {
     if (frame.lights[i].color_kind.w == static_cast<float>(GpuLightKind::Directional)) continue;
@@ -68,18 +72,28 @@ void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) 
     stencil_.use();
     sphere_.draw();
     // Lighting: back faces cover the volume's whole footprint; shade where the
-    // stencil is non-zero and reset it there for the next light.
+    // count is non-zero and reset it there for the next light. Edge pixels
+    // first, per sample (stencil above the bare edge bit), so that the
+    // per-pixel draw after them finds their counts reset.
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    glStencilFunc(GL_NOTEQUAL, 0, 0xff);
     glStencilOp(GL_KEEP, GL_ZERO, GL_ZERO);
-    lighting_.set("u_light_index", index);
-    lighting_.set("u_instanced", 0);
-    lighting_.use();
+    lighting_.each([&](gfx::ShaderProgram& program) {
+      program.set("u_light_index", index);
+      program.set("u_instanced", 0);
+    });
+    if (gfx::ShaderProgram* per_sample = lighting_.per_sample()) {
+      glStencilFunc(GL_LESS, kEdgeStencilBit, 0xff);
+      per_sample->use();
+      sphere_.draw();
+    }
+    glStencilFunc(GL_NOTEQUAL, 0, kBelowEdgeBits);
+    lighting_.per_pixel().use();
     sphere_.draw();
   }
+  glStencilMask(0xff);
 }
 
 void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
@@ -91,9 +105,11 @@ void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
-  lighting_.set("u_instanced", 1);
-  lighting_.use();
-  sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
+  lighting_.draw([&](gfx::ShaderProgram& program) {
+    program.set("u_instanced", 1);
+    program.use();
+    sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
+  });
 }
 
 }  // namespace atrium::lighting

@@ -28,10 +28,10 @@ class LightVolumeTechnique final : public LightingTechnique {
 
   bool instanced_;
   gfx::ShaderProgram& geometry_;
-  gfx::ShaderProgram& unlit_;
-  gfx::ShaderProgram& directional_;
+  SampleRatePrograms unlit_;
+  SampleRatePrograms directional_;
   gfx::ShaderProgram& stencil_;
-  gfx::ShaderProgram& lighting_;
+  SampleRatePrograms lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
   LightSphere sphere_;

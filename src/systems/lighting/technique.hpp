@@ -42,6 +42,7 @@ struct FrameTargets {
   GLuint hdr_color = 0;        // RGBA16F
   GLuint depth_stencil = 0;    // DEPTH24_STENCIL8
   glm::ivec2 size{0};
+  int samples = 1;             // MSAA samples of every target here (TechniqueOptions::msaa)
   // Where deferred lighting passes draw (shaders/common/lighting_targets.glsl):
   // hdr_framebuffer, or with the split on (TechniqueOptions::split_lighting, the
   // diffuse-light and specular-light views) a framebuffer that adds the two

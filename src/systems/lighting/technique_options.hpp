@@ -1,5 +1,5 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
-// --active-clusters, --z-slicing, --gbuffer, --split-lighting). Plain data, kept apart from the GL-facing technique interface so
+// --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -39,6 +39,10 @@ struct TechniqueOptions {
   // Deferred modes also write the diffuse and the specular light sums to targets
   // of their own (FrameTargets::diffuse_light, specular_light).
   bool split_lighting = false;
+  // MSAA samples per pixel (--msaa); 1 is off. Every frame target is then
+  // multisampled and the deferred modes shade per sample on the edges their
+  // G-buffer pass marks (shaders/common/msaa.glsl, sample_rate.hpp).
+  int msaa = 1;
   bool operator==(const TechniqueOptions&) const = default;
 };
 

@@ -7,34 +7,40 @@ namespace atrium::lighting {
 TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       assign_(gpu.shaders().get({"tiled/assign.comp"})),
-      lighting_(gpu.shaders().get({"post/fullscreen.vert", "tiled/lighting.frag"})),
+      lighting_(gpu.shaders(), {"post/fullscreen.vert", "tiled/lighting.frag"}, {}, options.msaa),
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       assign_blended_(gpu.shaders().get({"tiled/assign.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
-      gbuffer_(options.gbuffer_layout) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
 void TiledTechnique::resize(const FrameTargets& targets) {
   gbuffer_.resize(targets.size, targets.depth_stencil);
   tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
   list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
   blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
-  for (gfx::ShaderProgram* program : {&assign_, &lighting_, &assign_blended_, &blended_}) program->set("u_tiles", tiles_);
-  for (gfx::ShaderProgram* program : {&assign_, &lighting_}) program->set("u_list_capacity", list_->capacity());
-  for (gfx::ShaderProgram* program : {&assign_blended_, &blended_}) program->set("u_list_capacity", blended_list_->capacity());
-  front_depth_ = gfx::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(front_depth_.id(), 1, gfx::kDepthStencilFormat, targets.size.x, targets.size.y);
+  for (gfx::ShaderProgram* program : {&assign_, &assign_blended_, &blended_}) program->set("u_tiles", tiles_);
+  lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
+  set_capacity(list_->capacity());
+  set_blended_capacity(blended_list_->capacity());
+  front_depth_ = gfx::create_render_target(gfx::kDepthStencilFormat, targets.size.x, targets.size.y, targets.samples);
   front_framebuffer_ = gfx::create_framebuffer();
   glNamedFramebufferTexture(front_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, front_depth_.id(), 0);
   glNamedFramebufferDrawBuffer(front_framebuffer_.id(), GL_NONE);
 }
 
-void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, gfx::ShaderProgram& shading) {
+void TiledTechnique::set_capacity(std::uint32_t capacity) {
+  assign_.set("u_list_capacity", capacity);
+  lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_list_capacity", capacity); });
+}
+
+void TiledTechnique::set_blended_capacity(std::uint32_t capacity) {
+  assign_blended_.set("u_list_capacity", capacity);
+  blended_.set("u_list_capacity", capacity);
+}
+
+void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, const std::function<void(std::uint32_t)>& set_capacity) {
   assign.use();
-  list.assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); },
-              [&](std::uint32_t capacity) {
-                assign.set("u_list_capacity", capacity);
-                shading.set("u_list_capacity", capacity);
-              });
+  list.assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
 }
 
 void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
@@ -42,7 +48,7 @@ void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targ
   {
     const auto pass = frame.timer.scope("light culling");
     glBindTextureUnit(0, targets.depth_stencil);
-    assign_lights(*list_, assign_, lighting_);
+    assign_lights(*list_, assign_, [&](std::uint32_t capacity) { set_capacity(capacity); });
   }
   {
     const auto pass = frame.timer.scope("lighting");
@@ -69,7 +75,7 @@ void TiledTechnique::draw_blended(const FrameContext& frame, const FrameTargets&
     draw_items(frame.draws.blended);
     glBindTextureUnit(0, targets.depth_stencil);
     glBindTextureUnit(1, front_depth_.id());
-    assign_lights(*blended_list_, assign_blended_, blended_);
+    assign_lights(*blended_list_, assign_blended_, [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
   }
   blended_list_->bind();
   draw_transparent(blended_, frame, targets);

@@ -6,6 +6,7 @@
 // front of each tile's opaque surfaces, and are shaded forward from them.
 #pragma once
 
+#include <functional>
 #include <memory>
 
 #include "systems/lighting/gbuffer.hpp"
@@ -33,14 +34,17 @@ class TiledTechnique final : public LightingTechnique {
 
  private:
   // Culls the lights into `list` with `assign`, keeping `shading`'s capacity in step.
-  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, gfx::ShaderProgram& shading);
+  void set_capacity(std::uint32_t capacity);
+  void set_blended_capacity(std::uint32_t capacity);
+  // `set_capacity` gives the programs that read the list its new capacity.
+  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, const std::function<void(std::uint32_t)>& set_capacity);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
   // their lists, then their forward shading from those lists.
   void draw_blended(const FrameContext& frame, const FrameTargets& targets);
 
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram& assign_;
-  gfx::ShaderProgram& lighting_;
+  SampleRatePrograms lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
   gfx::ShaderProgram& assign_blended_;
   gfx::ShaderProgram& blended_;         // forward shading from the blended lists

@@ -1,0 +1,130 @@
+// MSAA (--msaa, src/systems/lighting/sample_rate.hpp): every mode with MSAA
+// draws forward-with-MSAA's picture; MSAA brings every mode's picture closer to
+// a 16x supersampled one (edges smoothed, not just changed); the edges view
+// marks silhouettes and nothing without MSAA; a sample count the driver cannot
+// hold is refused naming the limit.
+#include <cmath>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
+#include "support/forward_comparison.hpp"
+#include "support/gl_test.hpp"
+#include "support/modes.hpp"
+#include "systems/lighting/technique.hpp"
+
+namespace atrium {
+namespace {
+
+constexpr glm::ivec2 kSize{160, 90};
+constexpr int kSamples = 4;  // llvmpipe's most
+
+lighting::TechniqueOptions with_msaa(int samples, lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
+  lighting::TechniqueOptions options = testing::with_layout(layout);
+  options.msaa = samples;
+  return options;
+}
+
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
+
+// `image` shrunk by `factor` per axis, averaging in linear light: a supersampled
+// reference of what the smaller image should look like.
+assets::Image downsample(const assets::Image& image, int factor) {
+  assets::Image small{image.width / factor, image.height / factor, {}};
+  small.rgba.resize(static_cast<std::size_t>(small.width) * small.height * 4);
+  for (int y = 0; y < small.height; ++y) {
+    for (int x = 0; x < small.width; ++x) {
+      for (int c = 0; c < 4; ++c) {
+        float sum = 0.0f;
+        for (int dy = 0; dy < factor; ++dy) {
+          for (int dx = 0; dx < factor; ++dx) {
+            const std::size_t i = (static_cast<std::size_t>(y * factor + dy) * image.width + (x * factor + dx)) * 4 + c;
+            sum += c == 3 ? image.rgba[i] / 255.0f : srgb_to_linear(image.rgba[i] / 255.0f);
+          }
+        }
+        const float mean = sum / static_cast<float>(factor * factor);
+        small.rgba[(static_cast<std::size_t>(y) * small.width + x) * 4 + c] =
+            static_cast<std::uint8_t>(std::lround(255.0f * (c == 3 ? mean : linear_to_srgb(mean))));
+      }
+    }
+  }
+  return small;
+}
+
+class MsaaMatchesForward : public testing::GlTest,
+                           public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
+
+TEST_P(MsaaMatchesForward, FromEveryView) {
+  const auto& [mode, layout] = GetParam();
+  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", with_msaa(kSamples, layout)});
+  // A few edge pixels may differ more: per-sample depth decides which surface
+  // a sample shows, and the passes differ in how they test it.
+  testing::expect_forward_picture_from_every_view(world, mode, "msaa_" + testing::test_name(mode, layout), 0.002);
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, MsaaMatchesForward,
+                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()),
+                                            ::testing::ValuesIn(testing::gbuffer_layouts())),
+                         [](const auto& info) { return testing::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
+
+using Msaa = testing::GlTest;
+
+// Per-sample shading on edges is what smooths them in the deferred modes: were
+// edge pixels shaded once, their samples would all get one surface's colour.
+TEST_F(Msaa, BringsEveryModeCloserToASupersampledPicture) {
+  for (const int view : {1, 3}) {
+    World big({"atrium", std::nullopt, "forward", view, kSize * 4});
+    big.frame(0.0);
+    const assets::Image supersampled = downsample(big.renderer().read_output(), 4);
+    for (const auto& info : lighting::technique_table()) {
+      const std::string mode(info.name);
+      World plain({"atrium", std::nullopt, mode, view, kSize});
+      plain.frame(0.0);
+      World smoothed({"atrium", std::nullopt, mode, view, kSize, "pbr", "", with_msaa(kSamples)});
+      smoothed.frame(0.0);
+      const double without = assets::psnr(supersampled, plain.renderer().read_output());
+      const double with = assets::psnr(supersampled, smoothed.renderer().read_output());
+      EXPECT_GE(with, without + 3.0) << mode << " view " << view << ": " << without << " dB without MSAA, " << with << " with";
+    }
+  }
+}
+
+std::size_t red_pixels(const assets::Image& image) {
+  std::size_t red = 0;
+  for (std::size_t i = 0; i < image.rgba.size(); i += 4) red += image.rgba[i] > 200 && image.rgba[i + 1] < 80;
+  return red;
+}
+
+TEST_F(Msaa, EdgesViewMarksSilhouettesAndNothingWithoutMsaa) {
+  for (const char* mode : {"deferred", "light-prepass", "forward"}) {
+    World world({"atrium", std::nullopt, mode, 1, kSize, "pbr", "msaa-edges", with_msaa(kSamples)});
+    world.frame(0.0);
+    const assets::Image edges = world.renderer().read_output();
+    assets::write_png(std::string("msaa_edges_") + mode + ".png", edges);
+    const double share = static_cast<double>(red_pixels(edges)) / (kSize.x * kSize.y);
+    // The court's columns, arches and lamps have edges; its floor and sky do not.
+    EXPECT_GT(share, 0.02) << mode;
+    EXPECT_LT(share, 0.4) << mode;
+  }
+  World plain({"atrium", std::nullopt, "deferred", 1, kSize, "pbr", "msaa-edges"});
+  plain.frame(0.0);
+  EXPECT_EQ(red_pixels(plain.renderer().read_output()), 0u);
+}
+
+TEST_F(Msaa, MoreSamplesThanTheDriverAllowsAreRefusedNamingTheLimit) {
+  const int too_many = gfx::max_msaa_samples() * 2;
+  try {
+    World world({"atrium", std::nullopt, "deferred", 1, kSize, "pbr", "", with_msaa(too_many)});
+    world.frame(0.0);
+    FAIL() << "no error";
+  } catch (const gfx::ResourceLimitError& e) {
+    EXPECT_NE(std::string(e.what()).find("this context allows at most " + std::to_string(gfx::max_msaa_samples())),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace atrium
