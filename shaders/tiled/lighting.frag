@@ -7,6 +7,10 @@
 #include "common/tile_shading.glsl"
 #include "common/lighting_targets.glsl"
 
+// With MSAA the stencil picks the pixels each rate shades (sample_rate.hpp);
+// tested before the shader, rejected pixels neither run nor count as shaded.
+layout(early_fragment_tests) in;
+
 void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) {
