@@ -26,12 +26,15 @@ def main() -> int:
     with open(source, newline="") as f:
         rows = list(csv.DictReader(f))
     several_slicings = len({row.get("z_slicing") for row in rows if row.get("z_slicing")}) > 1
+    several_shadows = len({row.get("shadows") for row in rows if row.get("shadows")}) > 1
     for row in rows:
         if row.get("refused"):  # the driver refused this mode at this light count: no time
             continue
         label = row["mode"]
         if several_slicings and row.get("z_slicing"):
             label += "/" + row["z_slicing"]
+        if several_shadows:
+            label += f' {row["shadows"]} shadowed'
         times[label][int(row["lights"])].append(float(row["median_ms"]))
         renderer, size = row["renderer"], f'{row["width"]}x{row["height"]}'
     if not times:

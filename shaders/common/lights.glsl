@@ -8,7 +8,8 @@ struct Light {
   vec4 position_radius;  // xyz world position, w radius (m); directional: 0
   vec4 color_kind;       // rgb = colour * intensity, w = kind
   vec4 direction;        // xyz: where a spot or directional light points
-  vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x
+  vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x,
+                         // z = 1 + first shadow view (0: unshadowed), w = shadow view count
 };
 
 layout(std430, binding = 0) readonly buffer LightBlock {

@@ -6,7 +6,8 @@
 // Each vertex finds its instance's transforms through a_instance (the
 // instance-index attribute, offset by the draw's base instance). With
 // POSITION_ONLY (depth-only passes over surfaces without alpha tests) it
-// computes the clip-space position alone.
+// computes the clip-space position alone; with SHADOW_PASS it projects with
+// u_shadow_view_projection (a shadow map's view) instead of the camera's.
 #include "common/frame.glsl"
 #include "common/material_table.glsl"
 
@@ -41,6 +42,10 @@ flat out uint v_material;
 flat out uint v_material_flags;  // Material.flags, for branches that must agree across a pixel quad
 #endif
 
+#ifdef SHADOW_PASS
+uniform mat4 u_shadow_view_projection;
+#endif
+
 // Every pass that draws the same mesh computes the same depth: the depth
 // pre-pass of forward+ and its shading pass compare with LEQUAL.
 invariant gl_Position;
@@ -48,7 +53,11 @@ invariant gl_Position;
 void main() {
   Instance instance = u_instances[a_instance];
   vec4 world = instance.model * vec4(a_position, 1.0);
+#ifdef SHADOW_PASS
+  gl_Position = u_shadow_view_projection * world;
+#else
   gl_Position = u_view_projection * world;
+#endif
 #ifndef POSITION_ONLY
   v_position = world.xyz;
   v_normal = mat3(instance.normal_matrix) * a_normal;

@@ -5,14 +5,15 @@
 #include "attenuation.glsl"
 #include "brdf.glsl"
 #include "lights.glsl"
+#include "shadows.glsl"
 
-// Radiance that reaches `s` from `light` (colour times falloff) and the
-// direction towards it, for every light kind.
+// Radiance that reaches `s` from `light` (colour times falloff, times what its
+// shadow map lets through) and the direction towards it, for every light kind.
 vec3 incoming_light(Surface s, Light light, out vec3 l) {
   uint kind = uint(light.color_kind.w);
   if (kind == kLightDirectional) {
     l = -light.direction.xyz;
-    return light.color_kind.rgb;
+    return light.color_kind.rgb * shadow_visibility(light, s.position, s.normal, l);
   }
   vec3 to_light = light.position_radius.xyz - s.position;
   float distance = length(to_light);
@@ -22,6 +23,7 @@ vec3 incoming_light(Surface s, Light light, out vec3 l) {
     float cone = clamp(dot(light.direction.xyz, -l) * light.spot.x + light.spot.y, 0.0, 1.0);
     attenuation *= cone * cone;
   }
+  if (attenuation > 0.0) attenuation *= shadow_visibility(light, s.position, s.normal, l);
   return light.color_kind.rgb * attenuation;
 }
 

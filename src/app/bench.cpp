@@ -61,6 +61,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   BenchRow row;
   row.mode = mode;
   row.z_slicing = world.registry().resource<RendererSettings>().technique_options.z_slicing;
+  row.shadows = world.registry().resource<RendererSettings>().shadows;
   row.lights = world.light_count();
   row.view = world.view();
   row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
@@ -141,8 +142,9 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   const std::vector<std::string> modes = options.modes.empty() ? lighting::mode_names() : options.modes;
   const std::vector<lighting::ZSlicing> slicings =
       options.z_slicings.empty() ? std::vector{options.technique_options.z_slicing} : options.z_slicings;
-  const std::size_t total =
-      options.light_counts.size() * modes.size() * slicings.size() * std::max<std::size_t>(options.views.size(), 1);
+  const std::vector<int> shadow_counts = options.shadow_counts.empty() ? std::vector{0} : options.shadow_counts;
+  const std::size_t total = options.light_counts.size() * modes.size() * slicings.size() * shadow_counts.size() *
+                            std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
@@ -156,14 +158,19 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
       // deferred-radius evaluates exactly the lights whose radius covers a pixel.
       const double reaching = count_evaluations(world, "deferred-radius");
       // Modes that do not slice depth are measured once, with the first slicing.
-      std::vector<std::string> to_measure = modes;
-      for (const lighting::ZSlicing slicing : slicings) {
-        world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
-        for (const std::string& mode : modes) {
-          const bool measure = std::find(to_measure.begin(), to_measure.end(), mode) != to_measure.end();
-          if (measure) result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
-          if (measure && !result.rows.back().sliced) std::erase(to_measure, mode);
-          if (progress) progress(++done, total);
+      auto& settings = world.registry().resource<RendererSettings>();
+      settings.redraw_shadows = options.shadow_redraw;
+      for (const int shadows : shadow_counts) {
+        settings.shadows = shadows;
+        std::vector<std::string> to_measure = modes;
+        for (const lighting::ZSlicing slicing : slicings) {
+          settings.technique_options.z_slicing = slicing;
+          for (const std::string& mode : modes) {
+            const bool measure = std::find(to_measure.begin(), to_measure.end(), mode) != to_measure.end();
+            if (measure) result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
+            if (measure && !result.rows.back().sliced) std::erase(to_measure, mode);
+            if (progress) progress(++done, total);
+          }
         }
       }
     }
@@ -177,8 +184,12 @@ namespace {
 // A row's column in the tables: its mode, with the depth slicing when the
 // bench compares several ("clustered-deferred/uniform").
 std::string label(const BenchResult& result, const BenchRow& row) {
-  if (result.options.z_slicings.size() < 2 || !row.sliced) return row.mode;
-  return row.mode + "/" + std::string(lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
+  std::string name = row.mode;
+  if (result.options.z_slicings.size() >= 2 && row.sliced) {
+    name += "/" + std::string(lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
+  }
+  if (result.options.shadow_counts.size() >= 2) name += " " + std::to_string(row.shadows) + " shadowed";
+  return name;
 }
 
 // Median over views of each (lights, label) frame time; NaN where every view was refused.
@@ -224,6 +235,8 @@ std::string bench_markdown(const BenchResult& result) {
   if (o.light_radius) md << ", light radius " << fixed(*o.light_radius, 2) << " m";
   if (o.constant_density) md << ", constant density";
   if (o.technique_options.msaa > 1) md << ", MSAA " << o.technique_options.msaa << "x";
+  if (o.shadow_counts.size() == 1 && o.shadow_counts[0] > 0) md << ", shadow maps for " << o.shadow_counts[0] << " lights";
+  if (!o.shadow_counts.empty() && o.shadow_redraw) md << " (every map drawn every frame)";
   md << ".\nRenderer: " << result.renderer << "; pass timing: " << result.timing_method
      << ". Frames per second from the median frame time (median over views).\n\n";
   md << "| lights |";
@@ -276,7 +289,7 @@ std::string bench_markdown(const BenchResult& result) {
 std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
-         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing\n";
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -290,7 +303,8 @@ std::string bench_csv(const BenchResult& result) {
         << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
         << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
         << row.draw_calls << ",\"" << cpu_passes << "\","
-        << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << "\n";
+        << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
+        << row.shadows << "\n";
   }
   return csv.str();
 }

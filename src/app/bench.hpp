@@ -35,6 +35,9 @@ struct BenchOptions {
   // --z-slicing LIST: every mode is measured with each (empty: technique_options').
   std::vector<lighting::ZSlicing> z_slicings;
   bool frustum_culling = true;               // --no-culling
+  // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
+  std::vector<int> shadow_counts;
+  bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame
 };
 
 struct BenchRow {
@@ -43,6 +46,7 @@ struct BenchRow {
   // depth slices at all (a clustered mode): only those are measured per slicing.
   lighting::ZSlicing z_slicing = lighting::ZSlicing::Log;
   bool sliced = false;
+  int shadows = 0;  // lights with shadow maps (--shadows)
   std::uint32_t lights = 0;
   int view = 1;
   std::string view_name;

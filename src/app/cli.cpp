@@ -22,7 +22,7 @@ namespace atrium {
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling};
+          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling, options.shadows};
 }
 
 namespace {
@@ -60,6 +60,11 @@ int run_render(const CliOptions& options) {
       passes += text;
     }
     std::printf("fragments shaded per pixel: %s\n", passes.c_str());
+  }
+  if (stats.shadows.atlas_size > 0) {
+    std::printf("shadows: %u lights shadowed, %u maps drawn, %u reused, %zu triangles in shadow passes (%dx%d atlas)\n",
+                stats.shadows.lights, stats.shadows.maps_rendered, stats.shadows.maps_reused, stats.shadows.triangles,
+                stats.shadows.atlas_size, stats.shadows.atlas_size);
   }
   if (stats.light_list_entries > 0) {
     std::printf("light lists: %u entries, %u overflowed frames (the list grew and was filled again)\n",

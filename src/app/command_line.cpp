@@ -17,6 +17,7 @@
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
 #include "systems/overlay.hpp"
+#include "systems/shadows/shadow_selection.hpp"
 
 namespace atrium {
 namespace {
@@ -81,13 +82,19 @@ const std::vector<OptionSpec>& option_table() {
       {"--msaa", "N", kDrawing,
        "multisample anti-aliasing with N = 1 (off, the default), 2, 4 or 8 samples per pixel, up to what the driver "
        "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges)"},
+      {"--shadows", "K", kWindow | kRender | kCompare,
+       "shadow maps for the K lights that matter most this frame (0, the default, is off; at most " +
+           std::to_string(shadows::kMaxShadowedLights) + "): cube maps for point lights, one map per spot light, cascades for a "
+           "directional light, in one atlas; every mode samples them (debug view shadow-atlas)"},
+      {"--shadows", "LIST", kBench, "measure with each of these shadowed-light counts (e.g. 0,16,64)"},
+      {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)"},
       {"--debug-view", "V", kWindow | kRender,
        "show position, normal, albedo, metallic-roughness, emissive, depth, light-volumes (outlines), heatmap (lights "
        "evaluated per pixel in the current mode), light-lists (lights in each pixel's tile or cluster list), "
        "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
        "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
        "light-buffer (light-prepass: light summed before materials), msaa-edges (with --msaa: the pixels the deferred "
-       "modes shade per sample, in red)"},
+       "modes shade per sample, in red), shadow-atlas (with --shadows: the shadow maps' depths)"},
       {"--lights", "N", kWindow | kRender | kInfo | kCompare,
        "number of lights, 0.." + std::to_string(kMaxLights) +
            " (built-in default: 160); for a scene its listed lights come first, then generated ones; for a glTF "
@@ -263,6 +270,15 @@ bool apply_bench_option(std::string_view name, std::string_view value, CliOption
       }
     }
     if (bench.z_slicings.empty()) throw UsageError("--z-slicing expects a comma-separated list of slicings");
+  } else if (name == "--shadows") {
+    bench.shadow_counts.clear();
+    for (const std::string& item : split_list(value)) {
+      const int count = parse_number<int>("--shadows", item, 0, shadows::kMaxShadowedLights);
+      if (std::find(bench.shadow_counts.begin(), bench.shadow_counts.end(), count) == bench.shadow_counts.end()) bench.shadow_counts.push_back(count);
+    }
+    if (bench.shadow_counts.empty()) throw UsageError("--shadows expects a comma-separated list of shadowed-light counts");
+  } else if (name == "--shadow-redraw") {
+    bench.shadow_redraw = true;
   } else if (name == "--frames") {
     bench.frames = parse_number<int>("--frames", value, 1, 100000);
   } else if (name == "--warmup") {
@@ -313,6 +329,8 @@ void apply_option(std::string_view name, std::string_view value, CliOptions& opt
     const int samples = parse_number<int>("--msaa", value, 1, 8);
     if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
     options.technique_options.msaa = samples;
+  } else if (name == "--shadows") {
+    options.shadows = parse_number<int>("--shadows", value, 0, shadows::kMaxShadowedLights);
   } else if (name == "--debug-view") {
     options.debug_view = std::string(value);
     if (lighting::debug_view_index(options.debug_view) < 0) {

@@ -43,6 +43,8 @@ struct WorldOptions {
   std::optional<assets::NamedView> camera;
   // --no-culling: every pass draws the whole scene.
   bool frustum_culling = true;
+  // --shadows K: shadow maps for the K lights that matter most (0: off).
+  int shadows = 0;
 };
 
 class World {

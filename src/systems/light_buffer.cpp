@@ -66,6 +66,7 @@ GatheredLights gather_lights(ecs::Registry& registry) {
       gpu.spot = glm::vec4(scale, -cos_outer * scale, 0.0f, 0.0f);
     }
     gathered.lights.push_back(gpu);
+    gathered.entities.push_back(entity);
   });
   return gathered;
 }
@@ -76,6 +77,7 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     if (!state) state = &registry.set_resource<LightBuffer>();
     GatheredLights gathered = gather_lights(registry);
     state->staging = std::move(gathered.lights);
+    state->entities = std::move(gathered.entities);
     state->rejected = static_cast<std::uint32_t>(gathered.rejected.size());
     for (const RejectedLight& rejected : gathered.rejected) {
       if (!state->warned.insert(rejected.entity).second) continue;

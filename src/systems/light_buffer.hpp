@@ -27,6 +27,8 @@ struct GpuLight {
   glm::vec4 color_kind;       // rgb colour * intensity, w GpuLightKind
   glm::vec4 direction;        // xyz where the light points (spot, directional)
   glm::vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x
+  // z: 1 + the index of its first ShadowView when the light is shadowed this
+  // frame, else 0 (written by the ShadowAtlas); w: its view count.
 };
 static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights.glsl");
 
@@ -39,6 +41,7 @@ struct LightBuffer {
   std::size_t capacity = 0;  // lights the buffer can hold
   std::uint32_t count = 0;   // lights written this frame
   std::vector<GpuLight> staging;
+  std::vector<ecs::Entity> entities;  // staging[i] is the light of entities[i]
   std::uint32_t rejected = 0;  // light entities left out this frame
   std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
 };
@@ -51,6 +54,7 @@ struct RejectedLight {
 
 struct GatheredLights {
   std::vector<GpuLight> lights;
+  std::vector<ecs::Entity> entities;  // per light, its entity
   std::vector<RejectedLight> rejected;
 };
 

@@ -17,6 +17,7 @@ namespace atrium {
 
 MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
+      shadows_(gpu),
       empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
       tonemap_(&gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
@@ -127,15 +128,6 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ", or a tiled or clustered mode"));
 }
 
-void MeshRenderer::StreamBuffer::upload(const void* data, std::size_t bytes) {
-  if (bytes > capacity || !buffer) {
-    capacity = std::max({bytes, 2 * capacity, std::size_t{256}});
-    buffer = gfx::create_buffer();
-    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  if (bytes) glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
-}
-
 void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   gpu_.reserve_instances(draws.instances.size());
   instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
@@ -188,7 +180,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
 
   const auto& view = registry.resource<ViewState>();
   const auto& scene = registry.resource<SceneSettings>();
-  const auto& lights = registry.resource<LightBuffer>();
+  auto& lights = registry.resource<LightBuffer>();
   const auto& assets = registry.resource<assets::AssetManager>();
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
@@ -203,7 +195,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
     stats_.objects = culling->objects;
     stats_.objects_drawn = culling->objects_visible;
   }
-  upload_draws(draws);
 
   lighting::FrameUniforms uniforms{};
   uniforms.view = view.view;
@@ -222,6 +213,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
+  // Before the technique's passes: the shadow passes bind instance, material and
+  // command buffers of their own, and mark the shadowed lights in the light buffer.
+  shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows, timer_);
+  stats_.shadows = shadows_.stats();
+  upload_draws(draws);
 
   const lighting::FrameContext frame{draws,      gpu,       lights.staging,  scene.background,
                                      timer_,     view.view, view.projection, view.near_plane,
@@ -267,7 +263,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
 
   // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
-    debug_views().draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max);
+    debug_views().draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max,
+                          shadows_.texture());
     if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
     if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
   }

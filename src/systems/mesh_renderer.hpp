@@ -15,7 +15,9 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/pass_timer.hpp"
 #include "gfx/shader_program.hpp"
+#include "gfx/stream_buffer.hpp"
 #include "systems/lighting/technique.hpp"
+#include "systems/shadows/shadow_atlas.hpp"
 
 namespace atrium::lighting {
 class DebugViews;
@@ -34,6 +36,7 @@ struct FrameStats {
   double fragments_per_pixel = 0.0;          // rasterised by geometry passes, while the fragments view is shown
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
   std::uint32_t light_list_overflows = 0;    // frames whose lists grew and were filled again
+  shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
 };
 
 class MeshRenderer {
@@ -68,6 +71,8 @@ class MeshRenderer {
   [[nodiscard]] glm::ivec2 size() const { return size_; }
   // Per-pass times of the latest frame whose timings are complete.
   [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
+  // The shadow maps of the last frame (RendererSettings::shadows).
+  [[nodiscard]] const shadows::ShadowAtlas& shadow_atlas() const { return shadows_; }
 
   // Drops the technique and debug views; the next frame makes them again from
   // the shader library (after a shader reload).
@@ -109,13 +114,8 @@ class MeshRenderer {
   gfx::Texture output_color_;
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
-  // A storage buffer that grows (doubling) to hold what a frame uploads.
-  struct StreamBuffer {
-    gfx::Buffer buffer;
-    std::size_t capacity = 0;
-    void upload(const void* data, std::size_t bytes);
-  };
-  StreamBuffer instances_, materials_, commands_;
+  gfx::StreamBuffer instances_, materials_, commands_;
+  shadows::ShadowAtlas shadows_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)

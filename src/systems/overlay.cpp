@@ -118,6 +118,10 @@ void Overlay::statistics(ecs::Registry& registry) {
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
   }
+  if (stats.shadows.atlas_size > 0) {
+    ImGui::Text("shadows: %u lights, %u maps drawn, %u reused (%d^2 atlas)", stats.shadows.lights, stats.shadows.maps_rendered,
+                stats.shadows.maps_reused, stats.shadows.atlas_size);
+  }
   ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
   // Fragments shaded per pixel tell a pass that draws too much (overdraw, a
   // camera inside foliage) from one that shades expensively.
@@ -176,6 +180,8 @@ void Overlay::controls(ecs::Registry& registry) {
   }
   // Costs two more target writes per pixel in the deferred modes; the thumbnails show the sums.
   ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);
+  // K of --shadows: the lights that matter most get maps; 0 turns shadows off.
+  ImGui::SliderInt("shadowed lights", &settings.shadows, 0, 256, "%d", ImGuiSliderFlags_Logarithmic);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
   if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
     requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, 1'000'000));

@@ -71,6 +71,35 @@ TEST_F(Leaks, AThousandModeSwitchesAndAHundredResizesLeaveNothingBehind) {
   EXPECT_EQ(snapshot(), clustered) << "after 100 more resizes";
 }
 
+// Shadows: the atlas is made when K turns from 0 and given back at 0; between
+// mode switches and K changes its objects and memory stay where they were.
+TEST_F(Leaks, AThousandModeSwitchesAndShadowCountChangesLeaveTheAtlasAsItWas) {
+  World world({kTeapot, 24u, "forward", 1, {48, 27}});
+  auto& settings = world.registry().resource<RendererSettings>();
+  const auto modes = lighting::technique_table();
+  const int counts[] = {4, 0, 16, 1, 8};
+  for (const int count : counts) {
+    settings.shadows = count;
+    for (const auto& info : modes) {
+      world.set_mode(std::string(info.name));
+      world.frame(0.0);
+    }
+  }
+  settings.shadows = 4;
+  world.set_mode("forward");
+  world.frame(0.0);
+  const Snapshot before = snapshot();
+  for (int i = 0; i < 1000; ++i) {
+    world.set_mode(std::string(modes[static_cast<std::size_t>(i) % modes.size()].name));
+    settings.shadows = counts[static_cast<std::size_t>(i / 7) % std::size(counts)];
+    world.frame(0.0);
+  }
+  settings.shadows = 4;
+  world.set_mode("forward");
+  world.frame(0.0);
+  EXPECT_EQ(snapshot(), before) << "after 1000 mode switches and shadow count changes";
+}
+
 TEST_F(Leaks, TenSceneReloadsGiveEveryObjectBack) {
   const Snapshot before = snapshot();
   for (int i = 0; i < 10; ++i) {

@@ -20,7 +20,7 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
       mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_))),
       mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),
-      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "clustered/depth.frag"})),
+      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"})),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       shading_(deferred ? SampleRatePrograms(gpu.shaders(), {"post/fullscreen.vert", "clustered/lighting.frag"}, {}, options.msaa)
                         : SampleRatePrograms(gpu.shaders(), {"common/mesh.vert", "clustered/shade.frag"}, {}, 1)),

@@ -19,7 +19,15 @@ std::string debug_view_names() {
 }
 
 DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
-    : gpu_(gpu), gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa), cluster_dims_(options.cluster_grid), z_slicing_(options.z_slicing) {}
+    : gpu_(gpu),
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa),
+      cluster_dims_(options.cluster_grid),
+      z_slicing_(options.z_slicing),
+      depth_sampler_(gfx::create_sampler()) {
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
 
 void DebugViews::resize(const FrameTargets& targets) {
   size_ = targets.size;
@@ -78,7 +86,7 @@ void DebugViews::begin_counting(int view) {
 }
 
 void DebugViews::draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
-                      GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max) {
+                      GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max, GLuint shadow_atlas) {
   // Every view is a full-screen pass into the output. The G-buffer, depth and
   // outline views show the G-buffer the mode filled this frame, in its layout;
   // in a mode without one they first fill their own (and the depth buffer).
@@ -111,6 +119,18 @@ void DebugViews::draw(int view, const LightingTechnique& technique, const FrameC
     // Only a deferred mode's lighting passes write the sums apart.
     const GLuint sum = !technique.gbuffer() ? 0 : view == kDiffuseLightView ? targets.diffuse_light : targets.specular_light;
     draw_light_sum(sum, glm::vec2(0.0f), glm::vec2(1.0f));
+    return;
+  }
+  if (view == kShadowAtlasView) {
+    if (shadow_atlas == 0) {
+      draw_light_sum(0, glm::vec2(0.0f), glm::vec2(1.0f));  // grey: no atlas this frame
+      return;
+    }
+    glBindTextureUnit(0, shadow_atlas);
+    glBindSampler(0, depth_sampler_.id());
+    gpu_.shaders().get({"post/fullscreen.vert", "debug/shadow_atlas.frag"}).use();
+    fullscreen_.draw();
+    glBindSampler(0, 0);
     return;
   }
   if (view == kLightBufferView) {

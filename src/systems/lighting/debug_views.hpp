@@ -5,7 +5,8 @@
 // passes rasterise per pixel, the diffuse and specular light sums a deferred
 // mode's lighting passes wrote apart (SPLIT_LIGHTING while shown), and the light
 // pre-pass's light buffer (LightingTechnique::light_buffer), and with MSAA the
-// edge pixels the deferred modes shade per sample. The G-buffer views
+// edge pixels the deferred modes shade per sample, and with shadows on the
+// shadow atlas's depths. The G-buffer views
 // show the mode's own G-buffer in its layout (the light pre-pass's thin one
 // included), or in a forward mode run a geometry pass of their own, so they work
 // whatever the mode; the heatmap and the fragments view count what the mode's
@@ -26,13 +27,13 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 15> kDebugViews{
+inline constexpr std::array<std::string_view, 16> kDebugViews{
     "position",     "normal",      "albedo",       "metallic-roughness", "emissive",      "depth",
     "light-volumes", "heatmap",    "light-lists",  "depth-slices",       "fragments",     "diffuse-light",
-    "specular-light", "light-buffer", "msaa-edges"};
+    "specular-light", "light-buffer", "msaa-edges", "shadow-atlas"};
 inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
                      kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12, kLightBufferView = 13,
-                     kMsaaEdgeView = 14;
+                     kMsaaEdgeView = 14, kShadowAtlasView = 15;
 
 // The index of a debug view name in kDebugViews, or -1.
 [[nodiscard]] int debug_view_index(std::string_view name);
@@ -48,9 +49,10 @@ class DebugViews {
   // for fragments).
   void begin_counting(int view);
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
-  // image) after `technique` has drawn the frame.
+  // image) after `technique` has drawn the frame; `shadow_atlas` is the
+  // frame's shadow atlas texture (0 while shadows are off).
   void draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
-            GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max);
+            GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max, GLuint shadow_atlas);
   // Heatmap and fragments views: the count per pixel, averaged over the image.
   [[nodiscard]] double average_count() const;
 
@@ -85,6 +87,7 @@ class DebugViews {
   ZSlicing z_slicing_;
   std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
+  gfx::Sampler depth_sampler_;  // the shadow atlas read as depth values, comparison off
   gfx::Texture counts_;
   gfx::Texture thumbnails_;
   gfx::Framebuffer thumbnail_framebuffer_;

@@ -1,8 +1,8 @@
 #version 450 core
-// Clustered forward+, depth pre-pass of alpha-masked surfaces (the others go
-// through common/mesh.vert with POSITION_ONLY and common/depth_only.frag):
-// writes depth only, so that the shading pass shades each pixel once, and
-// discards fragments below the cutoff, or they would hide what is behind holes.
+// Depth-only passes over alpha-masked surfaces (clustered forward+'s depth
+// pre-pass, shadow maps; the others go through common/mesh.vert with
+// POSITION_ONLY and common/depth_only.frag): writes depth only, and discards
+// fragments below the cutoff, or they would hide (or shadow) what is behind holes.
 #include "common/frame.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"

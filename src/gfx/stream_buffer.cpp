@@ -1,0 +1,16 @@
+#include "gfx/stream_buffer.hpp"
+
+#include <algorithm>
+
+namespace atrium::gfx {
+
+void StreamBuffer::upload(const void* data, std::size_t bytes) {
+  if (bytes > capacity || !buffer) {
+    capacity = std::max({bytes, 2 * capacity, std::size_t{256}});
+    buffer = create_buffer();
+    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (bytes) glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
+}
+
+}  // namespace atrium::gfx

@@ -1,0 +1,427 @@
+#include "systems/shadows/shadow_atlas.hpp"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+
+#include "components/mesh_instance.hpp"
+#include "components/transform.hpp"
+#include "gfx/depth.hpp"
+#include "gfx/limits.hpp"
+#include "systems/frustum_culling.hpp"
+
+namespace atrium::shadows {
+namespace {
+
+bool box_meets_sphere(const Box& box, glm::vec3 centre, float radius) {
+  const glm::vec3 nearest = glm::clamp(centre, box.min, box.max);
+  const glm::vec3 d = nearest - centre;
+  return glm::dot(d, d) <= radius * radius;
+}
+
+bool same_box(const Box& a, const Box& b) { return a.empty == b.empty && a.min == b.min && a.max == b.max; }
+
+// What a map depends on besides geometry: position, reach, direction, cone, kind.
+bool same_light(const GpuLight& a, const GpuLight& b) {
+  return a.position_radius == b.position_radius && a.direction == b.direction && a.color_kind.w == b.color_kind.w &&
+         glm::vec2(a.spot) == glm::vec2(b.spot);
+}
+
+bool glows(const assets::Material& material) {
+  return material.emissive_strength > 0.0f && glm::any(glm::greaterThan(material.emissive_factor, glm::vec3(0.0f)));
+}
+
+int largest_power_of_two_at_most(int n) {
+  int p = 1;
+  while (p * 2 <= n) p *= 2;
+  return p;
+}
+
+// The batch state of a caster: depth-only passes need textures only for the
+// alpha test, and draw both faces so that open geometry (a single-sided wall
+// seen from behind) still blocks light.
+auto caster_key(const lighting::DrawBatch& b) { return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers); }
+
+}  // namespace
+
+ShadowAtlas::ShadowAtlas(assets::GpuAssets& gpu) : gpu_(gpu), allocator_(limits_.max_tile, limits_.min_tile) {}
+
+void ShadowAtlas::release() {
+  entries_.clear();
+  views_.clear();
+  boxes_.clear();
+  atlas_ = {};
+  framebuffer_ = {};
+  view_buffer_ = {};
+  view_capacity_ = 0;
+  instances_ = {};
+  materials_ = {};
+  commands_ = {};
+}
+
+void ShadowAtlas::ensure_atlas() {
+  if (atlas_) return;
+  const int size = largest_power_of_two_at_most(std::min(kAtlasSize, gfx::max_texture_size()));
+  limits_.atlas_size = size;
+  limits_.max_tile = std::min(limits_.max_tile, size);
+  allocator_ = AtlasAllocator(size, limits_.min_tile);
+  atlas_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(atlas_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
+  // Hardware comparison with bilinear filtering: each tap is a 2x2 PCF.
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+  // Lit where the surface is at least as close to the light as the map's nearest caster.
+  glTextureParameteri(atlas_.id(), GL_TEXTURE_COMPARE_FUNC, gfx::kDepthCloserOrEqual);
+  framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(framebuffer_.id(), GL_DEPTH_ATTACHMENT, atlas_.id(), 0);
+  glNamedFramebufferDrawBuffer(framebuffer_.id(), GL_NONE);
+  gfx::require_complete(framebuffer_.id(), "shadow atlas");
+  const float far = gfx::kDepthFar;
+  glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far);
+}
+
+void ShadowAtlas::collect_changed_geometry(ecs::Registry& registry) {
+  changed_.clear();
+  ++frame_;
+  registry.view<WorldBounds>().each([&](ecs::Entity entity, const WorldBounds& bounds) {
+    const Box box{bounds.min, bounds.max, bounds.empty};
+    auto [it, added] = boxes_.try_emplace(entity, Seen{box, frame_});
+    if (added) {
+      if (!box.empty) changed_.push_back(box);
+    } else {
+      if (!same_box(it->second.box, box)) {
+        if (!it->second.box.empty) changed_.push_back(it->second.box);
+        if (!box.empty) changed_.push_back(box);
+        it->second.box = box;
+      }
+      it->second.frame = frame_;
+    }
+  });
+  for (auto it = boxes_.begin(); it != boxes_.end();) {
+    if (it->second.frame == frame_) {
+      ++it;
+      continue;
+    }
+    if (!it->second.box.empty) changed_.push_back(it->second.box);
+    it = boxes_.erase(it);
+  }
+}
+
+void ShadowAtlas::gather_casters(ecs::Registry& registry) {
+  casters_.clear();
+  caster_states_.clear();
+  caster_instances_.clear();
+  caster_materials_.clear();
+  const auto& assets = registry.resource<assets::AssetManager>();
+  std::map<const assets::Material*, std::uint32_t> material_index;
+  std::vector<std::pair<lighting::DrawBatch, std::uint32_t>> states;  // state, first caster using it (for ordering)
+  registry.view<Transform, MeshInstance, WorldBounds>().each([&](const Transform&, const MeshInstance& instance, const WorldBounds& bounds) {
+    if (bounds.empty || bounds.asset != instance.asset || bounds.mesh != instance.mesh) return;
+    const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
+    if (instance.mesh >= asset.meshes.size()) return;
+    const assets::GpuMeshAsset& gpu_asset = gpu_.mesh_asset(instance.asset);
+    const auto& primitives = asset.meshes[instance.mesh].primitives;
+    bool used = false;
+    lighting::InstanceData data;
+    data.model = bounds.model;
+    for (std::uint32_t p = 0; p < primitives.size() && p < bounds.primitives.size(); ++p) {
+      const assets::Primitive& primitive = primitives[p];
+      if (primitive.indices.empty() || bounds.primitives[p].empty) continue;
+      const assets::Material& material = asset.materials.at(primitive.material);
+      // Blended surfaces cast no shadow, nor do glowing ones: a light's lamp
+      // glass (the built-in scene's, Bistro's lanterns) surrounds the light.
+      if (material.alpha_mode == assets::AlphaMode::Blend || glows(material)) continue;
+      lighting::DrawBatch state;
+      state.vertex_array = gpu_asset.vertex_array.id();
+      state.double_sided = true;
+      std::uint32_t material_slot = 0;
+      if (material.alpha_mode == assets::AlphaMode::Mask) {
+        state.alpha_masked = true;
+        const auto slots = material.texture_slots();
+        for (std::size_t s = 0; s < lighting::kMaterialTextureSlots; ++s) {
+          state.textures[s] = gpu_.texture(slots[s]->texture);
+          state.samplers[s] = gpu_.sampler(slots[s]->sampler);
+        }
+        const auto [it, added] = material_index.try_emplace(&material, static_cast<std::uint32_t>(caster_materials_.size()));
+        if (added) caster_materials_.push_back(lighting::material_data(material, gpu_));
+        material_slot = it->second;
+      }
+      // Casters share a material record only through the instance, so a masked
+      // primitive needs an instance record of its own material.
+      if (!used || material_slot != caster_instances_.back().material.x) {
+        data.material.x = material_slot;
+        caster_instances_.push_back(data);
+        used = true;
+      }
+      auto found = std::find_if(states.begin(), states.end(), [&](const auto& s) { return caster_key(s.first) == caster_key(state); });
+      if (found == states.end()) {
+        states.emplace_back(state, 0);
+        found = states.end() - 1;
+      }
+      const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
+      Caster caster{bounds.primitives[p], static_cast<std::uint32_t>(found - states.begin()),
+                    {range.index_count, 1, range.first_index, range.base_vertex, static_cast<std::uint32_t>(caster_instances_.size() - 1)}};
+      if (!primitive.meshlets.empty() && p + 1 < bounds.meshlet_offsets.size() &&
+          bounds.meshlet_offsets[p + 1] - bounds.meshlet_offsets[p] == primitive.meshlets.size()) {
+        caster.meshlet_bounds = bounds.meshlets.data() + bounds.meshlet_offsets[p];
+        caster.meshlets = primitive.meshlets.data();
+        caster.meshlet_count = static_cast<std::uint32_t>(primitive.meshlets.size());
+      }
+      casters_.push_back(caster);
+    }
+  });
+  // Number the states so that masked ones come last (draw_depth's order).
+  std::vector<std::uint32_t> order(states.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return caster_key(states[a].first) < caster_key(states[b].first); });
+  std::vector<std::uint32_t> rank(states.size());
+  for (std::uint32_t i = 0; i < order.size(); ++i) {
+    rank[order[i]] = i;
+    caster_states_.push_back(states[order[i]].first);
+  }
+  for (Caster& caster : casters_) caster.state = rank[caster.state];
+  if (caster_materials_.empty()) caster_materials_.emplace_back();
+}
+
+void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
+                         bool redraw, gfx::PassTimer& timer) {
+  stats_ = {};
+  if (count <= 0) {
+    if (atlas_) release();
+    bind();
+    return;
+  }
+  ensure_atlas();
+  stats_.atlas_size = limits_.atlas_size;
+  collect_changed_geometry(registry);
+
+  PreviousShadows previous;
+  for (const auto& [entity, entry] : entries_) previous.emplace(entity, entry.resolution);
+  const std::vector<ShadowChoice> choices =
+      choose_shadowed_lights(lights.staging, lights.entities, view, viewport, count, previous, limits_);
+
+  // Lights no longer shadowed, or at another size, give their tiles back.
+  std::unordered_map<ecs::Entity, const ShadowChoice*> chosen;
+  for (const ShadowChoice& c : choices) chosen.emplace(c.entity, &c);
+  for (auto it = entries_.begin(); it != entries_.end();) {
+    const auto found = chosen.find(it->first);
+    if (found != chosen.end() && found->second->resolution == it->second.resolution) {
+      ++it;
+      continue;
+    }
+    for (const AtlasTile& tile : it->second.tiles) allocator_.release(tile);
+    it = entries_.erase(it);
+  }
+  // Newcomers, largest first; if the free space is too broken up, every map is
+  // placed again from an empty atlas (their areas fit, so they pack).
+  std::vector<const ShadowChoice*> newcomers;
+  for (const ShadowChoice& c : choices) {
+    if (!entries_.count(c.entity)) newcomers.push_back(&c);
+  }
+  std::stable_sort(newcomers.begin(), newcomers.end(), [](const ShadowChoice* a, const ShadowChoice* b) { return a->resolution > b->resolution; });
+  auto place = [&](const ShadowChoice& c) {
+    Entry entry;
+    entry.resolution = c.resolution;
+    const int tiles = view_count(static_cast<GpuLightKind>(lights.staging[c.light].color_kind.w));
+    for (int t = 0; t < tiles; ++t) {
+      const auto tile = allocator_.allocate(c.resolution);
+      if (!tile) {
+        for (const AtlasTile& given : entry.tiles) allocator_.release(given);
+        return false;
+      }
+      entry.tiles.push_back(*tile);
+    }
+    entries_[c.entity] = std::move(entry);
+    return true;
+  };
+  bool placed = true;
+  for (const ShadowChoice* c : newcomers) placed = placed && place(*c);
+  if (!placed) {
+    entries_.clear();
+    allocator_.clear();
+    std::vector<const ShadowChoice*> all;
+    for (const ShadowChoice& c : choices) all.push_back(&c);
+    std::stable_sort(all.begin(), all.end(), [](const ShadowChoice* a, const ShadowChoice* b) { return a->resolution > b->resolution; });
+    for (const ShadowChoice* c : all) place(*c);
+  }
+
+  // This frame's views, and which of them must be drawn.
+  views_.clear();
+  std::vector<std::uint32_t> to_draw;
+  std::vector<glm::vec4> reach;
+  CascadeFrame cascade_frame{view.view, view.projection, view.near_plane, view.far_plane, glm::vec3(-1.0f), glm::vec3(1.0f)};
+  if (const auto* scene = registry.try_resource<SceneBounds>(); scene && !scene->empty) {
+    cascade_frame.scene_min = scene->min;
+    cascade_frame.scene_max = scene->max;
+  }
+  const float atlas_texels = static_cast<float>(limits_.atlas_size);
+  for (const ShadowChoice& c : choices) {
+    const auto found = entries_.find(c.entity);
+    if (found == entries_.end()) continue;  // could not be placed (cannot happen with areas that fit)
+    Entry& entry = found->second;
+    GpuLight& light = lights.staging[c.light];
+    const auto kind = static_cast<GpuLightKind>(light.color_kind.w);
+    std::vector<ShadowView> light_views;
+    if (kind == GpuLightKind::Point) {
+      const auto faces = point_views(light, entry.resolution);
+      light_views.assign(faces.begin(), faces.end());
+    } else if (kind == GpuLightKind::Spot) {
+      light_views.push_back(spot_view(light, entry.resolution));
+    } else {
+      const auto cascades = cascade_views(light, cascade_frame, entry.resolution);
+      light_views.assign(cascades.begin(), cascades.end());
+    }
+    const glm::vec4 sphere = kind == GpuLightKind::Directional ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f) : light.position_radius;
+    bool stale = redraw || !entry.drawn || !same_light(entry.drawn_light, light) || entry.drawn_views.size() != light_views.size();
+    for (std::size_t v = 0; !stale && v < light_views.size(); ++v) stale = entry.drawn_views[v] != light_views[v].view_projection;
+    for (std::size_t b = 0; !stale && b < changed_.size(); ++b) {
+      stale = sphere.w < 0.0f || box_meets_sphere(changed_[b], glm::vec3(sphere), sphere.w);
+    }
+    const auto first = static_cast<std::uint32_t>(views_.size());
+    for (std::size_t v = 0; v < light_views.size(); ++v) {
+      ShadowView& shadow_view = light_views[v];
+      const AtlasTile& tile = entry.tiles[v];
+      shadow_view.rect = glm::vec4(glm::vec2(tile.origin) / atlas_texels, glm::vec2(static_cast<float>(tile.size) / atlas_texels));
+      views_.push_back(shadow_view);
+      if (stale) {
+        to_draw.push_back(first + static_cast<std::uint32_t>(v));
+        reach.push_back(sphere);
+      }
+    }
+    if (stale) {
+      entry.drawn = true;
+      entry.drawn_light = light;
+      entry.drawn_views.clear();
+      for (const ShadowView& v : light_views) entry.drawn_views.push_back(v.view_projection);
+    }
+    ++stats_.lights;
+    stats_.maps_rendered += stale ? static_cast<std::uint32_t>(light_views.size()) : 0u;
+    stats_.maps_reused += stale ? 0u : static_cast<std::uint32_t>(light_views.size());
+    // The shaders find the light's views through spot.zw (lights.glsl).
+    light.spot.z = static_cast<float>(first + 1);
+    light.spot.w = static_cast<float>(light_views.size());
+    glNamedBufferSubData(lights.buffer.id(), static_cast<GLintptr>(c.light * sizeof(GpuLight) + offsetof(GpuLight, spot)),
+                         sizeof(glm::vec4), &light.spot);
+  }
+
+  if (!to_draw.empty()) {
+    const auto pass = timer.scope("shadows");
+    gather_casters(registry);
+    draw_maps(to_draw, reach);
+  }
+  const std::size_t bytes = std::max<std::size_t>(views_.size(), 1) * sizeof(ShadowView);
+  if (!view_buffer_ || bytes > view_capacity_) {
+    view_capacity_ = std::max(bytes, 2 * view_capacity_);
+    view_buffer_ = gfx::create_buffer();
+    glNamedBufferStorage(view_buffer_.id(), static_cast<GLsizeiptr>(view_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  }
+  if (!views_.empty()) glNamedBufferSubData(view_buffer_.id(), 0, static_cast<GLsizeiptr>(views_.size() * sizeof(ShadowView)), views_.data());
+  bind();
+}
+
+void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<const glm::vec4> reach) {
+  // Per view, its casters in state order: one batch per run of a state.
+  std::vector<lighting::DrawCommand> commands;
+  std::vector<std::vector<lighting::DrawBatch>> batches(views.size());
+  std::vector<std::uint32_t> selected;
+  std::vector<std::uint32_t> near_light;
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const glm::vec4 sphere = reach[v];
+    // The six faces of a point light share its sphere: test it once.
+    if (v == 0 || sphere != reach[v - 1] || sphere.w < 0.0f) {
+      near_light.clear();
+      for (std::uint32_t c = 0; c < casters_.size(); ++c) {
+        if (sphere.w < 0.0f || box_meets_sphere(casters_[c].box, glm::vec3(sphere), sphere.w)) near_light.push_back(c);
+      }
+    }
+    const Frustum frustum = frustum_of(views_[views[v]].view_projection);
+    selected.clear();
+    for (const std::uint32_t c : near_light) {
+      if (intersects(frustum, casters_[c].box.min, casters_[c].box.max)) selected.push_back(c);
+    }
+    std::stable_sort(selected.begin(), selected.end(), [&](std::uint32_t a, std::uint32_t b) { return casters_[a].state < casters_[b].state; });
+    for (const std::uint32_t c : selected) {
+      const Caster& caster = casters_[c];
+      auto add = [&](lighting::DrawCommand command) {
+        if (batches[v].empty() || caster_key(batches[v].back()) != caster_key(caster_states_[caster.state])) {
+          batches[v].push_back(caster_states_[caster.state]);
+          batches[v].back().first_command = static_cast<std::uint32_t>(commands.size());
+          batches[v].back().command_count = 0;
+        }
+        commands.push_back(command);
+        ++batches[v].back().command_count;
+        stats_.triangles += command.count / 3;
+      };
+      if (caster.meshlet_count == 0) {
+        add(caster.command);
+        continue;
+      }
+      // Runs of meshlets inside the view and the light's reach (both faces
+      // are drawn, so no normal-cone test).
+      lighting::DrawCommand run = caster.command;
+      run.count = 0;
+      for (std::uint32_t m = 0; m < caster.meshlet_count; ++m) {
+        const MeshletBounds& bounds = caster.meshlet_bounds[m];
+        const bool inside = intersects(frustum, bounds.center, bounds.radius) &&
+                            (sphere.w < 0.0f || glm::length(bounds.center - glm::vec3(sphere)) <= sphere.w + bounds.radius);
+        if (inside && run.count > 0 && run.first_index + run.count == caster.command.first_index + caster.meshlets[m].first_index) {
+          run.count += caster.meshlets[m].index_count;
+          continue;
+        }
+        if (run.count > 0) add(run);
+        run.count = 0;
+        if (inside) {
+          run.first_index = caster.command.first_index + caster.meshlets[m].first_index;
+          run.count = caster.meshlets[m].index_count;
+        }
+      }
+      if (run.count > 0) add(run);
+    }
+  }
+  gpu_.reserve_instances(caster_instances_.size());
+  instances_.upload(caster_instances_.data(), caster_instances_.size() * sizeof(lighting::InstanceData));
+  materials_.upload(caster_materials_.data(), caster_materials_.size() * sizeof(lighting::MaterialData));
+  commands_.upload(commands.data(), commands.size() * sizeof(lighting::DrawCommand));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
+
+  gfx::ShaderProgram& position_only = gpu_.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}, {"SHADOW_PASS"}});
+  gfx::ShaderProgram& masked = gpu_.shaders().get({"common/mesh.vert", "common/depth_masked.frag"}, {{"SHADOW_PASS"}});
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloser);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  glEnable(GL_SCISSOR_TEST);
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  // Reversed Z: pushing a map's depth away from the light means towards 0.
+  glPolygonOffset(-kSlopeBias, -kConstantBias);
+  const float far = gfx::kDepthFar;
+  const float texels = static_cast<float>(limits_.atlas_size);
+  for (std::size_t v = 0; v < views.size(); ++v) {
+    const ShadowView& view = views_[views[v]];
+    const glm::ivec4 tile(glm::round(glm::vec4(view.rect) * texels));
+    glViewport(tile.x, tile.y, tile.z, tile.w);
+    glScissor(tile.x, tile.y, tile.z, tile.w);
+    glClearNamedFramebufferfv(framebuffer_.id(), GL_DEPTH, 0, &far);
+    if (batches[v].empty()) continue;
+    position_only.set("u_shadow_view_projection", view.view_projection);
+    masked.set("u_shadow_view_projection", view.view_projection);
+    lighting::draw_depth(batches[v], position_only, masked);
+  }
+  glDisable(GL_POLYGON_OFFSET_FILL);
+  glDisable(GL_SCISSOR_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void ShadowAtlas::bind() const {
+  glBindTextureUnit(kShadowAtlasUnit, atlas_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.id());
+}
+
+}  // namespace atrium::shadows
