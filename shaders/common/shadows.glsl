@@ -57,12 +57,15 @@ bool shadow_view_of(Light light, vec3 position, out uint index, out float depth)
   return true;
 }
 
+// Whether the ShadowAtlas gave `light` maps this frame.
+bool light_has_shadow(Light light) { return light.spot.z > 0.5; }
+
 // The share of `light` that reaches `position` (1 lit, 0 shadowed): 3x3
 // bilinear comparisons (a 4x4-texel filtered kernel) in the light's map, the
 // point moved off the surface along `normal` in proportion to the angle
 // between it and `l`, the direction to the light.
 float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
-  if (light.spot.z < 0.5) return 1.0;
+  if (!light_has_shadow(light)) return 1.0;
   uint index;
   float depth;
   if (!shadow_view_of(light, position, index, depth)) return 1.0;
@@ -80,7 +83,7 @@ float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
   vec2 centre = view.rect.xy + uv * view.rect.zw;
   float lit = 0.0;
   for (int y = -1; y <= 1; ++y) {
-    for (int x = -1; x <= 1; ++x) lit += texture(u_shadow_atlas, vec3(clamp(centre + vec2(x, y) * step, lo, hi), ndc.z));
+    for (int x = -1; x <= 1; ++x) lit += textureLod(u_shadow_atlas, vec3(clamp(centre + vec2(x, y) * step, lo, hi), ndc.z), 0.0);
   }
   return lit / 9.0;
 }

@@ -49,7 +49,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 22u);
+  ASSERT_EQ(header.size(), 23u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -57,6 +57,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[19], "draw_calls");
   EXPECT_EQ(header[20], "cpu_passes");
   EXPECT_EQ(header[21], "z_slicing");
+  EXPECT_EQ(header[22], "shadows");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -108,7 +109,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 22u) << line;
+    ASSERT_EQ(f.size(), 23u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     EXPECT_NE(f[11], "-") << "lights evaluated per pixel, counted under each scheme";
   }

@@ -33,7 +33,7 @@ press 3; expect_line "^view: 3 lamps$"
 press F12; expect_line "^screenshot: "; deferred_view3=$(sed -n "${lines_seen}p" log | cut -d' ' -f2)
 press 1; expect_line "^view: 1 court$"
 
-for view in position normal albedo metallic-roughness emissive depth light-volumes heatmap light-lists depth-slices fragments diffuse-light specular-light light-buffer msaa-edges; do
+for view in position normal albedo metallic-roughness emissive depth light-volumes heatmap light-lists depth-slices fragments diffuse-light specular-light light-buffer msaa-edges shadow-atlas; do
   press g; expect_line "^debug view: $view$"
   if [ "$view" = normal ]; then press F12; expect_line "^screenshot: "; normal_view1=$(sed -n "${lines_seen}p" log | cut -d' ' -f2); fi
 done

@@ -23,8 +23,10 @@ constexpr glm::ivec2 kSize{160, 90};
 using DebugViewRender = testing::GlTest;
 
 TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
-  // Clustered deferred has a G-buffer and light lists: every view has something to show.
+  // Clustered deferred has a G-buffer and light lists, and with shadows on an
+  // atlas: every view has something to show.
   World world({"atrium", 48u, "clustered-deferred", 1, kSize});
+  world.registry().resource<RendererSettings>().shadows = 8;
   std::vector<assets::Image> images;
   for (const auto name : lighting::kDebugViews) {
     world.registry().resource<RendererSettings>().debug_view = std::string(name);
