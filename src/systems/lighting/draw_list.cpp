@@ -13,7 +13,6 @@
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
-namespace {
 
 DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
   DrawBatch state;
@@ -28,6 +27,8 @@ DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets&
   state.alpha_masked = material.alpha_mode == assets::AlphaMode::Mask;
   return state;
 }
+
+namespace {
 
 // The GL state a batch sets: batches are merged and ordered by it.
 auto state_key(const DrawBatch& b) {

@@ -90,6 +90,9 @@ struct DrawBatch {
   std::uint32_t command_count = 0;
 };
 
+// The state a batch of `material`'s primitives draws with (no commands yet).
+[[nodiscard]] DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored);
+
 struct DrawList {
   // Opaque and alpha-masked geometry: ordered by state (masked last, then
   // vertex array and textures), commands front to back within a batch,

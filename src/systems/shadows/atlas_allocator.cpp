@@ -1,11 +1,12 @@
 #include "systems/shadows/atlas_allocator.hpp"
 
+#include <bit>
 #include <stdexcept>
 
 namespace atrium::shadows {
 namespace {
 
-bool power_of_two(int n) { return n > 0 && (n & (n - 1)) == 0; }
+bool power_of_two(int n) { return n > 0 && std::has_single_bit(static_cast<unsigned>(n)); }
 
 }  // namespace
 

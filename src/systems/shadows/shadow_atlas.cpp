@@ -1,6 +1,7 @@
 #include "systems/shadows/shadow_atlas.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <tuple>
 
@@ -31,12 +32,6 @@ bool glows(const assets::Material& material) {
   return material.emissive_strength > 0.0f && glm::any(glm::greaterThan(material.emissive_factor, glm::vec3(0.0f)));
 }
 
-int largest_power_of_two_at_most(int n) {
-  int p = 1;
-  while (p * 2 <= n) p *= 2;
-  return p;
-}
-
 // The batch state of a caster: depth-only passes need textures only for the
 // alpha test, and draw both faces so that open geometry (a single-sided wall
 // seen from behind) still blocks light.
@@ -53,7 +48,6 @@ void ShadowAtlas::release() {
   atlas_ = {};
   framebuffer_ = {};
   view_buffer_ = {};
-  view_capacity_ = 0;
   instances_ = {};
   materials_ = {};
   commands_ = {};
@@ -61,7 +55,7 @@ void ShadowAtlas::release() {
 
 void ShadowAtlas::ensure_atlas() {
   if (atlas_) return;
-  const int size = largest_power_of_two_at_most(std::min(kAtlasSize, gfx::max_texture_size()));
+  const int size = static_cast<int>(std::bit_floor(static_cast<unsigned>(std::min(kAtlasSize, gfx::max_texture_size()))));
   limits_.atlas_size = size;
   limits_.max_tile = std::min(limits_.max_tile, size);
   allocator_ = AtlasAllocator(size, limits_.min_tile);
@@ -117,7 +111,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
   caster_materials_.clear();
   const auto& assets = registry.resource<assets::AssetManager>();
   std::map<const assets::Material*, std::uint32_t> material_index;
-  std::vector<std::pair<lighting::DrawBatch, std::uint32_t>> states;  // state, first caster using it (for ordering)
+  std::vector<lighting::DrawBatch> states;  // distinct caster states, in order of first use
   registry.view<Transform, MeshInstance, WorldBounds>().each([&](const Transform&, const MeshInstance& instance, const WorldBounds& bounds) {
     if (bounds.empty || bounds.asset != instance.asset || bounds.mesh != instance.mesh) return;
     const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
@@ -134,17 +128,13 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
       // Blended surfaces cast no shadow, nor do glowing ones: a light's lamp
       // glass (the built-in scene's, Bistro's lanterns) surrounds the light.
       if (material.alpha_mode == assets::AlphaMode::Blend || glows(material)) continue;
-      lighting::DrawBatch state;
-      state.vertex_array = gpu_asset.vertex_array.id();
+      lighting::DrawBatch state = lighting::batch_state(material, gpu_, gpu_asset.vertex_array.id(), false);
       state.double_sided = true;
       std::uint32_t material_slot = 0;
-      if (material.alpha_mode == assets::AlphaMode::Mask) {
-        state.alpha_masked = true;
-        const auto slots = material.texture_slots();
-        for (std::size_t s = 0; s < lighting::kMaterialTextureSlots; ++s) {
-          state.textures[s] = gpu_.texture(slots[s]->texture);
-          state.samplers[s] = gpu_.sampler(slots[s]->sampler);
-        }
+      if (!state.alpha_masked) {
+        state.textures = {};
+        state.samplers = {};
+      } else {
         const auto [it, added] = material_index.try_emplace(&material, static_cast<std::uint32_t>(caster_materials_.size()));
         if (added) caster_materials_.push_back(lighting::material_data(material, gpu_));
         material_slot = it->second;
@@ -156,9 +146,9 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
         caster_instances_.push_back(data);
         used = true;
       }
-      auto found = std::find_if(states.begin(), states.end(), [&](const auto& s) { return caster_key(s.first) == caster_key(state); });
+      auto found = std::find_if(states.begin(), states.end(), [&](const lighting::DrawBatch& s) { return caster_key(s) == caster_key(state); });
       if (found == states.end()) {
-        states.emplace_back(state, 0);
+        states.push_back(state);
         found = states.end() - 1;
       }
       const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
@@ -176,11 +166,11 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
   // Number the states so that masked ones come last (draw_depth's order).
   std::vector<std::uint32_t> order(states.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return caster_key(states[a].first) < caster_key(states[b].first); });
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return caster_key(states[a]) < caster_key(states[b]); });
   std::vector<std::uint32_t> rank(states.size());
   for (std::uint32_t i = 0; i < order.size(); ++i) {
     rank[order[i]] = i;
-    caster_states_.push_back(states[order[i]].first);
+    caster_states_.push_back(states[order[i]]);
   }
   for (Caster& caster : casters_) caster.state = rank[caster.state];
   if (caster_materials_.empty()) caster_materials_.emplace_back();
@@ -312,13 +302,7 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     gather_casters(registry);
     draw_maps(to_draw, reach);
   }
-  const std::size_t bytes = std::max<std::size_t>(views_.size(), 1) * sizeof(ShadowView);
-  if (!view_buffer_ || bytes > view_capacity_) {
-    view_capacity_ = std::max(bytes, 2 * view_capacity_);
-    view_buffer_ = gfx::create_buffer();
-    glNamedBufferStorage(view_buffer_.id(), static_cast<GLsizeiptr>(view_capacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  }
-  if (!views_.empty()) glNamedBufferSubData(view_buffer_.id(), 0, static_cast<GLsizeiptr>(views_.size() * sizeof(ShadowView)), views_.data());
+  view_buffer_.upload(views_.data(), views_.size() * sizeof(ShadowView));
   bind();
 }
 
@@ -421,7 +405,7 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
 
 void ShadowAtlas::bind() const {
   glBindTextureUnit(kShadowAtlasUnit, atlas_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.buffer.id());
 }
 
 }  // namespace atrium::shadows

@@ -100,9 +100,7 @@ class ShadowAtlas {
   AtlasAllocator allocator_;
   gfx::Texture atlas_;
   gfx::Framebuffer framebuffer_;
-  gfx::Buffer view_buffer_;
-  std::size_t view_capacity_ = 0;
-  gfx::StreamBuffer instances_, materials_, commands_;
+  gfx::StreamBuffer view_buffer_, instances_, materials_, commands_;
   std::unordered_map<ecs::Entity, Entry> entries_;
   std::vector<ShadowView> views_;
   // Geometry tracking: each instance's world box last frame, and this frame's changes.

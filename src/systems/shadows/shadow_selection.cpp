@@ -1,6 +1,7 @@
 #include "systems/shadows/shadow_selection.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -10,18 +11,14 @@
 namespace atrium::shadows {
 namespace {
 
-int next_power_of_two(float value) {
-  int p = 1;
-  while (static_cast<float>(p) < value && p < (1 << 30)) p *= 2;
-  return p;
-}
-
 // The map side for a light `pixels` in radius on screen: one texel per pixel of
 // its radius (a cube face spans 90 degrees, the light's sphere about as much
 // of the screen as it fills), a power of two, kept while the light's size
 // stays near the size it was given.
 int map_resolution(float pixels, int previous, const AtlasLimits& limits) {
-  int wanted = std::clamp(next_power_of_two(pixels), limits.min_tile, limits.max_tile);
+  // The limits are powers of two: rounding up within them stays within them.
+  const float clamped = std::clamp(pixels, static_cast<float>(limits.min_tile), static_cast<float>(limits.max_tile));
+  int wanted = static_cast<int>(std::bit_ceil(static_cast<unsigned>(std::ceil(clamped))));
   if (previous > 0 && wanted != previous) {
     const float p = static_cast<float>(previous);
     if (wanted > previous && pixels < p * 1.4f) wanted = previous;
@@ -30,49 +27,54 @@ int map_resolution(float pixels, int previous, const AtlasLimits& limits) {
   return wanted;
 }
 
-}  // namespace
-
-float light_importance(const GpuLight& light, const ViewState& view, glm::ivec2 viewport, float* pixels_radius) {
+// The estimated contribution of one light to the image (0 when its sphere
+// misses `frustum`, the view's) and its radius on screen in pixels.
+float light_importance(const GpuLight& light, const ViewState& view, const Frustum& frustum, glm::ivec2 viewport, float& pixels_radius) {
   const glm::vec3 color(light.color_kind);
   const float luminance = glm::dot(color, glm::vec3(0.2126f, 0.7152f, 0.0722f));
   const float screen_pixels = static_cast<float>(viewport.x) * static_cast<float>(viewport.y);
   if (static_cast<GpuLightKind>(light.color_kind.w) == GpuLightKind::Directional) {
     // Cascades cover the whole view at every size: as large as a tile may be.
-    if (pixels_radius) *pixels_radius = std::numeric_limits<float>::max();
+    pixels_radius = std::numeric_limits<float>::max();
     return luminance > 0.0f ? std::numeric_limits<float>::max() : 0.0f;
   }
   const glm::vec3 centre(light.position_radius);
   const float radius = light.position_radius.w;
-  if (!intersects(frustum_of(view.view_projection), centre, radius)) return 0.0f;
+  if (!intersects(frustum, centre, radius)) return 0.0f;
   const float distance = glm::length(centre - view.camera_position);
   float pixels = static_cast<float>(std::max(viewport.x, viewport.y));
   if (distance > radius * 1.0001f) {
     pixels = std::min(pixels, radius / std::sqrt(distance * distance - radius * radius) * view.projection[1][1] * 0.5f *
                                   static_cast<float>(viewport.y));
   }
-  if (pixels_radius) *pixels_radius = pixels;
+  pixels_radius = pixels;
   const float coverage = std::min(1.0f, 3.14159265f * pixels * pixels / screen_pixels);
   return luminance * coverage;
 }
+
+}  // namespace
 
 std::vector<ShadowChoice> choose_shadowed_lights(std::span<const GpuLight> lights, std::span<const ecs::Entity> entities,
                                                  const ViewState& view, glm::ivec2 viewport, int count,
                                                  const PreviousShadows& previous, const AtlasLimits& limits) {
   std::vector<ShadowChoice> choices;
   if (count <= 0) return choices;
+  const Frustum frustum = frustum_of(view.view_projection);
   std::vector<float> pixels(lights.size(), 0.0f);
   for (std::uint32_t i = 0; i < lights.size(); ++i) {
-    float score = light_importance(lights[i], view, viewport, &pixels[i]);
+    float score = light_importance(lights[i], view, frustum, viewport, pixels[i]);
     if (!(score > 0.0f)) continue;
     const ecs::Entity entity = i < entities.size() ? entities[i] : ecs::kNullEntity;
     if (!entity.is_null() && previous.count(entity) && score < std::numeric_limits<float>::max() / kKeepBonus) score *= kKeepBonus;
     choices.push_back({i, entity, 0, score});
   }
-  // Most important first; ties by entity, so the order does not depend on the light buffer's.
-  std::sort(choices.begin(), choices.end(), [](const ShadowChoice& a, const ShadowChoice& b) {
-    return a.score != b.score ? a.score > b.score : a.entity < b.entity;
-  });
-  if (choices.size() > static_cast<std::size_t>(count)) choices.resize(static_cast<std::size_t>(count));
+  // The `count` most important, in order; ties by entity, so the order does
+  // not depend on the light buffer's. A partial sort: a scene may hold a
+  // million candidates for a handful of maps.
+  const auto kept = std::min(choices.size(), static_cast<std::size_t>(count));
+  std::partial_sort(choices.begin(), choices.begin() + static_cast<std::ptrdiff_t>(kept), choices.end(),
+                    [](const ShadowChoice& a, const ShadowChoice& b) { return a.score != b.score ? a.score > b.score : a.entity < b.entity; });
+  choices.resize(kept);
 
   auto faces = [&](const ShadowChoice& c) { return view_count(static_cast<GpuLightKind>(lights[c.light].color_kind.w)); };
   long long area = 0;

@@ -43,10 +43,6 @@ struct ShadowChoice {
 // What a light shadowed last frame had.
 using PreviousShadows = std::unordered_map<ecs::Entity, int>;
 
-// The estimated contribution of one light to the image; 0 when its sphere
-// misses the view frustum.
-[[nodiscard]] float light_importance(const GpuLight& light, const ViewState& view, glm::ivec2 viewport, float* pixels_radius = nullptr);
-
 // Up to `count` lights, most important first, their maps' areas adding up to at
 // most the atlas (the least important are made smaller, then left out).
 [[nodiscard]] std::vector<ShadowChoice> choose_shadowed_lights(std::span<const GpuLight> lights, std::span<const ecs::Entity> entities,
