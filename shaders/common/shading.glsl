@@ -13,7 +13,7 @@ vec3 incoming_light(Surface s, Light light, out vec3 l) {
   uint kind = uint(light.color_kind.w);
   if (kind == kLightDirectional) {
     l = -light.direction.xyz;
-    return light_has_shadow(light) ? light.color_kind.rgb * shadow_visibility(light, s.position, s.normal, l) : light.color_kind.rgb;
+    return light.color_kind.rgb * shadow_visibility(light, s.position, s.normal, l);
   }
   vec3 to_light = light.position_radius.xyz - s.position;
   float distance = length(to_light);
@@ -23,9 +23,8 @@ vec3 incoming_light(Surface s, Light light, out vec3 l) {
     float cone = clamp(dot(light.direction.xyz, -l) * light.spot.x + light.spot.y, 0.0, 1.0);
     attenuation *= cone * cone;
   }
-  vec3 radiance = light.color_kind.rgb * attenuation;
-  if (attenuation > 0.0 && light_has_shadow(light)) radiance *= shadow_visibility(light, s.position, s.normal, l);
-  return radiance;
+  if (attenuation > 0.0) attenuation *= shadow_visibility(light, s.position, s.normal, l);
+  return light.color_kind.rgb * attenuation;
 }
 
 // Whether a light can contribute at `position`: directional lights always,

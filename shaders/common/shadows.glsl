@@ -57,15 +57,12 @@ bool shadow_view_of(Light light, vec3 position, out uint index, out float depth)
   return true;
 }
 
-// Whether the ShadowAtlas gave `light` maps this frame.
-bool light_has_shadow(Light light) { return light.spot.z > 0.5; }
-
 // The share of `light` that reaches `position` (1 lit, 0 shadowed): 3x3
 // bilinear comparisons (a 4x4-texel filtered kernel) in the light's map, the
 // point moved off the surface along `normal` in proportion to the angle
 // between it and `l`, the direction to the light.
 float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
-  if (!light_has_shadow(light)) return 1.0;
+  if (light.spot.z < 0.5) return 1.0;  // no maps this frame
   uint index;
   float depth;
   if (!shadow_view_of(light, position, index, depth)) return 1.0;
