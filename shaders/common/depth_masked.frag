@@ -6,15 +6,13 @@
 #include "common/frame.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
+#include "common/shading_depth.glsl"
 
-in vec3 v_position;
-in vec3 v_normal;
-in vec4 v_tangent;
-in vec2 v_uv[5];
-in vec4 v_color;
+#include "common/mesh_inputs.glsl"
 
 void main() {
   count_fragment();
   Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
   if (s.alpha < material_alpha_cutoff()) discard;
+  write_shading_depth();
 }

@@ -24,7 +24,10 @@ Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv[5], v
   uint flags = v_material_flags;
   Surface s;
   s.position = position;
-  vec4 base = texture(u_base_color_texture, uv[0]) * m.base_color_factor * color;
+  // Each factor lies in [0, 1] (glTF), but with MSAA a silhouette pixel's vertex
+  // colour is extrapolated from its centre off the triangle; clamped, as the
+  // G-buffer's 8-bit albedo stores it, so forward and deferred agree there.
+  vec4 base = clamp(texture(u_base_color_texture, uv[0]) * m.base_color_factor * color, 0.0, 1.0);
   s.albedo = base.rgb;
   s.alpha = base.a;
   s.unlit = (flags & kMaterialUnlit) != 0u;

@@ -8,11 +8,7 @@
 #define GBUFFER_WRITE
 #include "common/gbuffer.glsl"
 
-in vec3 v_position;
-in vec3 v_normal;
-in vec4 v_tangent;
-in vec2 v_uv[5];
-in vec4 v_color;
+#include "common/mesh_inputs.glsl"
 
 void main() {
   count_fragment();

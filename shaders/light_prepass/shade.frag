@@ -15,11 +15,7 @@ layout(binding = 5) uniform target2D u_light_diffuse;
 layout(binding = 6) uniform target2D u_light_specular_f0;
 layout(binding = 7) uniform target2D u_light_specular;
 
-in vec3 v_position;
-in vec3 v_normal;
-in vec4 v_tangent;
-in vec2 v_uv[5];
-in vec4 v_color;
+#include "common/mesh_inputs.glsl"
 
 void main() {
   count_fragment();

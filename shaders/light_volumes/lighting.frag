@@ -12,11 +12,13 @@
 flat in uint v_light;
 #endif
 
-// Counting has side effects, which make GL run the shader before the depth and
-// stencil tests; count only what passes them, as a GPU's early tests would.
-#ifdef COUNT_LIGHTS
+// Tests before the shader, for two reasons. The stencil's reset to zero must
+// reach every sample the volume covers, also those the shader discards (no
+// surface; a sphere reaching past the far plane counts there): a count left
+// behind on an MSAA edge's empty sample lets the per-pixel draw after the
+// per-sample one light that pixel twice. And counting (COUNT_LIGHTS) has side
+// effects, which would otherwise make GL run the shader before the tests.
 layout(early_fragment_tests) in;
-#endif
 
 void main() {
   Surface s;

@@ -6,7 +6,10 @@
 // tile, and the indices written: no cap per tile. With BLENDED it fills the list
 // for blended surfaces instead: a pixel's bounds run from the nearest blended
 // surface in front of its opaque one (u_blended_depth) back to that opaque one.
-// With MSAA the bounds take in every sample.
+// With MSAA the bounds take in every sample. The opaque bounds are read from the
+// G-buffer's positions, the very points the lighting pass shades: with MSAA a
+// silhouette pixel's stored position is extrapolated to its centre, off the
+// depths the depth buffer holds for its samples.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "common/frame.glsl"
@@ -14,10 +17,13 @@ layout(local_size_x = 16, local_size_y = 16) in;
 #include "common/light_lists.glsl"
 #include "common/msaa.glsl"
 
-layout(binding = 0) uniform target2D u_depth;
 #ifdef BLENDED
+layout(binding = 0) uniform target2D u_depth;
 // The opaque depth with the blended surfaces drawn over it.
 layout(binding = 1) uniform target2D u_blended_depth;
+#else
+#include "common/surface.glsl"
+#include "common/gbuffer.glsl"
 #endif
 uniform uvec2 u_tiles;
 uniform uint u_list_capacity;
@@ -67,8 +73,8 @@ void main() {
   barrier();
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   for (int i = 0; i < kSamples && all(lessThan(pixel, ivec2(u_viewport_size))); ++i) {
-    float depth = fetch_sample(u_depth, pixel, i).r;
 #ifdef BLENDED
+    float depth = fetch_sample(u_depth, pixel, i).r;
     float front = fetch_sample(u_blended_depth, pixel, i).r;
     if (front > depth) {
       // Glass over the sky reaches to the far plane.
@@ -76,8 +82,9 @@ void main() {
       atomicMax(s_max_depth, floatBitsToUint(depth > kDepthFar ? view_depth_from_depth(depth) : u_far));
     }
 #else
-    if (depth > kDepthFar) {
-      float view_depth = view_depth_from_depth(depth);
+    Surface s;
+    if (read_gbuffer_sample(pixel, i, s)) {
+      float view_depth = max(-(u_view * vec4(s.position, 1.0)).z, 0.0);  // ordered as bits: not negative
       atomicMin(s_min_depth, floatBitsToUint(view_depth));
       atomicMax(s_max_depth, floatBitsToUint(view_depth));
     }

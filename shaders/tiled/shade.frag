@@ -11,11 +11,7 @@
 layout(early_fragment_tests) in;
 #endif
 
-in vec3 v_position;
-in vec3 v_normal;
-in vec4 v_tangent;
-in vec2 v_uv[5];
-in vec4 v_color;
+#include "common/mesh_inputs.glsl"
 
 layout(location = 0) out vec4 out_color;
 

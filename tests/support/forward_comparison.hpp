@@ -11,6 +11,7 @@
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "support/modes.hpp"
 
 namespace atrium::testing {
 
@@ -26,6 +27,24 @@ inline double share_differing(const assets::Image& a, const assets::Image& b, in
     }
   }
   return static_cast<double>(differing) / static_cast<double>(a.rgba.size() / 4);
+}
+
+// From each of the world's five stored views, renders forward and then every
+// other mode, and calls `check(mode, view, reference, image)` with forward's
+// image as the reference.
+template <typename Check>
+void compare_every_mode_with_forward(World& world, Check check) {
+  for (int view = 1; view <= 5; ++view) {
+    world.set_view(view);
+    world.set_mode("forward");
+    world.frame(0.0);
+    const assets::Image reference = world.renderer().read_output();
+    for (const std::string& mode : non_forward_modes()) {
+      world.set_mode(mode);
+      world.frame(0.0);
+      check(mode, view, reference, world.renderer().read_output());
+    }
+  }
 }
 
 inline void expect_forward_picture_from_every_view(World& world, const std::string& mode, const std::string& name,

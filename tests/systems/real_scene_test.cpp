@@ -19,6 +19,7 @@
 #include "assets/scene_file.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/limits.hpp"
+#include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "systems/camera.hpp"
 #include "systems/lighting/technique.hpp"
@@ -102,18 +103,10 @@ TEST_F(SponzaScene, EveryViewLooksIntoTheAtriumNotAtAWall) {
 
 TEST_F(SponzaScene, EveryModeDrawsForwardsPictureFromEveryView) {
   World world(options());
-  for (int view = 1; view <= 5; ++view) {
-    world.set_view(view);
-    world.set_mode("forward");
-    world.frame(0.0);
-    const assets::Image reference = world.renderer().read_output();
-    for (const std::string& mode : lighting::mode_names()) {
-      if (mode == "forward") continue;
-      world.set_mode(mode);
-      world.frame(0.0);
-      EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << mode << " view " << view;
-    }
-  }
+  testing::compare_every_mode_with_forward(world, [](const std::string& mode, int view, const assets::Image& reference,
+                                                      const assets::Image& image) {
+    EXPECT_GE(assets::psnr(reference, image), 40.0) << mode << " view " << view;
+  });
 }
 
 // The stored views shade within a small factor of each other; against, inside

@@ -6,6 +6,7 @@
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "gfx/limits.hpp"
+#include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
 
@@ -35,17 +36,10 @@ assets::Image shrink(const assets::Image& image, int factor) {
 
 TEST_F(RenderSize, OnePixelRendersInEveryModeAsForwardDoes) {
   World world({"atrium", 24u, "forward", 1, {1, 1}});
-  for (int view = 1; view <= 5; ++view) {
-    world.set_view(view);
-    world.set_mode("forward");
-    world.frame(0.0);
-    const assets::Image reference = world.renderer().read_output();
-    for (const std::string& mode : testing::non_forward_modes()) {
-      world.set_mode(mode);
-      world.frame(0.0);
-      EXPECT_LE(assets::max_channel_difference(reference, world.renderer().read_output()), 2) << mode << " view " << view;
-    }
-  }
+  testing::compare_every_mode_with_forward(world, [](const std::string& mode, int view, const assets::Image& reference,
+                                                      const assets::Image& image) {
+    EXPECT_LE(assets::max_channel_difference(reference, image), 2) << mode << " view " << view;
+  });
 }
 
 TEST_F(RenderSize, An8192SquareImageShowsWhatASmallOneShowsInForwardAndDeferred) {

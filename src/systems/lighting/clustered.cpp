@@ -5,9 +5,18 @@
 namespace atrium::lighting {
 namespace {
 
-std::vector<gfx::ShaderDefine> mark_defines(bool pixel_bounds) {
-  if (pixel_bounds) return {};
-  return {{"ACTIVE_FLAGS"}};
+// Deferred marks from the G-buffer's positions, forward+ from depths.
+std::vector<gfx::ShaderDefine> mark_defines(bool pixel_bounds, bool from_gbuffer) {
+  std::vector<gfx::ShaderDefine> defines;
+  if (!pixel_bounds) defines.push_back({"ACTIVE_FLAGS"});
+  if (from_gbuffer) defines.push_back({"FROM_GBUFFER"});
+  return defines;
+}
+
+// Forward+'s pre-pass with MSAA also writes the shading depth (common/shading_depth.glsl).
+std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::vector<gfx::ShaderDefine> defines) {
+  if (!deferred && samples > 1) defines.push_back({"SHADING_DEPTH"});
+  return defines;
 }
 
 }  // namespace
@@ -18,10 +27,12 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       active_only_(options.active_clusters && !pixel_bounds_),
       grid_(options.cluster_grid, options.z_slicing),
       assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
-      mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_))),
-      mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_))),
-      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"})),
-      position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
+      mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
+      mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
+      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"},
+                                  prepass_defines(deferred, options.msaa, {}))),
+      position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
+                                       prepass_defines(deferred, options.msaa, {{"POSITION_ONLY"}}))),
       shading_(deferred ? SampleRatePrograms(gpu.shaders(), {"post/fullscreen.vert", "clustered/lighting.frag"}, {}, options.msaa)
                         : SampleRatePrograms(gpu.shaders(), {"common/mesh.vert", "clustered/shade.frag"}, {}, 1)),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
@@ -29,6 +40,12 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
 
 void ClusteredTechnique::resize(const FrameTargets& targets) {
   if (deferred_) gbuffer_.resize(targets.size, targets.depth_stencil);
+  if (deferred_ || targets.samples <= 1) return;
+  shading_depth_ = gfx::create_render_target(GL_R32F, targets.size.x, targets.size.y, targets.samples);
+  prepass_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(prepass_framebuffer_.id(), GL_COLOR_ATTACHMENT0, shading_depth_.id(), 0);
+  glNamedFramebufferTexture(prepass_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, targets.depth_stencil, 0);
+  gfx::require_complete(prepass_framebuffer_.id(), "clustered forward+ pre-pass");
 }
 
 GLuint ClusteredTechnique::mark_clusters(const FrameContext& frame, const FrameTargets& targets) {
@@ -43,7 +60,8 @@ GLuint ClusteredTechnique::mark_clusters(const FrameContext& frame, const FrameT
   }
   grid_.bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
-  glBindTextureUnit(0, targets.depth_stencil);
+  if (deferred_) gbuffer_.bind_textures();
+  else glBindTextureUnit(0, shading_depth_.id() != 0 ? shading_depth_.id() : targets.depth_stencil);
   mark_.use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
   if (!frame.draws.blended.empty()) {
@@ -70,9 +88,16 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
   } else {
     const auto pass = frame.timer.scope("depth pre-pass");
     begin_scene_pass(frame, targets);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    draw_depth(frame.draws.opaque, position_only_, geometry_);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (shading_depth_.id() != 0) {
+      glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer_.id());
+      const float far = gfx::kDepthFar;
+      glClearNamedFramebufferfv(prepass_framebuffer_.id(), GL_COLOR, 0, &far);
+      draw_depth(frame.draws.opaque, position_only_, geometry_);
+    } else {
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      draw_depth(frame.draws.opaque, position_only_, geometry_);
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    }
   }
   {
     const auto pass = frame.timer.scope("light assignment");

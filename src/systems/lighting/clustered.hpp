@@ -4,7 +4,7 @@
 // cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
 // fragment once; deferred shades from the G-buffer. By default a cluster's lights
 // are those touching the box of the pixels it holds this frame (read from the
-// depth buffer and from blended fragments); --cluster-bounds grid tests its whole
+// positions shading lights and from blended fragments); --cluster-bounds grid tests its whole
 // frustum slice instead. Blended surfaces are shaded forward+ from the same lists.
 #pragma once
 
@@ -32,8 +32,8 @@ class ClusteredTechnique final : public LightingTechnique {
 
  private:
   // Fills the per-cluster buffer assignment reads (pixel boxes, or active
-  // flags) from the depth buffer and the blended fragments in front of it;
-  // returns it.
+  // flags) from the positions shading will light (G-buffer, or depths) and the
+  // blended fragments in front of them; returns it.
   GLuint mark_clusters(const FrameContext& frame, const FrameTargets& targets);
 
   bool deferred_;
@@ -48,6 +48,10 @@ class ClusteredTechnique final : public LightingTechnique {
   SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)
   gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
   GBuffer gbuffer_;
+  // Forward+ with MSAA: the pre-pass's depth at pixel centres (R32F, per
+  // sample), where shading lights each fragment, and the framebuffer writing it.
+  gfx::Texture shading_depth_;
+  gfx::Framebuffer prepass_framebuffer_;
 };
 
 }  // namespace atrium::lighting

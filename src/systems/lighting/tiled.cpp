@@ -47,7 +47,7 @@ void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targ
   gbuffer_.draw_geometry(geometry_, frame);
   {
     const auto pass = frame.timer.scope("light culling");
-    glBindTextureUnit(0, targets.depth_stencil);
+    gbuffer_.bind_textures();
     assign_lights(*list_, assign_, [&](std::uint32_t capacity) { set_capacity(capacity); });
   }
   {
