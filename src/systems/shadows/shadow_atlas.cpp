@@ -37,6 +37,23 @@ bool glows(const assets::Material& material) {
 // seen from behind) still blocks light.
 auto caster_key(const lighting::DrawBatch& b) { return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers); }
 
+// Sends the patched lights of the staging copy to the GPU: runs of indices
+// less than kGap apart go as one upload (the lights between are unchanged, so
+// resending them is harmless), which keeps K shadowed lights from costing K
+// calls without resending a million lights for two far apart.
+void upload_patched_lights(const LightBuffer& lights, std::vector<std::uint32_t>& patched) {
+  constexpr std::uint32_t kGap = 64;
+  std::sort(patched.begin(), patched.end());
+  for (std::size_t begin = 0; begin < patched.size();) {
+    std::size_t end = begin + 1;
+    while (end < patched.size() && patched[end] - patched[end - 1] < kGap) ++end;
+    const std::uint32_t first = patched[begin], last = patched[end - 1];
+    glNamedBufferSubData(lights.buffer.id(), static_cast<GLintptr>(first * sizeof(GpuLight)),
+                         static_cast<GLsizeiptr>((last - first + 1) * sizeof(GpuLight)), &lights.staging[first]);
+    begin = end;
+  }
+}
+
 }  // namespace
 
 ShadowAtlas::ShadowAtlas(assets::GpuAssets& gpu) : gpu_(gpu), allocator_(limits_.max_tile, limits_.min_tile) {}
@@ -248,6 +265,7 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     cascade_frame.scene_max = scene->max;
   }
   const float atlas_texels = static_cast<float>(limits_.atlas_size);
+  std::vector<std::uint32_t> patched;
   for (const ShadowChoice& c : choices) {
     const auto found = entries_.find(c.entity);
     if (found == entries_.end()) continue;  // could not be placed (cannot happen with areas that fit)
@@ -293,9 +311,9 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     // The shaders find the light's views through spot.zw (lights.glsl).
     light.spot.z = static_cast<float>(first + 1);
     light.spot.w = static_cast<float>(light_views.size());
-    glNamedBufferSubData(lights.buffer.id(), static_cast<GLintptr>(c.light * sizeof(GpuLight) + offsetof(GpuLight, spot)),
-                         sizeof(glm::vec4), &light.spot);
+    patched.push_back(c.light);
   }
+  upload_patched_lights(lights, patched);
 
   if (!to_draw.empty()) {
     const auto pass = timer.scope("shadows");
