@@ -235,6 +235,19 @@ std::vector<std::string> split_list(std::string_view text) {
   return items;
 }
 
+// The items of a comma-separated list option, each read by `parse`, in order
+// and without repeats (measuring one twice would only repeat its rows).
+template <typename T, typename Parse>
+std::vector<T> parse_list(std::string_view name, std::string_view value, std::string_view what, Parse parse) {
+  std::vector<T> items;
+  for (const std::string& item : split_list(value)) {
+    T parsed = parse(item);
+    if (std::find(items.begin(), items.end(), parsed) == items.end()) items.push_back(std::move(parsed));
+  }
+  if (items.empty()) throw UsageError(std::string(name) + " expects a comma-separated list of " + std::string(what));
+  return items;
+}
+
 // The options only `atrium bench` has, or whose meaning differs there
 // (--lights takes a list). Returns false for an option that is not one.
 bool apply_bench_option(std::string_view name, std::string_view value, CliOptions& options) {
@@ -242,41 +255,30 @@ bool apply_bench_option(std::string_view name, std::string_view value, CliOption
   if (name == "--modes") {
     bench.modes.clear();
     if (value != "all") {
-      for (const std::string& mode : split_list(value)) {
+      bench.modes = parse_list<std::string>(name, value, "modes (or all)", [](const std::string& mode) {
         if (!lighting::find_technique(mode)) {
           throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
         }
-        bench.modes.push_back(mode);
-      }
-      if (bench.modes.empty()) throw UsageError("--modes expects all or a comma-separated list of modes");
+        return mode;
+      });
     }
   } else if (name == "--lights") {
-    bench.light_counts.clear();
-    for (const std::string& count : split_list(value)) {
-      bench.light_counts.push_back(parse_number<std::uint32_t>("--lights", count, 0, kMaxLights));
-    }
-    if (bench.light_counts.empty()) throw UsageError("--lights expects a comma-separated list of light counts");
+    bench.light_counts = parse_list<std::uint32_t>(name, value, "light counts", [](const std::string& count) {
+      return parse_number<std::uint32_t>("--lights", count, 0, kMaxLights);
+    });
   } else if (name == "--views") {
     bench.views.clear();
     if (value != "all") {
       for (const std::string& view : split_list(value)) bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
     }
   } else if (name == "--z-slicing") {
-    bench.z_slicings.clear();
-    for (const std::string& item : split_list(value)) {
-      const auto slicing = parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
-      if (std::find(bench.z_slicings.begin(), bench.z_slicings.end(), slicing) == bench.z_slicings.end()) {
-        bench.z_slicings.push_back(slicing);
-      }
-    }
-    if (bench.z_slicings.empty()) throw UsageError("--z-slicing expects a comma-separated list of slicings");
+    bench.z_slicings = parse_list<lighting::ZSlicing>(name, value, "slicings", [](const std::string& item) {
+      return parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
+    });
   } else if (name == "--shadows") {
-    bench.shadow_counts.clear();
-    for (const std::string& item : split_list(value)) {
-      const int count = parse_number<int>("--shadows", item, 0, shadows::kMaxShadowedLights);
-      if (std::find(bench.shadow_counts.begin(), bench.shadow_counts.end(), count) == bench.shadow_counts.end()) bench.shadow_counts.push_back(count);
-    }
-    if (bench.shadow_counts.empty()) throw UsageError("--shadows expects a comma-separated list of shadowed-light counts");
+    bench.shadow_counts = parse_list<int>(name, value, "shadowed-light counts", [](const std::string& item) {
+      return parse_number<int>("--shadows", item, 0, shadows::kMaxShadowedLights);
+    });
   } else if (name == "--shadow-redraw") {
     bench.shadow_redraw = true;
   } else if (name == "--frames") {
