@@ -28,6 +28,15 @@ bool same_light(const GpuLight& a, const GpuLight& b) {
          glm::vec2(a.spot) == glm::vec2(b.spot);
 }
 
+// Whether a light at `position` sits in the glowing surface with this box: a
+// lamp's glass or bulb around its light, which would otherwise shadow all of
+// it. The box grows by a tenth of its size (and a centimetre) for lights
+// placed on the glass rather than in it.
+bool inside_lamp(const Box& box, glm::vec3 position) {
+  const glm::vec3 margin = (box.max - box.min) * 0.1f + glm::vec3(0.01f);
+  return glm::all(glm::greaterThanEqual(position, box.min - margin)) && glm::all(glm::lessThanEqual(position, box.max + margin));
+}
+
 bool glows(const assets::Material& material) {
   return material.emissive_strength > 0.0f && glm::any(glm::greaterThan(material.emissive_factor, glm::vec3(0.0f)));
 }
@@ -142,9 +151,8 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
       const assets::Primitive& primitive = primitives[p];
       if (primitive.indices.empty() || bounds.primitives[p].empty) continue;
       const assets::Material& material = asset.materials.at(primitive.material);
-      // Blended surfaces cast no shadow, nor do glowing ones: a light's lamp
-      // glass (the built-in scene's, Bistro's lanterns) surrounds the light.
-      if (material.alpha_mode == assets::AlphaMode::Blend || glows(material)) continue;
+      // Blended surfaces cast no shadow (glass lets light through).
+      if (material.alpha_mode == assets::AlphaMode::Blend) continue;
       lighting::DrawBatch state = lighting::batch_state(material, gpu_, gpu_asset.vertex_array.id(), false);
       state.double_sided = true;
       std::uint32_t material_slot = 0;
@@ -171,6 +179,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
       const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
       Caster caster{bounds.primitives[p], static_cast<std::uint32_t>(found - states.begin()),
                     {range.index_count, 1, range.first_index, range.base_vertex, static_cast<std::uint32_t>(caster_instances_.size() - 1)}};
+      caster.glows = glows(material);
       if (!primitive.meshlets.empty() && p + 1 < bounds.meshlet_offsets.size() &&
           bounds.meshlet_offsets[p + 1] - bounds.meshlet_offsets[p] == primitive.meshlets.size()) {
         caster.meshlet_bounds = bounds.meshlets.data() + bounds.meshlet_offsets[p];
@@ -336,7 +345,12 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     if (v == 0 || sphere != reach[v - 1] || sphere.w < 0.0f) {
       near_light.clear();
       for (std::uint32_t c = 0; c < casters_.size(); ++c) {
-        if (sphere.w < 0.0f || box_meets_sphere(casters_[c].box, glm::vec3(sphere), sphere.w)) near_light.push_back(c);
+        const Caster& caster = casters_[c];
+        if (sphere.w < 0.0f) {
+          near_light.push_back(c);
+        } else if (box_meets_sphere(caster.box, glm::vec3(sphere), sphere.w) && !(caster.glows && inside_lamp(caster.box, glm::vec3(sphere)))) {
+          near_light.push_back(c);
+        }
       }
     }
     const Frustum frustum = frustum_of(views_[views[v]].view_projection);

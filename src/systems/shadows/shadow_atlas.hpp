@@ -83,6 +83,9 @@ class ShadowAtlas {
     const MeshletBounds* meshlet_bounds = nullptr;
     const assets::Meshlet* meshlets = nullptr;
     std::uint32_t meshlet_count = 0;
+    // An emissive surface: no shadow for a light inside its box (the light's
+    // own lamp glass), a shadow for every other light.
+    bool glows = false;
   };
 
   void release();

@@ -1,7 +1,8 @@
 // Shadows (--shadows K) as a user sees them: a wall between a light and the
 // floor leaves the far side dark, pixel for pixel against an analytic
 // evaluation (a ray from each floor point to the light, tested against the
-// wall's box), for point, spot and directional lights; every mode draws the
+// wall's box), for point, spot and directional lights, and by a glowing wall,
+// though not from a light inside it (lamp glass); every mode draws the
 // forward picture with shadows on; maps are drawn again only for what moved;
 // and the CPU parts (tile allocator, light selection) hold their promises.
 #include <cmath>
@@ -52,7 +53,8 @@ bool segment_hits_box(glm::vec3 from, glm::vec3 to, glm::vec3 min, glm::vec3 max
   return true;
 }
 
-std::unique_ptr<World> wall_world(const assets::SceneLight& light, const char* mode, int shadows) {
+// `glowing_wall`: the wall's material is emissive, as a lamp's glass is.
+std::unique_ptr<World> wall_world(const assets::SceneLight& light, const char* mode, int shadows, bool glowing_wall = false) {
   assets::AssetManager manager;
   assets::MeshAsset mesh;
   assets::Material floor;
@@ -62,6 +64,7 @@ std::unique_ptr<World> wall_world(const assets::SceneLight& light, const char* m
   mesh.materials.push_back(floor);
   assets::Material wall = floor;
   wall.base_color_factor = glm::vec4(0.5f, 0.4f, 0.3f, 1.0f);
+  if (glowing_wall) wall.emissive_factor = glm::vec3(0.8f, 0.7f, 0.4f);
   mesh.materials.push_back(wall);
   mesh.meshes.push_back({"floor", {assets::add_geometry(mesh, assets::shapes::grid(glm::vec3(-kHalf, 0, kHalf), glm::vec3(2 * kHalf, 0, 0),
                                                                                     glm::vec3(0, 0, -2 * kHalf), 8, 8, 1.0f), 0)}});
@@ -130,11 +133,11 @@ Incoming incoming(const assets::SceneLight& light, glm::vec3 p) {
 // filter's penumbra (a few texels of the map, stretched where light grazes the
 // floor) is left out: floor points whose neighbours `band` metres away
 // disagree about the wall.
-void expect_analytic_shadow(const assets::SceneLight& light, float band) {
-  const std::unique_ptr<World> world = wall_world(light, "forward", 1);
+void expect_analytic_shadow(const assets::SceneLight& light, float band, bool glowing_wall = false) {
+  const std::unique_ptr<World> world = wall_world(light, "forward", 1, glowing_wall);
   world->frame(0.0);
   const assets::Image image = world->renderer().read_output();
-  const std::string name = "shadow_wall_" + std::to_string(static_cast<int>(light.kind));
+  const std::string name = "shadow_wall_" + std::to_string(static_cast<int>(light.kind)) + (glowing_wall ? "_glowing" : "");
   assets::write_png(name + ".png", image);
   // The analytic picture beside it, for a look (black: not compared).
   assets::Image expected_image{kSize.x, kSize.y, std::vector<std::uint8_t>(image.rgba.size(), 0)};
@@ -208,6 +211,34 @@ TEST_F(Shadows, ADirectionalLightsCascadesShadowTheFloor) {
   light.intensity = 0.8f;
   // The far cascade's texels are about 4 cm and the light grazes the floor at 30 degrees.
   expect_analytic_shadow(light, 0.5f);
+}
+
+// Emissive surfaces cast shadows like any other, except from a light inside
+// them: a lamp's glass around its own light.
+TEST_F(Shadows, AGlowingWallShadowsALightOutsideIt) {
+  assets::SceneLight light;
+  light.position = glm::vec3(0.0f, 1.5f, -1.5f);
+  light.color = glm::vec3(1.0f, 0.9f, 0.8f);
+  light.intensity = 6.0f;
+  light.radius = 12.0f;
+  expect_analytic_shadow(light, 0.15f, true);
+}
+
+TEST_F(Shadows, AGlowingBoxAroundALightDoesNotShadowIt) {
+  assets::SceneLight light;
+  light.position = glm::vec3(0.0f, 1.5f, 0.0f);  // inside the wall, which glows like lamp glass
+  light.color = glm::vec3(1.0f, 0.9f, 0.8f);
+  light.intensity = 6.0f;
+  light.radius = 12.0f;
+  const std::unique_ptr<World> unshadowed = wall_world(light, "forward", 0, true);
+  unshadowed->frame(0.0);
+  const std::unique_ptr<World> shadowed = wall_world(light, "forward", 1, true);
+  shadowed->frame(0.0);
+  EXPECT_EQ(shadowed->renderer().stats().shadows.lights, 1u);
+  const assets::Image image = shadowed->renderer().read_output();
+  assets::write_png("shadow_lamp_glass.png", image);
+  // Were the box a caster, it would enclose the light and darken the floor.
+  EXPECT_GE(assets::psnr(unshadowed->renderer().read_output(), image), 50.0);
 }
 
 TEST_F(Shadows, EveryModeDrawsTheForwardPictureWithShadowsOn) {
