@@ -181,13 +181,18 @@ void expect_analytic_shadow(const assets::SceneLight& light, float band, bool gl
                       << ", " << worst_pixel.y << "), floor point (" << worst_point.x << ", " << worst_point.z << ")";
 }
 
-TEST_F(Shadows, APointLightBehindAWallLeavesTheFarSideDark) {
+// A warm point light of 12 m at `position`.
+assets::SceneLight point_light(glm::vec3 position) {
   assets::SceneLight light;
-  light.position = glm::vec3(0.0f, 1.5f, -1.5f);
+  light.position = position;
   light.color = glm::vec3(1.0f, 0.9f, 0.8f);
   light.intensity = 6.0f;
   light.radius = 12.0f;
-  expect_analytic_shadow(light, 0.15f);
+  return light;
+}
+
+TEST_F(Shadows, APointLightBehindAWallLeavesTheFarSideDark) {
+  expect_analytic_shadow(point_light(glm::vec3(0.0f, 1.5f, -1.5f)), 0.15f);
 }
 
 TEST_F(Shadows, ASpotLightShadowsWhatItsConeReaches) {
@@ -216,20 +221,11 @@ TEST_F(Shadows, ADirectionalLightsCascadesShadowTheFloor) {
 // Emissive surfaces cast shadows like any other, except from a light inside
 // them: a lamp's glass around its own light.
 TEST_F(Shadows, AGlowingWallShadowsALightOutsideIt) {
-  assets::SceneLight light;
-  light.position = glm::vec3(0.0f, 1.5f, -1.5f);
-  light.color = glm::vec3(1.0f, 0.9f, 0.8f);
-  light.intensity = 6.0f;
-  light.radius = 12.0f;
-  expect_analytic_shadow(light, 0.15f, true);
+  expect_analytic_shadow(point_light(glm::vec3(0.0f, 1.5f, -1.5f)), 0.15f, true);
 }
 
 TEST_F(Shadows, AGlowingBoxAroundALightDoesNotShadowIt) {
-  assets::SceneLight light;
-  light.position = glm::vec3(0.0f, 1.5f, 0.0f);  // inside the wall, which glows like lamp glass
-  light.color = glm::vec3(1.0f, 0.9f, 0.8f);
-  light.intensity = 6.0f;
-  light.radius = 12.0f;
+  const assets::SceneLight light = point_light(glm::vec3(0.0f, 1.5f, 0.0f));  // inside the wall, which glows like lamp glass
   const std::unique_ptr<World> unshadowed = wall_world(light, "forward", 0, true);
   unshadowed->frame(0.0);
   const std::unique_ptr<World> shadowed = wall_world(light, "forward", 1, true);
