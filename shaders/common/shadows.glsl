@@ -2,8 +2,16 @@
 // casters in its shadow maps. The ShadowAtlas (src/systems/shadows/) draws the
 // maps of this frame's shadowed lights into tiles of one depth texture and
 // points each such light's spot.z at its first view; other lights are unshadowed.
+// Compiled in only with SHADOWS (the renderer's global define while --shadows
+// is above 0): a software rasteriser runs both sides of a branch for a group
+// of pixels, so the lookup left in every light loop, even never taken, made
+// lighting 2.7x slower on llvmpipe (clustered-deferred, 1024 lights).
 #include "frame.glsl"
 #include "lights.glsl"
+
+#ifndef SHADOWS
+float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) { return 1.0; }
+#else
 
 // C++ twin: ShadowView in src/systems/shadows/shadow_views.hpp.
 struct ShadowView {
@@ -84,3 +92,4 @@ float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
   }
   return lit / 9.0;
 }
+#endif

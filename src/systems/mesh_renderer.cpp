@@ -150,8 +150,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const int counting = counting_lights ? 1 : counting_fragments ? 2 : 0;
   const bool split_lighting = settings.technique_options.split_lighting || debug_view == lighting::kDiffuseLightView ||
                               debug_view == lighting::kSpecularLightView;
+  const bool shadowed = settings.shadows > 0;
   if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_ ||
-      split_lighting != split_lighting_) {
+      split_lighting != split_lighting_ || shadowed != shadowed_) {
     const int model = lighting::shading_model_index(settings.shading);
     if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
     std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
@@ -160,10 +161,12 @@ void MeshRenderer::render(ecs::Registry& registry) {
     if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
     if (split_lighting) globals.push_back({"SPLIT_LIGHTING"});
     if (settings.technique_options.msaa > 1) globals.push_back({"MSAA_SAMPLES", std::to_string(settings.technique_options.msaa)});
+    if (shadowed) globals.push_back({"SHADOWS"});  // the lookup in every light loop (common/shadows.glsl)
     gpu_.shaders().set_global_defines(std::move(globals));
     tonemap_ = &gpu_.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"});
     shading_ = settings.shading;
     counting_ = counting;
+    shadowed_ = shadowed;
     // Every target is remade with the new sample count.
     if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
     technique_options_ = settings.technique_options;

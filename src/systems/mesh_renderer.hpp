@@ -103,6 +103,7 @@ class MeshRenderer {
   lighting::TechniqueOptions technique_options_;
   int counting_ = 0;  // what the shaders count: 0 nothing, 1 lights, 2 fragments
   bool split_lighting_ = false;  // shaders compiled with SPLIT_LIGHTING
+  bool shadowed_ = false;        // shaders compiled with SHADOWS (--shadows above 0)
   std::unique_ptr<lighting::DebugViews> debug_views_;
   bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;
