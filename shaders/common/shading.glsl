@@ -8,12 +8,14 @@
 #include "shadows.glsl"
 
 // Radiance that reaches `s` from `light` (colour times falloff, times what its
-// shadow map lets through) and the direction towards it, for every light kind.
-vec3 incoming_light(Surface s, Light light, out vec3 l) {
+// shadow maps let through when `shadowed`) and the direction towards it, for
+// every light kind. Callers pass `shadowed` as a constant where they can (the
+// loops below), so that unshadowed lights compile without the lookup.
+vec3 incoming_light(Surface s, Light light, out vec3 l, bool shadowed) {
   uint kind = uint(light.color_kind.w);
   if (kind == kLightDirectional) {
     l = -light.direction.xyz;
-    return light.color_kind.rgb * shadow_visibility(light, s.position, s.normal, l);
+    return light.color_kind.rgb * (shadowed ? shadow_visibility(light, s.position, s.normal, l) : 1.0);
   }
   vec3 to_light = light.position_radius.xyz - s.position;
   float distance = length(to_light);
@@ -23,7 +25,7 @@ vec3 incoming_light(Surface s, Light light, out vec3 l) {
     float cone = clamp(dot(light.direction.xyz, -l) * light.spot.x + light.spot.y, 0.0, 1.0);
     attenuation *= cone * cone;
   }
-  if (attenuation > 0.0) attenuation *= shadow_visibility(light, s.position, s.normal, l);
+  if (shadowed && attenuation > 0.0) attenuation *= shadow_visibility(light, s.position, s.normal, l);
   return light.color_kind.rgb * attenuation;
 }
 
@@ -82,12 +84,13 @@ vec3 light_total(LightSum sum) {
 #endif
 }
 
-// Adds what `light` reflects from `s` towards the camera (direction v) to `sum`.
-void add_light(inout LightSum sum, Surface s, vec3 v, Light light) {
+// Adds what `light` reflects from `s` towards the camera (direction v) to
+// `sum`, looking its shadow maps up when `shadowed`.
+void add_light_as(inout LightSum sum, Surface s, vec3 v, Light light, bool shadowed) {
   count_light_evaluation();
   if (s.unlit) return;
   vec3 l;
-  vec3 radiance = incoming_light(s, light, l);
+  vec3 radiance = incoming_light(s, light, l, shadowed);
   if (all(lessThanEqual(radiance, vec3(0.0)))) return;
 #ifdef SPLIT_LIGHTING
   vec3 diffuse, specular;
@@ -99,6 +102,34 @@ void add_light(inout LightSum sum, Surface s, vec3 v, Light light) {
 #endif
 }
 
+// The same for a pass that evaluates one light at a time (light volumes).
+void add_light(inout LightSum sum, Surface s, vec3 v, Light light) { add_light_as(sum, s, v, light, has_shadow_maps(light)); }
+
+// Loops over lights take the shadowed ones first, each with its map lookup,
+// and then the rest without: the ShadowAtlas moves the shadowed lights to the
+// front of the light buffer, and the tile and cluster lists keep them first
+// (common/list_shading.glsl). One loop with the lookup behind a branch would
+// cost every light: GPU lanes diverge, and llvmpipe runs both sides of a
+// branch for its group of pixels.
+
+// Adds every light in the buffer to `sum`; with LIGHT_RADIUS_CULL (mode
+// deferred-radius) those that cannot reach `s` are skipped unevaluated.
+void add_buffer_lights(inout LightSum sum, Surface s, vec3 v) {
+  uint i = 0u;
+  for (; i < u_light_count && has_shadow_maps(u_lights[i]); ++i) {
+#ifdef LIGHT_RADIUS_CULL
+    if (!light_reaches(u_lights[i], s.position)) continue;
+#endif
+    add_light_as(sum, s, v, u_lights[i], true);
+  }
+  for (; i < u_light_count; ++i) {
+#ifdef LIGHT_RADIUS_CULL
+    if (!light_reaches(u_lights[i], s.position)) continue;
+#endif
+    add_light_as(sum, s, v, u_lights[i], false);
+  }
+}
+
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {
   return ambient * s.albedo * s.occlusion + s.emissive;
 }
@@ -107,6 +138,6 @@ vec3 shade_unlit_terms(Surface s, vec3 ambient) {
 vec3 shade_all_lights(Surface s) {
   vec3 v = normalize(u_camera_position.xyz - s.position);
   LightSum sum = no_light();
-  for (uint i = 0u; i < u_light_count; ++i) add_light(sum, s, v, u_lights[i]);
+  add_buffer_lights(sum, s, v);
   return shade_unlit_terms(s, u_ambient.rgb) + light_total(sum);
 }

@@ -10,8 +10,11 @@
 #include "lights.glsl"
 
 #ifndef SHADOWS
+bool has_shadow_maps(Light light) { return false; }
 float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) { return 1.0; }
 #else
+// Whether the ShadowAtlas drew maps for `light` this frame.
+bool has_shadow_maps(Light light) { return light.spot.z > 0.5; }
 
 // C++ twin: ShadowView in src/systems/shadows/shadow_views.hpp.
 struct ShadowView {
@@ -70,7 +73,7 @@ bool shadow_view_of(Light light, vec3 position, out uint index, out float depth)
 // point moved off the surface along `normal` in proportion to the angle
 // between it and `l`, the direction to the light.
 float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
-  if (light.spot.z < 0.5) return 1.0;  // no maps this frame
+  if (!has_shadow_maps(light)) return 1.0;
   uint index;
   float depth;
   if (!shadow_view_of(light, position, index, depth)) return 1.0;

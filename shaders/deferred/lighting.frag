@@ -20,11 +20,6 @@ void main() {
   }
   vec3 v = normalize(u_camera_position.xyz - s.position);
   LightSum sum = no_light();
-  for (uint i = 0u; i < u_light_count; ++i) {
-#ifdef LIGHT_RADIUS_CULL
-    if (!light_reaches(u_lights[i], s.position)) continue;
-#endif
-    add_light(sum, s, v, u_lights[i]);
-  }
+  add_buffer_lights(sum, s, v);
   write_lighting(shade_unlit_terms(s, u_ambient.rgb), sum);
 }

@@ -29,7 +29,7 @@ vec3 g_diffuse = vec3(0.0), g_specular_f0 = vec3(0.0), g_specular = vec3(0.0);
 void accumulate(Surface s, vec3 v, Light light) {
   count_light_evaluation();
   vec3 l;
-  vec3 radiance = incoming_light(s, light, l);
+  vec3 radiance = incoming_light(s, light, l, has_shadow_maps(light));
   if (all(lessThanEqual(radiance, vec3(0.0)))) return;
   vec3 t = brdf_terms(s.normal, v, l, s.roughness);
   g_diffuse += t.x * radiance;

@@ -3,17 +3,19 @@
 // depths, takes their view-space bounds, and tests every light's sphere against
 // the tile's frustum (four side planes and the depth bounds). Matching lights
 // are counted, a range of the global list is reserved with one atomic add per
-// tile, and the indices written: no cap per tile. With BLENDED it fills the list
-// for blended surfaces instead: a pixel's bounds run from the nearest blended
-// surface in front of its opaque one (u_blended_depth) back to that opaque one.
-// With MSAA the bounds take in every sample. The opaque bounds are read from the
-// G-buffer's positions, the very points the lighting pass shades: with MSAA a
-// silhouette pixel's stored position is extrapolated to its centre, off the
-// depths the depth buffer holds for its samples.
+// tile, and the indices written, those with shadow maps first: no cap per
+// tile. With BLENDED it fills the list for blended surfaces instead: a
+// pixel's bounds run from the nearest blended surface in front of its opaque
+// one (u_blended_depth) back to that opaque one. With MSAA the bounds take in
+// every sample. The opaque bounds are read from the G-buffer's positions, the
+// very points the lighting pass shades: with MSAA a silhouette pixel's stored
+// position is extrapolated to its centre, off the depths the depth buffer
+// holds for its samples.
 layout(local_size_x = 16, local_size_y = 16) in;
 
 #include "common/frame.glsl"
 #include "common/lights.glsl"
+#include "common/shadows.glsl"
 #include "common/light_lists.glsl"
 #include "common/msaa.glsl"
 
@@ -31,8 +33,10 @@ uniform uint u_list_capacity;
 shared uint s_min_depth;  // float bits: positive floats order like their bits
 shared uint s_max_depth;
 shared uint s_count;
+shared uint s_shadowed;  // of s_count, the lights with shadow maps: written first
 shared uint s_offset;
 shared uint s_written;
+shared uint s_written_shadowed;
 shared vec4 s_planes[4];
 
 // The view-space direction of the ray through a pixel corner (at depth 1).
@@ -61,7 +65,9 @@ void main() {
     s_min_depth = floatBitsToUint(1e30);
     s_max_depth = 0u;
     s_count = 0u;
+    s_shadowed = 0u;
     s_written = 0u;
+    s_written_shadowed = 0u;
     // Side planes through the eye and the tile's corner rays, normals inward.
     vec2 lo = vec2(tile * 16u), hi = min(lo + 16.0, u_viewport_size);
     vec3 a = corner_ray(lo), b = corner_ray(vec2(hi.x, lo.y)), c = corner_ray(hi), d = corner_ray(vec2(lo.x, hi.y));
@@ -96,7 +102,10 @@ void main() {
   uint threads = gl_WorkGroupSize.x * gl_WorkGroupSize.y;
   if (!empty) {
     for (uint l = gl_LocalInvocationIndex; l < u_light_count; l += threads) {
-      if (touches(u_lights[l], near_depth, far_depth)) atomicAdd(s_count, 1u);
+      if (touches(u_lights[l], near_depth, far_depth)) {
+        atomicAdd(s_count, 1u);
+        if (has_shadow_maps(u_lights[l])) atomicAdd(s_shadowed, 1u);
+      }
     }
   }
   barrier();
@@ -108,7 +117,8 @@ void main() {
   if (!empty) {
     for (uint l = gl_LocalInvocationIndex; l < u_light_count; l += threads) {
       if (touches(u_lights[l], near_depth, far_depth)) {
-        uint slot = s_offset + atomicAdd(s_written, 1u);
+        // Shadowed lights first, as shading loops take them (common/list_shading.glsl).
+        uint slot = s_offset + (has_shadow_maps(u_lights[l]) ? atomicAdd(s_written_shadowed, 1u) : s_shadowed + atomicAdd(s_written, 1u));
         if (slot < u_list_capacity) u_light_indices[slot] = l;
       }
     }

@@ -63,6 +63,31 @@ void upload_patched_lights(const LightBuffer& lights, std::vector<std::uint32_t>
   }
 }
 
+// Moves the chosen lights to the front of the frame's lights, swapping each
+// one found further back with an unchosen light at the front, and records the
+// indices that changed in `moved`. Light loops then take the shadowed lights
+// first, with the map lookup, and the rest without it (common/shading.glsl):
+// a lookup in one loop body would cost every light on a GPU's divergent lanes
+// and on llvmpipe, which runs both sides of a branch.
+void move_to_front(LightBuffer& lights, std::vector<ShadowChoice>& choices, std::vector<std::uint32_t>& moved) {
+  const auto front = static_cast<std::uint32_t>(choices.size());
+  std::vector<bool> taken(front, false);
+  for (const ShadowChoice& c : choices) {
+    if (c.light < front) taken[c.light] = true;
+  }
+  std::uint32_t free = 0;
+  for (ShadowChoice& c : choices) {
+    if (c.light < front) continue;
+    while (taken[free]) ++free;
+    std::swap(lights.staging[free], lights.staging[c.light]);
+    std::swap(lights.entities[free], lights.entities[c.light]);
+    moved.push_back(free);
+    moved.push_back(c.light);
+    c.light = free;
+    taken[free] = true;
+  }
+}
+
 }  // namespace
 
 ShadowAtlas::ShadowAtlas(assets::GpuAssets& gpu) : gpu_(gpu), allocator_(limits_.max_tile, limits_.min_tile) {}
@@ -216,8 +241,9 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
 
   PreviousShadows previous;
   for (const auto& [entity, entry] : entries_) previous.emplace(entity, entry.resolution);
-  const std::vector<ShadowChoice> choices =
-      choose_shadowed_lights(lights.staging, lights.entities, view, viewport, count, previous, limits_);
+  std::vector<ShadowChoice> choices = choose_shadowed_lights(lights.staging, lights.entities, view, viewport, count, previous, limits_);
+  std::vector<std::uint32_t> patched;
+  move_to_front(lights, choices, patched);
 
   // Lights no longer shadowed, or at another size, give their tiles back.
   std::unordered_map<ecs::Entity, const ShadowChoice*> chosen;
@@ -274,7 +300,6 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     cascade_frame.scene_max = scene->max;
   }
   const float atlas_texels = static_cast<float>(limits_.atlas_size);
-  std::vector<std::uint32_t> patched;
   for (const ShadowChoice& c : choices) {
     const auto found = entries_.find(c.entity);
     if (found == entries_.end()) continue;  // could not be placed (cannot happen with areas that fit)

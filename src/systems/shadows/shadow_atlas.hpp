@@ -51,8 +51,9 @@ class ShadowAtlas {
  public:
   explicit ShadowAtlas(assets::GpuAssets& gpu);
 
-  // Chooses and draws this frame's maps (timed as the "shadows" pass), patches
-  // the shadowed lights in `lights` (CPU copy and buffer) and binds the atlas
+  // Chooses and draws this frame's maps (timed as the "shadows" pass), moves
+  // the shadowed lights to the front of `lights` and patches them (CPU copy
+  // and buffer; light loops rely on the order, common/shading.glsl), binds the atlas
   // and the views for the frame's shaders. `count` 0 gives everything back;
   // `redraw` draws every map, changed or not (to measure the worst case).
   void update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count, bool redraw,
