@@ -245,6 +245,14 @@ TEST_F(Shadows, EveryModeDrawsTheForwardPictureWithShadowsOn) {
     testing::expect_forward_picture_from_every_view(world, std::string(info.name), "shadows_" + std::string(info.name));
   }
   EXPECT_EQ(world.renderer().stats().shadows.lights, 12u);
+  // Light loops take the shadowed lights first (common/shading.glsl): they
+  // lead the light buffer, each still the light of its own entity.
+  const auto& lights = world.registry().resource<LightBuffer>();
+  for (std::size_t i = 0; i < lights.staging.size(); ++i) {
+    EXPECT_EQ(lights.staging[i].spot.z > 0.5f, i < 12u) << "light " << i;
+    EXPECT_EQ(glm::vec3(lights.staging[i].position_radius), world.registry().get<Transform>(lights.entities[i]).position)
+        << "light " << i;
+  }
 }
 
 TEST_F(Shadows, ShadowsChangeThePictureOnlyWhereLightIsBlocked) {
