@@ -102,8 +102,17 @@ void add_light_as(inout LightSum sum, Surface s, vec3 v, Light light, bool shado
 #endif
 }
 
-// The same for a pass that evaluates one light at a time (light volumes).
+// The same, asking the light whether it has maps (a branch every light pays
+// for: for the few directional lights of a full-screen pass).
 void add_light(inout LightSum sum, Surface s, vec3 v, Light light) { add_light_as(sum, s, v, light, has_shadow_maps(light)); }
+
+// Volume passes draw the shadowed lights with programs built with
+// SHADOWED_LIGHTS and the rest with programs built without (VolumePrograms).
+#ifdef SHADOWED_LIGHTS
+const bool kShadowedLights = true;
+#else
+const bool kShadowedLights = false;
+#endif
 
 // Loops over lights take the shadowed ones first, each with its map lookup,
 // and then the rest without: the ShadowAtlas moves the shadowed lights to the

@@ -26,10 +26,11 @@ layout(location = 2) out vec4 out_specular;
 
 vec3 g_diffuse = vec3(0.0), g_specular_f0 = vec3(0.0), g_specular = vec3(0.0);
 
-void accumulate(Surface s, vec3 v, Light light) {
+// `shadowed`: look the light's maps up (constant where the caller knows).
+void accumulate(Surface s, vec3 v, Light light, bool shadowed) {
   count_light_evaluation();
   vec3 l;
-  vec3 radiance = incoming_light(s, light, l, has_shadow_maps(light));
+  vec3 radiance = incoming_light(s, light, l, shadowed);
   if (all(lessThanEqual(radiance, vec3(0.0)))) return;
   vec3 t = brdf_terms(s.normal, v, l, s.roughness);
   g_diffuse += t.x * radiance;
@@ -43,10 +44,10 @@ void main() {
   vec3 v = normalize(u_camera_position.xyz - s.position);
 #ifdef DIRECTIONAL_ONLY
   for (uint i = 0u; i < u_light_count; ++i) {
-    if (uint(u_lights[i].color_kind.w) == kLightDirectional) accumulate(s, v, u_lights[i]);
+    if (uint(u_lights[i].color_kind.w) == kLightDirectional) accumulate(s, v, u_lights[i], has_shadow_maps(u_lights[i]));
   }
 #else
-  accumulate(s, v, u_lights[v_light]);
+  accumulate(s, v, u_lights[v_light], kShadowedLights);
 #endif
   out_diffuse = vec4(g_diffuse, 0.0);
   out_specular_f0 = vec4(g_specular_f0, 0.0);

@@ -31,7 +31,7 @@ void main() {
   }
 #else
   LightSum sum = no_light();
-  add_light(sum, s, v, u_lights[v_light]);
+  add_light_as(sum, s, v, u_lights[v_light], kShadowedLights);
 #endif
   // Additive: every target gains this pass's light.
   write_lighting(vec3(0.0), sum);

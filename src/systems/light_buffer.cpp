@@ -105,6 +105,12 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
   });
 }
 
+std::uint32_t shadowed_light_count(std::span<const GpuLight> lights) {
+  std::uint32_t count = 0;
+  while (count < lights.size() && lights[count].spot.z > 0.5f) ++count;
+  return count;
+}
+
 bool has_directional_light(std::span<const GpuLight> lights) {
   return std::any_of(lights.begin(), lights.end(), [](const GpuLight& light) {
     return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);

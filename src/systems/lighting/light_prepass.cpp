@@ -17,13 +17,10 @@ LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const Techn
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}, gbuffer_.defines())),
       directional_(gpu.shaders(), {"post/fullscreen.vert", "light_prepass/accumulate.frag"},
                    with(gbuffer_.defines(), {{"DIRECTIONAL_ONLY"}}), options.msaa),
-      volumes_(gpu.shaders(), {"common/light_volume.vert", "light_prepass/accumulate.frag"}, gbuffer_.defines(), options.msaa),
+      volumes_(gpu.shaders(), {"common/light_volume.vert", "light_prepass/accumulate.frag"}, gbuffer_.defines(), options.msaa,
+               sphere_),
       material_(gpu.shaders(), {"common/mesh.vert", "light_prepass/shade.frag"}, {}, options.msaa),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {
-  volumes_.each([&](gfx::ShaderProgram& program) {
-    sphere_.prepare(program);
-    program.set("u_instanced", 1);
-  });
 }
 
 void LightPrepassTechnique::resize(const FrameTargets& targets) {
@@ -83,10 +80,7 @@ void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const F
     glDepthFunc(gfx::kDepthFartherOrEqual);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    volumes_.draw([&](gfx::ShaderProgram& program) {
-      program.use();
-      sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
-    });
+    volumes_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), shadowed_light_count(frame.lights));
     glBindVertexArray(0);
     glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);

@@ -36,14 +36,14 @@ class LightPrepassTechnique final : public LightingTechnique {
   void shade_materials(const FrameContext& frame, const FrameTargets& targets);
 
   GBuffer gbuffer_;  // first: the programs below are built with its defines
+  LightSphere sphere_;  // before volumes_, which prepares its programs for it
   gfx::ShaderProgram& geometry_;
   SampleRatePrograms directional_;
-  SampleRatePrograms volumes_;
+  VolumePrograms volumes_;
   // With MSAA the material pass runs per sample on the edge pixels too: a
   // fragment there must read the light of its own samples.
   SampleRatePrograms material_;
   gfx::ShaderProgram& forward_;
-  LightSphere sphere_;
   FullscreenTriangle fullscreen_;
   std::array<gfx::Texture, kLightBufferTargets.size()> light_buffer_;
   gfx::Framebuffer light_framebuffer_;

@@ -79,4 +79,38 @@ void LightSphere::draw(GLsizei instances) const {
   glDrawElementsInstanced(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr, instances);
 }
 
+namespace {
+
+std::vector<gfx::ShaderDefine> shadowed(std::vector<gfx::ShaderDefine> defines) {
+  defines.push_back({"SHADOWED_LIGHTS"});
+  return defines;
+}
+
+}  // namespace
+
+VolumePrograms::VolumePrograms(gfx::ShaderLibrary& shaders, const std::vector<std::string>& files,
+                               std::vector<gfx::ShaderDefine> defines, int samples, const LightSphere& sphere)
+    : plain_(shaders, files, defines, samples), shadowed_(shaders, files, shadowed(defines), samples) {
+  each([&](gfx::ShaderProgram& program) { sphere.prepare(program); });
+}
+
+void VolumePrograms::each(const std::function<void(gfx::ShaderProgram&)>& f) const {
+  plain_.each(f);
+  shadowed_.each(f);
+}
+
+void VolumePrograms::draw_instanced(const LightSphere& sphere, std::uint32_t lights, std::uint32_t shadowed) const {
+  // The shader's light is u_first_instance + gl_InstanceID.
+  const std::uint32_t counts[] = {shadowed, lights - shadowed}, firsts[] = {0, shadowed};
+  for (int set = 0; set < 2; ++set) {
+    if (counts[set] == 0) continue;
+    of(firsts[set], shadowed).draw([&](gfx::ShaderProgram& program) {
+      program.set("u_instanced", 1);
+      program.set("u_first_instance", firsts[set]);
+      program.use();
+      sphere.draw(static_cast<GLsizei>(counts[set]));
+    });
+  }
+}
+
 }  // namespace atrium::lighting

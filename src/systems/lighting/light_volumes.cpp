@@ -10,11 +10,10 @@ LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const Techniq
       unlit_(gpu.shaders(), {"post/fullscreen.vert", "light_volumes/unlit.frag"}, {}, options.msaa),
       directional_(gpu.shaders(), {"post/fullscreen.vert", "light_volumes/lighting.frag"}, {{"DIRECTIONAL_ONLY"}}, options.msaa),
       stencil_(gpu.shaders().get({"common/light_volume.vert", "light_volumes/stencil.frag"})),
-      lighting_(gpu.shaders(), {"common/light_volume.vert", "light_volumes/lighting.frag"}, {}, options.msaa),
+      lighting_(gpu.shaders(), {"common/light_volume.vert", "light_volumes/lighting.frag"}, {}, options.msaa, sphere_),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {
   sphere_.prepare(stencil_);
-  lighting_.each([&](gfx::ShaderProgram& program) { sphere_.prepare(program); });
 }
 
 void LightVolumeTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
@@ -52,6 +51,7 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
 // The volume count lives in the stencil bits below kEdgeStencilBit; with MSAA
 // that bit marks the G-buffer's edge pixels, which are lit per sample.
 void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) {
+  const std::uint32_t shadowed = shadowed_light_count(frame.lights);
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
   glStencilMask(kBelowEdgeBits);
@@ -80,17 +80,18 @@ void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) 
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
     glStencilOp(GL_KEEP, GL_ZERO, GL_ZERO);
-    lighting_.each([&](gfx::ShaderProgram& program) {
+    const SampleRatePrograms& lighting = lighting_.of(index, shadowed);
+    lighting.each([&](gfx::ShaderProgram& program) {
       program.set("u_light_index", index);
       program.set("u_instanced", 0);
     });
-    if (gfx::ShaderProgram* per_sample = lighting_.per_sample()) {
+    if (gfx::ShaderProgram* per_sample = lighting.per_sample()) {
       glStencilFunc(GL_LESS, kEdgeStencilBit, 0xff);
       per_sample->use();
       sphere_.draw();
     }
     glStencilFunc(GL_NOTEQUAL, 0, kBelowEdgeBits);
-    lighting_.per_pixel().use();
+    lighting.per_pixel().use();
     sphere_.draw();
   }
   glStencilMask(0xff);
@@ -105,11 +106,7 @@ void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
-  lighting_.draw([&](gfx::ShaderProgram& program) {
-    program.set("u_instanced", 1);
-    program.use();
-    sphere_.draw(static_cast<GLsizei>(frame.lights.size()));
-  });
+  lighting_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), shadowed_light_count(frame.lights));
 }
 
 }  // namespace atrium::lighting

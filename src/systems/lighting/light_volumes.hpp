@@ -30,11 +30,11 @@ class LightVolumeTechnique final : public LightingTechnique {
   gfx::ShaderProgram& geometry_;
   SampleRatePrograms unlit_;
   SampleRatePrograms directional_;
+  LightSphere sphere_;
   gfx::ShaderProgram& stencil_;
-  SampleRatePrograms lighting_;
+  VolumePrograms lighting_;
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
-  LightSphere sphere_;
 };
 
 }  // namespace atrium::lighting
