@@ -46,23 +46,19 @@ namespace {
 // Returns whether any is visible.
 bool cull_meshlets(const Frustum& frustum, glm::vec3 eye, const assets::Primitive& primitive, const WorldBounds& bounds,
                    std::uint32_t p, std::vector<VisibleRange>& ranges, CullingStats& stats) {
-  const std::uint32_t first = bounds.meshlet_offsets[p];
   bool any = false;
-  bool extend = false;  // the previous meshlet was visible: its run continues
-  for (std::uint32_t m = 0; m < primitive.meshlets.size(); ++m) {
-    const MeshletBounds& world = bounds.meshlets[first + m];
-    ++stats.meshlets;
-    if (!intersects(frustum, world.center, world.radius) || faces_away(world, eye)) {
-      extend = false;
-      continue;
-    }
-    ++stats.meshlets_visible;
-    any = true;
-    const assets::Meshlet& meshlet = primitive.meshlets[m];
-    if (extend) ranges.back().index_count += meshlet.index_count;
-    else ranges.push_back({p, meshlet.first_index, meshlet.index_count});
-    extend = true;
-  }
+  for_each_meshlet_run(
+      primitive.meshlets, bounds.meshlets.data() + bounds.meshlet_offsets[p],
+      [&](const MeshletBounds& world) {
+        ++stats.meshlets;
+        const bool visible = intersects(frustum, world.center, world.radius) && !faces_away(world, eye);
+        stats.meshlets_visible += visible;
+        return visible;
+      },
+      [&](std::uint32_t first_index, std::uint32_t index_count) {
+        ranges.push_back({p, first_index, index_count});
+        any = true;
+      });
   return any;
 }
 

@@ -8,9 +8,12 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <span>
 
 #include <glm/glm.hpp>
 
+#include "assets/mesh_asset.hpp"
 #include "components/bounds.hpp"
 #include "ecs/scheduler.hpp"
 
@@ -32,6 +35,28 @@ struct Frustum {
 // Whether every triangle of the meshlet faces away from `eye` (its normal cone
 // says so); false when the cone cannot tell.
 [[nodiscard]] bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye);
+
+// Calls `run(first_index, index_count)` (within the primitive's indices) for
+// each run of consecutive meshlets that `keep(world bounds)` accepts, so that a
+// pass draws one range per run rather than one per meshlet. `world` holds the
+// meshlets' world bounds in the same order (WorldBounds::meshlets).
+template <typename Keep, typename Run>
+void for_each_meshlet_run(std::span<const assets::Meshlet> meshlets, const MeshletBounds* world, Keep keep, Run run) {
+  std::uint32_t first = 0, count = 0;
+  for (std::size_t m = 0; m < meshlets.size(); ++m) {
+    if (!keep(world[m])) {
+      if (count > 0) run(first, count);
+      count = 0;
+    } else if (count > 0 && first + count == meshlets[m].first_index) {
+      count += meshlets[m].index_count;
+    } else {
+      if (count > 0) run(first, count);
+      first = meshlets[m].first_index;
+      count = meshlets[m].index_count;
+    }
+  }
+  if (count > 0) run(first, count);
+}
 
 // Needs ViewState and RendererSettings; adds Visibility to entities with
 // WorldBounds and sets the CullingStats resource.

@@ -402,24 +402,18 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
       }
       // Runs of meshlets inside the view and the light's reach (both faces
       // are drawn, so no normal-cone test).
-      lighting::DrawCommand run = caster.command;
-      run.count = 0;
-      for (std::uint32_t m = 0; m < caster.meshlet_count; ++m) {
-        const MeshletBounds& bounds = caster.meshlet_bounds[m];
-        const bool inside = intersects(frustum, bounds.center, bounds.radius) &&
-                            (sphere.w < 0.0f || glm::length(bounds.center - glm::vec3(sphere)) <= sphere.w + bounds.radius);
-        if (inside && run.count > 0 && run.first_index + run.count == caster.command.first_index + caster.meshlets[m].first_index) {
-          run.count += caster.meshlets[m].index_count;
-          continue;
-        }
-        if (run.count > 0) add(run);
-        run.count = 0;
-        if (inside) {
-          run.first_index = caster.command.first_index + caster.meshlets[m].first_index;
-          run.count = caster.meshlets[m].index_count;
-        }
-      }
-      if (run.count > 0) add(run);
+      for_each_meshlet_run(
+          std::span(caster.meshlets, caster.meshlet_count), caster.meshlet_bounds,
+          [&](const MeshletBounds& bounds) {
+            return intersects(frustum, bounds.center, bounds.radius) &&
+                   (sphere.w < 0.0f || glm::length(bounds.center - glm::vec3(sphere)) <= sphere.w + bounds.radius);
+          },
+          [&](std::uint32_t first_index, std::uint32_t index_count) {
+            lighting::DrawCommand run = caster.command;
+            run.first_index += first_index;
+            run.count = index_count;
+            add(run);
+          });
     }
   }
   gpu_.reserve_instances(caster_instances_.size());
