@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/gtc/constants.hpp>
+
 #include "systems/frustum_culling.hpp"
 #include "systems/shadows/shadow_views.hpp"
 
@@ -48,7 +50,7 @@ float light_importance(const GpuLight& light, const ViewState& view, const Frust
                                   static_cast<float>(viewport.y));
   }
   pixels_radius = pixels;
-  const float coverage = std::min(1.0f, 3.14159265f * pixels * pixels / screen_pixels);
+  const float coverage = std::min(1.0f, glm::pi<float>() * pixels * pixels / screen_pixels);
   return luminance * coverage;
 }
 
