@@ -10,6 +10,7 @@
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/limits.hpp"
+#include "support/box_downsample.hpp"
 #include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
@@ -25,33 +26,6 @@ lighting::TechniqueOptions with_msaa(int samples, lighting::GBufferLayout layout
   lighting::TechniqueOptions options = testing::with_layout(layout);
   options.msaa = samples;
   return options;
-}
-
-float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
-float linear_to_srgb(float c) { return c <= 0.0031308f ? c * 12.92f : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f; }
-
-// `image` shrunk by `factor` per axis, averaging in linear light: a supersampled
-// reference of what the smaller image should look like.
-assets::Image downsample(const assets::Image& image, int factor) {
-  assets::Image small{image.width / factor, image.height / factor, {}};
-  small.rgba.resize(static_cast<std::size_t>(small.width) * small.height * 4);
-  for (int y = 0; y < small.height; ++y) {
-    for (int x = 0; x < small.width; ++x) {
-      for (int c = 0; c < 4; ++c) {
-        float sum = 0.0f;
-        for (int dy = 0; dy < factor; ++dy) {
-          for (int dx = 0; dx < factor; ++dx) {
-            const std::size_t i = (static_cast<std::size_t>(y * factor + dy) * image.width + (x * factor + dx)) * 4 + c;
-            sum += c == 3 ? image.rgba[i] / 255.0f : srgb_to_linear(image.rgba[i] / 255.0f);
-          }
-        }
-        const float mean = sum / static_cast<float>(factor * factor);
-        small.rgba[(static_cast<std::size_t>(y) * small.width + x) * 4 + c] =
-            static_cast<std::uint8_t>(std::lround(255.0f * (c == 3 ? mean : linear_to_srgb(mean))));
-      }
-    }
-  }
-  return small;
 }
 
 class MsaaMatchesForward : public testing::GlTest,
@@ -102,7 +76,7 @@ TEST_F(Msaa, BringsEveryModeCloserToASupersampledPicture) {
   for (const int view : {1, 3}) {
     World big({"atrium", std::nullopt, "forward", view, kSize * 4});
     big.frame(0.0);
-    const assets::Image supersampled = downsample(big.renderer().read_output(), 4);
+    const assets::Image supersampled = testing::box_downsample(big.renderer().read_output(), 4, true);
     for (const auto& info : lighting::technique_table()) {
       const std::string mode(info.name);
       World plain({"atrium", std::nullopt, mode, view, kSize});

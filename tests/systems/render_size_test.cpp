@@ -6,6 +6,7 @@
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "gfx/limits.hpp"
+#include "support/box_downsample.hpp"
 #include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
@@ -14,25 +15,6 @@ namespace atrium {
 namespace {
 
 using RenderSize = testing::GlTest;
-
-// Averages each `factor` x `factor` block of stored values.
-assets::Image shrink(const assets::Image& image, int factor) {
-  assets::Image out{image.width / factor, image.height / factor, {}};
-  out.rgba.resize(static_cast<std::size_t>(out.width) * out.height * 4);
-  for (int y = 0; y < out.height; ++y) {
-    for (int x = 0; x < out.width; ++x) {
-      for (int c = 0; c < 4; ++c) {
-        std::uint64_t sum = 0;
-        for (int v = 0; v < factor; ++v) {
-          for (int u = 0; u < factor; ++u) sum += image.pixel(x * factor + u, y * factor + v)[c];
-        }
-        out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] =
-            static_cast<std::uint8_t>((sum + factor * factor / 2) / (factor * factor));
-      }
-    }
-  }
-  return out;
-}
 
 TEST_F(RenderSize, OnePixelRendersInEveryModeAsForwardDoes) {
   World world({"atrium", 24u, "forward", 1, {1, 1}});
@@ -52,7 +34,7 @@ TEST_F(RenderSize, An8192SquareImageShowsWhatASmallOneShowsInForwardAndDeferred)
   ASSERT_EQ(image.width, 8192);
   ASSERT_EQ(image.height, 8192);
   // Only the edges differ: a pixel of the smaller image is either in or out.
-  EXPECT_GE(assets::psnr(small.renderer().read_output(), shrink(image, 4)), 35.0);
+  EXPECT_GE(assets::psnr(small.renderer().read_output(), testing::box_downsample(image, 4, false)), 35.0);
   big.set_mode("clustered-deferred");  // a G-buffer of 8192x8192 and the most bins
   big.frame(0.0);
   EXPECT_GE(assets::psnr(image, big.renderer().read_output()), 40.0) << "clustered-deferred against forward";
