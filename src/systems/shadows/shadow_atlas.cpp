@@ -242,8 +242,6 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
   PreviousShadows previous;
   for (const auto& [entity, entry] : entries_) previous.emplace(entity, entry.resolution);
   std::vector<ShadowChoice> choices = choose_shadowed_lights(lights.staging, lights.entities, view, viewport, count, previous, limits_);
-  std::vector<std::uint32_t> patched;
-  move_to_front(lights, choices, patched);
 
   // Lights no longer shadowed, or at another size, give their tiles back.
   std::unordered_map<ecs::Entity, const ShadowChoice*> chosen;
@@ -289,6 +287,11 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     std::stable_sort(all.begin(), all.end(), [](const ShadowChoice* a, const ShadowChoice* b) { return a->resolution > b->resolution; });
     for (const ShadowChoice* c : all) place(*c);
   }
+  // Only lights with maps may lead the buffer (light loops stop at the first
+  // without); the selection's areas always pack, so none is left out in practice.
+  std::erase_if(choices, [&](const ShadowChoice& c) { return !entries_.count(c.entity); });
+  std::vector<std::uint32_t> patched;
+  move_to_front(lights, choices, patched);
 
   // This frame's views, and which of them must be drawn.
   views_.clear();
@@ -301,9 +304,7 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
   }
   const float atlas_texels = static_cast<float>(limits_.atlas_size);
   for (const ShadowChoice& c : choices) {
-    const auto found = entries_.find(c.entity);
-    if (found == entries_.end()) continue;  // could not be placed (cannot happen with areas that fit)
-    Entry& entry = found->second;
+    Entry& entry = entries_.at(c.entity);
     GpuLight& light = lights.staging[c.light];
     const auto kind = static_cast<GpuLightKind>(light.color_kind.w);
     std::vector<ShadowView> light_views;
