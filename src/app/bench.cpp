@@ -100,6 +100,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.p95_ms = percentile(frame_ms, 0.95);
   // The camera holds still: every measured frame submits the same draws.
   row.triangles_drawn = world.renderer().stats().triangles_drawn;
+  row.triangles_occluded = world.renderer().stats().triangles_occluded;
   row.draw_calls = world.renderer().stats().draw_calls;
   for (const std::string& name : pass_order) {
     row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5)});
@@ -148,7 +149,8 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
     World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
-                 bench_radius(options, lights), 0, options.camera, options.frustum_culling});
+                 bench_radius(options, lights), 0, options.camera, options.frustum_culling, 0,
+                 options.occlusion_culling});
     std::vector<int> views = options.views;
     if (views.empty()) {
       for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
@@ -289,7 +291,8 @@ std::string bench_markdown(const BenchResult& result) {
 std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
-         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows\n";
+         "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
+         "triangles_occluded\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -304,7 +307,7 @@ std::string bench_csv(const BenchResult& result) {
         << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
         << row.draw_calls << ",\"" << cpu_passes << "\","
         << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
-        << row.shadows << "\n";
+        << row.shadows << "," << row.triangles_occluded << "\n";
   }
   return csv.str();
 }

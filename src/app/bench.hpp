@@ -35,6 +35,7 @@ struct BenchOptions {
   // --z-slicing LIST: every mode is measured with each (empty: technique_options').
   std::vector<lighting::ZSlicing> z_slicings;
   bool frustum_culling = true;               // --no-culling
+  bool occlusion_culling = true;             // --no-occlusion-culling
   // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame
@@ -52,7 +53,8 @@ struct BenchRow {
   std::string view_name;
   double median_ms = 0, p5_ms = 0, p95_ms = 0;
   std::vector<gfx::PassTime> pass_medians;  // GPU and CPU (submission) medians per pass
-  std::size_t triangles_drawn = 0;  // per geometry pass, after frustum culling
+  std::size_t triangles_drawn = 0;  // per geometry pass, after frustum and occlusion culling
+  std::size_t triangles_occluded = 0;  // in view, but left out as hidden (occlusion culling)
   std::size_t draw_calls = 0;       // per geometry pass
   double evaluated_per_pixel = 0;  // light evaluations the mode performed
   double reaching_per_pixel = 0;   // lights whose radius covers the pixel; NaN where not countable

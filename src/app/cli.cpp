@@ -22,7 +22,8 @@ namespace atrium {
 WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling, options.shadows};
+          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling, options.shadows,
+          options.occlusion_culling};
 }
 
 namespace {
@@ -146,6 +147,7 @@ int run_bench_command(const CliOptions& options) {
   bench.technique_options = options.technique_options;
   bench.camera = options.camera;
   bench.frustum_culling = options.frustum_culling;
+  bench.occlusion_culling = options.occlusion_culling;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   ProgressBar bar("bench");
   const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });

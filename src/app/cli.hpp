@@ -50,6 +50,7 @@ struct CliOptions {
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
   bool json = false;                    // info: print JSON
   bool frustum_culling = true;          // --no-culling
+  bool occlusion_culling = true;        // --no-occlusion-culling
   int shadows = 0;                      // --shadows K: lights with shadow maps
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)
   BenchOptions bench;                   // bench: the sweep

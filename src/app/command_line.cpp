@@ -122,7 +122,8 @@ const std::vector<OptionSpec>& option_table() {
       {"--md", "FILE", kBench, "write the results as a Markdown table"},
       {"--plot", "FILE.png", kBench, "plot frame time against light count (python3 with matplotlib)"},
       {"--gl-debug", "", kWindow, "report GL errors through KHR_debug and print their count on exit (always on in debug builds)"},
-      {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum and back-facing meshlet culling are on by default)"},
+      {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum, back-facing meshlet and occlusion culling are on by default)"},
+      {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)"},
       {"--json", "", kInfo, "print JSON"},
   };
   return table;
@@ -373,6 +374,8 @@ void apply_option(std::string_view name, std::string_view value, CliOptions& opt
     options.frames = parse_number<std::uint64_t>("--frames", value, 1, 1'000'000'000);
   } else if (name == "--no-culling") {
     options.frustum_culling = false;
+  } else if (name == "--no-occlusion-culling") {
+    options.occlusion_culling = false;
   } else if (name == "--gl-debug") {
     options.gl_debug = true;
   } else {

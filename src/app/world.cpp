@@ -148,6 +148,7 @@ void World::start(const WorldOptions& options) {
   settings.debug_view = options.debug_view;
   settings.technique_options = options.technique_options;
   settings.frustum_culling = options.frustum_culling;
+  settings.occlusion_culling = options.occlusion_culling;
   settings.shadows = options.shadows;
   set_view(options.view);
 

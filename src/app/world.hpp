@@ -45,6 +45,8 @@ struct WorldOptions {
   bool frustum_culling = true;
   // --shadows K: shadow maps for the K lights that matter most (0: off).
   int shadows = 0;
+  // --no-occlusion-culling turns it off: passes draw what is in view, hidden or not.
+  bool occlusion_culling = true;
 };
 
 class World {

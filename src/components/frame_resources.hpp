@@ -43,6 +43,7 @@ struct RendererSettings {
   bool present_to_window = false;  // blit the final image to the default framebuffer
   bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)
   bool frustum_culling = true;     // off: every pass draws the whole scene (--no-culling, for comparisons)
+  bool occlusion_culling = true;   // with frustum culling: leave out what the depth buffer hides (--no-occlusion-culling)
   int shadows = 0;                 // lights given shadow maps each frame (--shadows K); 0 is off
   bool redraw_shadows = false;     // draw every map every frame, cached or not (bench --shadow-redraw)
 };

@@ -1,6 +1,7 @@
-// What the camera sees of an entity this frame, written by the frustum culling
-// system (systems/frustum_culling.hpp) and read by every pass that draws scene
-// geometry, through the frame's draw list.
+// What the camera sees of an entity, per primitive and per meshlet: the frustum
+// culling system (systems/frustum_culling.hpp) marks what lies in the view, and
+// occlusion culling (systems/occlusion_culling.hpp) what the depth buffer hides.
+// Every pass that draws scene geometry reads it through the frame's draw list.
 #pragma once
 
 #include <cstdint>
@@ -8,26 +9,29 @@
 
 namespace atrium {
 
-// A run of one primitive's visible meshlets: its indices
-// [first_index, first_index + index_count).
-struct VisibleRange {
-  std::uint32_t primitive = 0;
-  std::uint32_t first_index = 0;
-  std::uint32_t index_count = 0;
-};
+// Bits of a primitive's or a meshlet's visibility state.
+namespace seen {
+// In the view frustum and not facing away (frustum culling, each frame).
+inline constexpr std::uint8_t kInView = 1u << 0;
+// Shown in the last frame's depth: the first pass draws it before testing the
+// rest (occlusion culling; kept across frames).
+inline constexpr std::uint8_t kLastFrame = 1u << 1;
+// Not shown last frame, but this frame's first depth does not hide it: drawn
+// late in the first pass and in every pass after it (occlusion culling).
+inline constexpr std::uint8_t kRevealed = 1u << 2;
+}  // namespace seen
 
 struct Visibility {
-  bool any = true;  // some primitive of the entity is visible
-  // One flag per primitive of the entity's mesh (1: inside or crossing the
-  // view frustum), in the mesh's order; empty means all visible.
+  bool any = true;  // some primitive of the entity is in view
+  // seen:: bits per primitive of the entity's mesh, in the mesh's order; empty
+  // means all in view and shown. A primitive cut into meshlets is in view when
+  // one of them is, and draws the meshlets that are.
   std::vector<std::uint8_t> primitives;
-  // For visible primitives cut into meshlets: the runs of meshlets that are in
-  // the frustum and do not face away, by primitive. A visible primitive with no
-  // range here draws whole.
-  std::vector<VisibleRange> ranges;
+  // seen:: bits per meshlet, in WorldBounds::meshlets's order.
+  std::vector<std::uint8_t> meshlets;
 };
 
-// The culling system's count of the last frame, for stats and tests.
+// The culling systems' counts of the last frame, for stats and tests.
 struct CullingStats {
   std::size_t objects = 0;             // entities with a mesh
   std::size_t objects_visible = 0;

@@ -5,7 +5,6 @@
 #include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/visibility.hpp"
-#include "assets/asset_manager.hpp"
 
 namespace atrium {
 
@@ -42,24 +41,16 @@ bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye) {
 
 namespace {
 
-// Culls primitive p's meshlets; appends the runs of visible ones to `ranges`.
-// Returns whether any is visible.
-bool cull_meshlets(const Frustum& frustum, glm::vec3 eye, const assets::Primitive& primitive, const WorldBounds& bounds,
-                   std::uint32_t p, std::vector<VisibleRange>& ranges, CullingStats& stats) {
-  bool any = false;
-  for_each_meshlet_run(
-      primitive.meshlets, bounds.meshlets.data() + bounds.meshlet_offsets[p],
-      [&](const MeshletBounds& world) {
-        ++stats.meshlets;
-        const bool visible = intersects(frustum, world.center, world.radius) && !faces_away(world, eye);
-        stats.meshlets_visible += visible;
-        return visible;
-      },
-      [&](std::uint32_t first_index, std::uint32_t index_count) {
-        ranges.push_back({p, first_index, index_count});
-        any = true;
-      });
-  return any;
+// Sets or clears bit kInView of state, keeping what occlusion culling learnt
+// last frame and forgetting what it revealed.
+void mark_in_view(std::uint8_t& state, bool in_view) {
+  state = static_cast<std::uint8_t>((state & seen::kLastFrame) | (in_view ? seen::kInView : 0u));
+}
+
+// Sizes a per-primitive or per-meshlet state list; a list of another size
+// belonged to another mesh, and starts over.
+void fit(std::vector<std::uint8_t>& states, std::size_t size) {
+  if (states.size() != size) states.assign(size, 0);
 }
 
 }  // namespace
@@ -73,26 +64,34 @@ void update_frustum_culling(ecs::Registry& registry) {
   const bool culling = registry.resource<RendererSettings>().frustum_culling;
   const ViewState& view = registry.resource<ViewState>();
   const Frustum frustum = frustum_of(view.view_projection);
-  const auto& assets = registry.resource<assets::AssetManager>();
   CullingStats stats;
   registry.view<WorldBounds, Visibility>().each([&](const WorldBounds& bounds, Visibility& visibility) {
     ++stats.objects;
     stats.primitives += bounds.primitives.size();
-    visibility.any = !bounds.empty && (!culling || intersects(frustum, bounds.min, bounds.max));
-    visibility.primitives.assign(bounds.primitives.size(), 0);
-    visibility.ranges.clear();
-    if (!visibility.any) return;
-    const auto& primitives = assets.mesh_asset(bounds.asset).meshes.at(bounds.mesh).primitives;
+    fit(visibility.primitives, bounds.primitives.size());
+    fit(visibility.meshlets, bounds.meshlets.size());
+    const bool any_in_view = !bounds.empty && (!culling || intersects(frustum, bounds.min, bounds.max));
     bool any = false;
     for (std::uint32_t p = 0; p < bounds.primitives.size(); ++p) {
       const Box& box = bounds.primitives[p];
-      bool visible = !box.empty && (!culling || intersects(frustum, box.min, box.max));
-      if (visible && culling && !primitives[p].meshlets.empty()) {
-        visible = cull_meshlets(frustum, view.camera_position, primitives[p], bounds, p, visibility.ranges, stats);
+      bool in_view = any_in_view && !box.empty && (!culling || intersects(frustum, box.min, box.max));
+      const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
+      bool meshlet_in_view = false;
+      for (std::uint32_t m = first; m < last; ++m) {
+        const MeshletBounds& world = bounds.meshlets[m];
+        bool visible = in_view;
+        if (visible && culling) {
+          ++stats.meshlets;
+          visible = intersects(frustum, world.center, world.radius) && !faces_away(world, view.camera_position);
+          stats.meshlets_visible += visible;
+        }
+        mark_in_view(visibility.meshlets[m], visible);
+        meshlet_in_view = meshlet_in_view || visible;
       }
-      visibility.primitives[p] = visible;
-      stats.primitives_visible += visible;
-      any = any || visible;
+      if (first != last) in_view = meshlet_in_view;
+      mark_in_view(visibility.primitives[p], in_view);
+      stats.primitives_visible += in_view;
+      any = any || in_view;
     }
     visibility.any = any;
     stats.objects_visible += any;

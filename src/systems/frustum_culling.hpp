@@ -1,10 +1,10 @@
 // The frustum culling system (PostUpdate, after bounds and camera): tests every
 // primitive box of every WorldBounds against the camera's view frustum, then the
 // meshlets of large primitives against the frustum and their normal cones
-// against the eye, and writes each entity's Visibility (primitives, and runs of
-// visible meshlets), so that every pass of every technique draws only what the
-// camera can see. RendererSettings::frustum_culling off marks everything
-// visible (for comparisons).
+// against the eye, and marks what is in view in each entity's Visibility
+// (seen::kInView per primitive and meshlet), so that every pass of every
+// technique draws only what the camera can see. RendererSettings::
+// frustum_culling off marks everything in view (for comparisons).
 #pragma once
 
 #include <array>
@@ -37,14 +37,14 @@ struct Frustum {
 [[nodiscard]] bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye);
 
 // Calls `run(first_index, index_count)` (within the primitive's indices) for
-// each run of consecutive meshlets that `keep(world bounds)` accepts, so that a
-// pass draws one range per run rather than one per meshlet. `world` holds the
-// meshlets' world bounds in the same order (WorldBounds::meshlets).
+// each run of consecutive meshlets that `keep(m)` accepts (m indexes
+// `meshlets`), so that a pass draws one range per run rather than one per
+// meshlet.
 template <typename Keep, typename Run>
-void for_each_meshlet_run(std::span<const assets::Meshlet> meshlets, const MeshletBounds* world, Keep keep, Run run) {
+void for_each_meshlet_run(std::span<const assets::Meshlet> meshlets, Keep keep, Run run) {
   std::uint32_t first = 0, count = 0;
   for (std::size_t m = 0; m < meshlets.size(); ++m) {
-    if (!keep(world[m])) {
+    if (!keep(m)) {
       if (count > 0) run(first, count);
       count = 0;
     } else if (count > 0 && first + count == meshlets[m].first_index) {

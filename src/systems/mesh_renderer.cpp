@@ -18,6 +18,7 @@ namespace atrium {
 MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       shadows_(gpu),
+      depth_reader_(gpu.shaders()),
       empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
       tonemap_(&gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
@@ -138,6 +139,26 @@ void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
 }
 
+void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw) {
+  draw(draws_.opaque);
+  // Once a frame: a debug view's own geometry pass draws the list as it stands.
+  if (!occlusion_pending_) return;
+  occlusion_pending_ = false;
+  const auto& view = registry.resource<ViewState>();
+  DepthPyramid depth = depth_reader_.read(depth_stencil_.id(), size_);
+  const OcclusionCounts late = reveal_unhidden(registry, depth, view);
+  if (late.tested > late.hidden) {
+    const auto& assets = registry.resource<assets::AssetManager>();
+    const lighting::DrawList revealed = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Revealed);
+    upload_draws(revealed);
+    draw(revealed.opaque);
+    draws_ = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Shown);
+    upload_draws(draws_);
+    depth = depth_reader_.read(depth_stencil_.id(), size_);
+  }
+  stats_.triangles_occluded = remember_shown(registry, depth, view).triangles_hidden;
+}
+
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
@@ -188,11 +209,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
   timer_.begin_frame();
-  const lighting::DrawList draws = lighting::build_draw_list(registry, assets, gpu, view.view);
+  occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling;
+  draws_ = lighting::build_draw_list(registry, assets, gpu, view.view,
+                                     occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame : lighting::DrawSelection::InView);
+  const lighting::DrawList& draws = draws_;
   stats_ = {};
-  stats_.draw_calls = draws.draw_calls();
-  stats_.triangles = draws.triangles;
-  stats_.triangles_drawn = draws.triangles_drawn;
   stats_.lights = lights.count;
   if (const auto* culling = registry.try_resource<CullingStats>()) {
     stats_.objects = culling->objects;
@@ -222,8 +243,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
   stats_.shadows = shadows_.stats();
   upload_draws(draws);
 
-  const lighting::FrameContext frame{draws,      gpu,       lights.staging,  scene.background,
-                                     timer_,     view.view, view.projection, view.near_plane,
+  const lighting::FrameContext frame{draws,
+                                     [&](const lighting::DrawBatches& draw) { draw_first_pass(registry, draw); },
+                                     gpu,
+                                     lights.staging,
+                                     scene.background,
+                                     timer_,
+                                     view.view,
+                                     view.projection,
+                                     view.near_plane,
                                      view.far_plane};
   if (counting) debug_views().begin_counting(debug_view);
   if (split_lighting_) {
@@ -239,6 +267,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
                                   std::to_string(size.y) + ": " + e.what());
   }
+  stats_.draw_calls = draws.draw_calls();
+  stats_.triangles = draws.triangles;
+  stats_.triangles_drawn = draws.triangles_drawn;
   stats_.light_list_entries = technique_->light_lists().entries;
   stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
 

@@ -17,6 +17,7 @@
 #include "gfx/shader_program.hpp"
 #include "gfx/stream_buffer.hpp"
 #include "systems/lighting/technique.hpp"
+#include "systems/occlusion_culling.hpp"
 #include "systems/shadows/shadow_atlas.hpp"
 
 namespace atrium::lighting {
@@ -28,7 +29,8 @@ namespace atrium {
 struct FrameStats {
   std::size_t draw_calls = 0;       // multi-draws one geometry pass issues (opaque and blended)
   std::size_t triangles = 0;        // in the scene
-  std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum culling
+  std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum and occlusion culling
+  std::size_t triangles_occluded = 0;  // in view, but hidden behind what the first pass drew
   std::size_t objects = 0;          // entities with a mesh
   std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
@@ -96,6 +98,10 @@ class MeshRenderer {
   // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
   // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame.
   void upload_draws(const lighting::DrawList& draws);
+  // FrameContext::draw_first_pass: draws draws_ (what the last frame showed),
+  // then, with occlusion culling and once a frame, what the depth it wrote
+  // does not hide, and leaves draws_ holding both.
+  void draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw);
 
   glm::ivec2 size_{0};
   std::string mode_;
@@ -116,7 +122,10 @@ class MeshRenderer {
   gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
   gfx::StreamBuffer instances_, materials_, commands_;
+  lighting::DrawList draws_;  // the frame's; FrameContext::draws
+  bool occlusion_pending_ = false;  // draws_ holds only what the last frame showed; draw_first_pass tests the rest
   shadows::ShadowAtlas shadows_;
+  DepthReader depth_reader_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)

@@ -115,6 +115,9 @@ void Overlay::statistics(ecs::Registry& registry) {
   ImGui::Text("%u lights; per geometry pass %zu of %zu triangles, %zu draw calls", stats.lights, stats.triangles_drawn,
               stats.triangles, stats.draw_calls);
   ImGui::Text("%zu of %zu objects in view%s", stats.objects_drawn, stats.objects, settings.frustum_culling ? "" : " (culling off)");
+  if (settings.frustum_culling && settings.occlusion_culling) {
+    ImGui::Text("%zu triangles in view hidden by depth, not drawn", stats.triangles_occluded);
+  }
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
   }
@@ -180,6 +183,8 @@ void Overlay::controls(ecs::Registry& registry) {
   }
   // Costs two more target writes per pixel in the deferred modes; the thumbnails show the sums.
   ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);
+  // Off draws what is in view behind walls too: the same picture, for comparing costs.
+  ImGui::Checkbox("occlusion culling", &settings.occlusion_culling);
   // K of --shadows: the lights that matter most get maps; 0 turns shadows off.
   ImGui::SliderInt("shadowed lights", &settings.shadows, 0, 256, "%d", ImGuiSliderFlags_Logarithmic);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);

@@ -85,14 +85,18 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
       masked_seen = masked_seen || masked;
     }
     EXPECT_EQ(triangles, list.triangles_drawn) << "the built-in scene has no blended surface";
-    // One instance per visible primitive, or per run of visible meshlets.
+    // One instance per primitive in view, or per run of meshlets in view.
     std::size_t runs = 0;
-    registry.view<Visibility>().each([&](const Visibility& visibility) {
+    registry.view<Visibility, WorldBounds>().each([&](const Visibility& visibility, const WorldBounds& bounds) {
       if (!visibility.any) return;
       for (std::uint32_t p = 0; p < visibility.primitives.size(); ++p) {
-        if (!visibility.primitives[p]) continue;
-        const auto n = std::count_if(visibility.ranges.begin(), visibility.ranges.end(), [&](const VisibleRange& r) { return r.primitive == p; });
-        runs += n ? static_cast<std::size_t>(n) : 1u;
+        if (!(visibility.primitives[p] & seen::kInView)) continue;
+        const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
+        if (first == last) ++runs;
+        for (std::uint32_t m = first; m < last; ++m) {
+          const bool in_view = visibility.meshlets[m] & seen::kInView;
+          runs += in_view && (m == first || !(visibility.meshlets[m - 1] & seen::kInView));
+        }
       }
     });
     EXPECT_EQ(instances, runs) << view;

@@ -92,10 +92,10 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
       glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer_.id());
       const float far = gfx::kDepthFar;
       glClearNamedFramebufferfv(prepass_framebuffer_.id(), GL_COLOR, 0, &far);
-      draw_depth(frame.draws.opaque, position_only_, geometry_);
+      frame.draw_first_pass([&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); });
     } else {
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      draw_depth(frame.draws.opaque, position_only_, geometry_);
+      frame.draw_first_pass([&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); });
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
   }

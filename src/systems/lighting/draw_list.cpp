@@ -10,6 +10,7 @@
 #include "components/transform.hpp"
 #include "components/visibility.hpp"
 #include "gfx/depth.hpp"
+#include "systems/frustum_culling.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium::lighting {
@@ -76,8 +77,21 @@ MaterialData material_data(const assets::Material& m, const assets::GpuAssets& g
   return data;
 }
 
+bool selected(std::uint8_t state, DrawSelection selection) {
+  if (!(state & seen::kInView)) return false;
+  switch (selection) {
+    case DrawSelection::InView: return true;
+    case DrawSelection::ShownLastFrame: return (state & seen::kLastFrame) != 0;
+    case DrawSelection::Revealed: return (state & (seen::kLastFrame | seen::kRevealed)) == seen::kRevealed;
+    case DrawSelection::Shown: return (state & (seen::kLastFrame | seen::kRevealed)) != 0;
+  }
+  return false;
+}
+
 DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets, const assets::GpuAssets& gpu,
-                         const glm::mat4& view) {
+                         const glm::mat4& view, DrawSelection selection) {
+  // An entity without culling state is in view and was shown.
+  constexpr std::uint8_t kEverything = seen::kInView | seen::kLastFrame;
   DrawList list;
   std::unordered_map<const assets::Material*, std::uint32_t> material_index;
   auto index_of = [&](const assets::Material& material) {
@@ -106,13 +120,11 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     data.model = bounds ? bounds->model : to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
     const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
-    const std::vector<VisibleRange> no_ranges;
-    const std::vector<VisibleRange>& ranges = visibility ? visibility->ranges : no_ranges;
-    std::size_t next_range = 0;  // into ranges, which go by primitive
     for (std::uint32_t p = 0; p < primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
       if (primitive.indices.empty()) continue;
-      if (visibility && p < visibility->primitives.size() && !visibility->primitives[p]) continue;
+      const std::uint8_t state = visibility && p < visibility->primitives.size() ? visibility->primitives[p] : kEverything;
+      if (!(state & seen::kInView)) continue;
       const assets::Material& material = asset.materials.at(primitive.material);
       const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
       data.material.x = index_of(material);
@@ -122,12 +134,14 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       const float depth = -(view * glm::vec4(centre, 1.0f)).z;
       const GLuint vertex_array = gpu_asset.vertex_array.id();
       if (material.alpha_mode == assets::AlphaMode::Blend) {
+        // Never occlusion-culled: blended surfaces go with every list but the late one.
+        if (selection == DrawSelection::Revealed) continue;
         list.triangles_drawn += primitive.indices.size() / 3;
         blended.push_back({batch_state(material, gpu, vertex_array, mirrored), {range.index_count, 1, range.first_index, range.base_vertex, 0},
                            data, depth});
         continue;
       }
-      // (offset within the primitive, index count): one command per visible meshlet run.
+      // (offset within the primitive, index count): one command per selected meshlet run.
       auto add_run = [&](std::uint32_t offset, std::uint32_t count) {
         list.triangles_drawn += count / 3;
         const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
@@ -136,10 +150,13 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
         pending[it->second].instances.emplace_back(depth, data);
       };
-      while (next_range < ranges.size() && ranges[next_range].primitive < p) ++next_range;
-      if (next_range == ranges.size() || ranges[next_range].primitive != p) add_run(0, range.index_count);  // drawn whole
-      for (; next_range < ranges.size() && ranges[next_range].primitive == p; ++next_range) {
-        add_run(ranges[next_range].first_index, ranges[next_range].index_count);
+      const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
+                              bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
+      if (by_meshlet) {
+        const std::uint8_t* meshlet_states = visibility->meshlets.data() + bounds->meshlet_offsets[p];
+        for_each_meshlet_run(primitive.meshlets, [&](std::size_t m) { return selected(meshlet_states[m], selection); }, add_run);
+      } else if (selected(state, selection)) {
+        add_run(0, range.index_count);
       }
     }
   });

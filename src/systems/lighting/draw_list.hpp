@@ -111,10 +111,24 @@ struct DrawList {
   [[nodiscard]] std::size_t draw_calls() const { return opaque.size() + blended.size(); }
 };
 
+// Which of the geometry in view a list holds: occlusion culling's phases
+// (systems/occlusion_culling.hpp, the seen:: bits of components/visibility.hpp).
+enum class DrawSelection {
+  InView,          // all of it (occlusion culling off)
+  ShownLastFrame,  // what the first pass draws before testing the rest
+  Revealed,        // what it draws after (opaque geometry only)
+  Shown,           // both: what the passes after the first draw
+};
+// Whether a primitive or meshlet in `state` (seen:: bits) belongs to `selection`.
+[[nodiscard]] bool selected(std::uint8_t state, DrawSelection selection);
+
 // Builds the frame's list from the entities' WorldBounds and Visibility (an
 // entity without them is drawn whole). `view` orders draws by distance.
+// Blended surfaces in view are in every selection but Revealed: they are not
+// occlusion-culled.
 [[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
-                                       const assets::GpuAssets& gpu, const glm::mat4& view);
+                                       const assets::GpuAssets& gpu, const glm::mat4& view,
+                                       DrawSelection selection = DrawSelection::InView);
 
 // Issues one multi-draw per batch with the program in use, binding each batch's
 // textures to units 0-4, disabling back-face culling for double-sided batches

@@ -12,7 +12,7 @@ void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& ta
     const auto pass = frame.timer.scope("shading");
     begin_scene_pass(frame, targets);
     program_.use();
-    draw_items(frame.draws.opaque);
+    frame.draw_first_pass(draw_items);
   }
 
   draw_transparent(program_, frame, targets);

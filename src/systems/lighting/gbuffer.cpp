@@ -60,7 +60,7 @@ void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& fra
   // The albedo target is sRGB: GL encodes the linear values written to it.
   glEnable(GL_FRAMEBUFFER_SRGB);
   program.use();
-  draw_items(frame.draws.opaque);
+  frame.draw_first_pass(draw_items);
   glDisable(GL_FRAMEBUFFER_SRGB);
   if (edges_) mark_edges();
 }

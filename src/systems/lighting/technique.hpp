@@ -5,6 +5,7 @@
 // shader folder, and one row in technique_table.cpp.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -22,10 +23,22 @@
 
 namespace atrium::lighting {
 
+// Draws batches of the frame's draw list with the caller's program and state.
+using DrawBatches = std::function<void(std::span<const DrawBatch>)>;
+
 // What a technique reads each frame. The frame uniform block and the light
 // storage buffer are already bound at kFrameUniformBinding / kLightStorageBinding.
 struct FrameContext {
+  // The frame's visible geometry. Until the first pass over opaque geometry
+  // has run, `opaque` holds only what the last frame showed; after it, all
+  // that pass drew (occlusion culling, systems/occlusion_culling.hpp).
   const DrawList& draws;
+  // The first pass over opaque geometry (the one that fills the depth buffer)
+  // draws through this, never over draws.opaque itself: it calls `draw` with
+  // what the last frame showed, tests the rest against the depth just written,
+  // and calls `draw` again with what that depth does not hide. `draw` may rely
+  // on the program in use and the pass's GL state surviving between the calls.
+  std::function<void(const DrawBatches& draw)> draw_first_pass;
   const assets::GpuAssets& gpu;
   std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};

@@ -404,8 +404,9 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
       // Runs of meshlets inside the view and the light's reach (both faces
       // are drawn, so no normal-cone test).
       for_each_meshlet_run(
-          std::span(caster.meshlets, caster.meshlet_count), caster.meshlet_bounds,
-          [&](const MeshletBounds& bounds) {
+          std::span(caster.meshlets, caster.meshlet_count),
+          [&](std::size_t m) {
+            const MeshletBounds& bounds = caster.meshlet_bounds[m];
             return intersects(frustum, bounds.center, bounds.radius) &&
                    (sphere.w < 0.0f || glm::length(bounds.center - glm::vec3(sphere)) <= sphere.w + bounds.radius);
           },

@@ -1,0 +1,83 @@
+// Two-phase occlusion culling, run inside each technique's first pass over
+// opaque geometry (the one that fills the depth buffer): the pass draws what
+// the last frame showed, the depth it wrote is read back as a pyramid of
+// farthest depths, everything else in view is tested against it and what it
+// does not hide is drawn too (seen::kRevealed); a test against the completed
+// depth then marks what the next frame draws first (seen::kLastFrame). A
+// surface is left out only where drawn depth lies in front of all of it, so
+// every mode still draws the picture it draws without culling; what the test
+// saves is the vertex work of hidden geometry (a street of the Bistro-scale
+// grid hides nine tenths of what is in view).
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "components/frame_resources.hpp"
+#include "ecs/registry.hpp"
+#include "gfx/gl.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/shader_library.hpp"
+
+namespace atrium {
+
+// The depth buffer's farthest view depth per kTileSize-pixel tile, and coarser
+// levels above it (each texel the farthest of the four below): what a box
+// must lie behind everywhere to be hidden.
+class DepthPyramid {
+ public:
+  static constexpr int kTileSize = 8;  // pixels per tile side (culling/depth_tiles.comp's work group)
+
+  DepthPyramid() = default;
+  // `tiles`: farthest view depth (metres; infinity where nothing was drawn) of
+  // each tile, rows from the bottom of the viewport up (GL's order).
+  DepthPyramid(std::vector<float> tiles, glm::ivec2 tile_count, glm::ivec2 viewport);
+
+  // Whether the world-space box lies behind the depth over every pixel it
+  // covers, seen through `view` and `projection` (a perspective one). False
+  // for a box that reaches the near plane, and for an empty pyramid.
+  [[nodiscard]] bool hides(const glm::mat4& view, const glm::mat4& projection, float near_plane, glm::vec3 min,
+                           glm::vec3 max) const;
+
+  [[nodiscard]] bool empty() const { return levels_.empty(); }
+
+ private:
+  struct Level {
+    glm::ivec2 size{0};
+    std::vector<float> farthest;
+  };
+  std::vector<Level> levels_;
+  glm::ivec2 viewport_{0};
+};
+
+struct OcclusionCounts {
+  std::size_t tested = 0;    // primitives and meshlets tested
+  std::size_t hidden = 0;    // of which the depth hides
+  std::size_t triangles_hidden = 0;
+};
+
+// Sets seen::kRevealed on every opaque primitive and meshlet in view that the
+// last frame did not show and `depth` does not hide.
+OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
+// Sets seen::kLastFrame on every opaque primitive and meshlet in view that
+// `depth` does not hide and clears it everywhere else, for the next frame.
+OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
+
+// Reads a depth buffer back as a DepthPyramid (culling/depth_tiles.comp).
+class DepthReader {
+ public:
+  explicit DepthReader(gfx::ShaderLibrary& shaders) : shaders_(shaders) {}
+  // `depth`: the frame's depth-stencil texture (multisampled when the global
+  // MSAA_SAMPLES define says so); the frame uniforms must be bound. Keeps the
+  // program in use and frees the texture unit it borrows.
+  [[nodiscard]] DepthPyramid read(GLuint depth, glm::ivec2 size);
+
+ private:
+  gfx::ShaderLibrary& shaders_;
+  gfx::Buffer tiles_;
+  std::size_t capacity_ = 0;  // floats
+};
+
+}  // namespace atrium
