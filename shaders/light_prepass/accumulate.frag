@@ -2,15 +2,18 @@
 // Light pre-pass, light buffer: reads normal, roughness and position from the
 // thin G-buffer and adds one light's BRDF factors (brdf_terms) times its
 // radiance to the three light-buffer targets, blended additively. Drawn on a
-// light's volume, or with DIRECTIONAL_ONLY as one full-screen pass over the
-// directional lights. No material is known yet: the second geometry pass
+// light's volume, or with DIRECTIONAL_ONLY as a full-screen pass for one
+// directional light (u_light_index; one pass each, rather than a loop over
+// every light that llvmpipe would run in full). No material is known yet: the second geometry pass
 // multiplies the sums by it (shade.frag).
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
 #include "common/shading.glsl"
 
-#ifndef DIRECTIONAL_ONLY
+#ifdef DIRECTIONAL_ONLY
+uniform uint u_light_index;
+#else
 flat in uint v_light;
 #endif
 
@@ -43,9 +46,7 @@ void main() {
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
 #ifdef DIRECTIONAL_ONLY
-  for (uint i = 0u; i < u_light_count; ++i) {
-    if (uint(u_lights[i].color_kind.w) == kLightDirectional) accumulate(s, v, u_lights[i], has_shadow_maps(u_lights[i]));
-  }
+  accumulate(s, v, u_lights[u_light_index], has_shadow_maps(u_lights[u_light_index]));
 #else
   accumulate(s, v, u_lights[v_light], kShadowedLights);
 #endif

@@ -1,14 +1,18 @@
 #version 450 core
 // Light volumes, lighting pass: shades the pixels the volume covers with its one
 // light, reading the surface from the G-buffer; additively blended into the HDR
-// target. With DIRECTIONAL_ONLY it is a full-screen pass over the directional
-// lights instead, which have no volume.
+// target. With DIRECTIONAL_ONLY it is a full-screen pass for one directional
+// light instead (u_light_index), which has no volume: one pass per light, as a
+// loop over the whole buffer that skips the others would evaluate every light
+// where the driver runs both sides of a branch (llvmpipe).
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"
 #include "common/lighting_targets.glsl"
 
-#ifndef DIRECTIONAL_ONLY
+#ifdef DIRECTIONAL_ONLY
+uniform uint u_light_index;
+#else
 flat in uint v_light;
 #endif
 
@@ -24,13 +28,10 @@ void main() {
   Surface s;
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
+  LightSum sum = no_light();
 #ifdef DIRECTIONAL_ONLY
-  LightSum sum = no_light();
-  for (uint i = 0u; i < u_light_count; ++i) {
-    if (uint(u_lights[i].color_kind.w) == kLightDirectional) add_light(sum, s, v, u_lights[i]);
-  }
+  add_light(sum, s, v, u_lights[u_light_index]);
 #else
-  LightSum sum = no_light();
   add_light_as(sum, s, v, u_lights[v_light], kShadowedLights);
 #endif
   // Additive: every target gains this pass's light.

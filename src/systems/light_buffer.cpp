@@ -111,10 +111,12 @@ std::uint32_t shadowed_light_count(std::span<const GpuLight> lights) {
   return count;
 }
 
-bool has_directional_light(std::span<const GpuLight> lights) {
-  return std::any_of(lights.begin(), lights.end(), [](const GpuLight& light) {
-    return light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
-  });
+std::vector<std::uint32_t> directional_lights(std::span<const GpuLight> lights) {
+  std::vector<std::uint32_t> indices;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    if (lights[i].color_kind.w == static_cast<float>(GpuLightKind::Directional)) indices.push_back(static_cast<std::uint32_t>(i));
+  }
+  return indices;
 }
 
 }  // namespace atrium

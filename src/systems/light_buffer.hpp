@@ -34,7 +34,7 @@ static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights
 
 // Whether any of `lights` is directional: volume techniques light those in a
 // full-screen pass of their own, skipped when there are none.
-[[nodiscard]] bool has_directional_light(std::span<const GpuLight> lights);
+[[nodiscard]] std::vector<std::uint32_t> directional_lights(std::span<const GpuLight> lights);
 // How many lights lead `lights` with shadow maps this frame (spot.z set): the
 // ShadowAtlas moves the shadowed lights to the front.
 [[nodiscard]] std::uint32_t shadowed_light_count(std::span<const GpuLight> lights);

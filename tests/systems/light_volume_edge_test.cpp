@@ -4,7 +4,10 @@
 // directional lights, alpha-blended geometry in front of the lit scene, and
 // small lights that reach only that glass (its lists must come from the glass,
 // not from the opaque surfaces behind it).
+#include <algorithm>
+#include <iterator>
 #include <memory>
+#include <string_view>
 
 #include "app/world.hpp"
 #include "assets/image.hpp"
@@ -99,6 +102,13 @@ assets::SceneLight sun() {
   return light;
 }
 
+assets::SceneLight evening_sun() {
+  assets::SceneLight light{glm::vec3(0.0f), glm::vec3(1.0f, 0.6f, 0.3f), 0.3f, std::nullopt};
+  light.kind = assets::LightKind::Directional;
+  light.direction = glm::normalize(glm::vec3(0.8f, -0.3f, -0.5f));
+  return light;
+}
+
 // A lattice of small lights just above the floor: many of their spheres cross
 // tile and cluster boundaries, where a culling bug would cut light off.
 std::vector<assets::SceneLight> straddling_lights() {
@@ -140,6 +150,10 @@ const EdgeCase kCases[] = {
      glm::vec3(0.0f, 0.8f, -9.98f), 0.0f},
     {"straddling_edges", straddling_lights()},
     {"lights_at_the_panes", lights_at_the_panes(), 200.0f, true},
+    // Each directional light is its own full-screen pass in the volume modes:
+    // two of them, neither first in the buffer, between point lights.
+    {"two_suns_among_lights", {point(glm::vec3(2.0f, 1.0f, 0.0f), glm::vec3(0.4f, 1.0f, 0.4f), 0.5f, 4.0f), sun(),
+                               point(glm::vec3(-1.5f, 0.6f, 1.0f), glm::vec3(1.0f, 0.5f, 0.3f), 0.4f, 3.0f), evening_sun()}},
 };
 
 class VolumeEdgeCase : public testing::GlTest,
@@ -172,7 +186,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase,
 using BlendedPanes = testing::GlTest;
 
 TEST_F(BlendedPanes, AreVisibleOverTheLitScene) {
-  EdgeCase with = kCases[4];
+  EdgeCase with = *std::find_if(std::begin(kCases), std::end(kCases), [](const EdgeCase& c) { return std::string_view(c.name) == "blended_panes"; });
   EdgeCase without = with;
   without.blended_panes = false;
   // The panes change the picture where they are: this is not a no-op test.

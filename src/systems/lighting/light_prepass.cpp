@@ -63,10 +63,11 @@ void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const F
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   glDepthMask(GL_FALSE);
-  if (has_directional_light(frame.lights)) {
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  for (const std::uint32_t light : directional_lights(frame.lights)) {
     directional_.draw([&](gfx::ShaderProgram& program) {
+      program.set("u_light_index", light);
       program.use();
       fullscreen_.draw();
     });

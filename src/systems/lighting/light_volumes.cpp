@@ -26,9 +26,12 @@ void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets
   }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
-  if (has_directional_light(frame.lights)) {
+  if (const std::vector<std::uint32_t> suns = directional_lights(frame.lights); !suns.empty()) {
     const auto pass = frame.timer.scope("directional");
-    gbuffer_.draw_fullscreen(directional_, targets);
+    for (const std::uint32_t light : suns) {
+      directional_.each([&](gfx::ShaderProgram& program) { program.set("u_light_index", light); });
+      gbuffer_.draw_fullscreen(directional_, targets);
+    }
   }
   {
     // Stencil and lighting alternate per light, so they are timed together.
