@@ -75,6 +75,9 @@ class Overlay {
   double memory_age_ = 1e9;
   std::uint64_t memory_bytes_ = 0;
   float light_radius_ = 5.0f;
+  // The MSAA sample counts the window's context can hold (four GL queries): a
+  // larger one is not offered. The context lives as long as the overlay.
+  int max_msaa_samples_ = std::min(8, gfx::max_msaa_samples());
 };
 
 bool combo(const char* label, const std::string& current, const std::vector<std::string>& items, std::string& chosen) {
@@ -174,9 +177,8 @@ void Overlay::controls(ecs::Registry& registry) {
   if (combo("z slicing", std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]), slicings, chosen)) {
     slicing = static_cast<lighting::ZSlicing>(std::find(slicings.begin(), slicings.end(), chosen) - slicings.begin());
   }
-  // The sample counts this context can hold: a larger one is not offered.
   std::vector<std::string> sample_counts{"off"};
-  for (int samples = 2; samples <= std::min(8, gfx::max_msaa_samples()); samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
+  for (int samples = 2; samples <= max_msaa_samples_; samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
   int& msaa = settings.technique_options.msaa;
   if (combo("MSAA", msaa > 1 ? std::to_string(msaa) + "x" : "off", sample_counts, chosen)) {
     msaa = chosen == "off" ? 1 : std::stoi(chosen);
