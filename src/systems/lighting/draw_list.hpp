@@ -1,5 +1,6 @@
-// The frame's visible geometry as indirect draw batches, gathered once from the
-// MeshInstance entities the frustum culling system marked visible and shared by
+// The frame's visible geometry as indirect draw batches, gathered from the
+// MeshInstance entities the culling systems marked visible (once, and again
+// after the first pass when occlusion culling revealed more) and shared by
 // every pass of every technique. Per-instance data (model matrix, material
 // index) and material parameters live in storage buffers, so one
 // glMultiDrawElementsIndirect draws every primitive that shares a vertex
