@@ -4,8 +4,8 @@
 // radiance to the three light-buffer targets, blended additively. Drawn on a
 // light's volume, or with DIRECTIONAL_ONLY as a full-screen pass for one
 // directional light (u_light_index; one pass each, rather than a loop over
-// every light that llvmpipe would run in full). No material is known yet: the second geometry pass
-// multiplies the sums by it (shade.frag).
+// every light that llvmpipe would run in full). No material is known yet: the
+// second geometry pass multiplies the sums by it (shade.frag).
 #include "common/frame.glsl"
 #include "common/surface.glsl"
 #include "common/gbuffer.glsl"

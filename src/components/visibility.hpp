@@ -14,7 +14,7 @@ namespace seen {
 // In the view frustum and not facing away (frustum culling, each frame).
 inline constexpr std::uint8_t kInView = 1u << 0;
 // Shown in the last frame's depth: the first pass draws it before testing the
-// rest (occlusion culling; kept across frames).
+// rest (occlusion culling; kept across frames while in view).
 inline constexpr std::uint8_t kLastFrame = 1u << 1;
 // Not shown last frame, but this frame's first depth does not hide it: drawn
 // late in the first pass and in every pass after it (occlusion culling).

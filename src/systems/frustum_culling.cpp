@@ -42,9 +42,10 @@ bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye) {
 namespace {
 
 // Sets or clears bit kInView of state, keeping what occlusion culling learnt
-// last frame and forgetting what it revealed.
+// last frame while in view and forgetting what it revealed. What leaves the
+// view forgets it was shown: when it comes back it is tested before it is drawn.
 void mark_in_view(std::uint8_t& state, bool in_view) {
-  state = static_cast<std::uint8_t>((state & seen::kLastFrame) | (in_view ? seen::kInView : 0u));
+  state = in_view ? static_cast<std::uint8_t>((state & seen::kLastFrame) | seen::kInView) : std::uint8_t{0};
 }
 
 // Sizes a per-primitive or per-meshlet state list; a list of another size

@@ -32,8 +32,8 @@ struct GpuLight {
 };
 static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights.glsl");
 
-// Whether any of `lights` is directional: volume techniques light those in a
-// full-screen pass of their own, skipped when there are none.
+// The indices of the directional lights among `lights`: volume techniques
+// light each in a full-screen pass of its own.
 [[nodiscard]] std::vector<std::uint32_t> directional_lights(std::span<const GpuLight> lights);
 // How many lights lead `lights` with shadow maps this frame (spot.z set): the
 // ShadowAtlas moves the shadowed lights to the front.

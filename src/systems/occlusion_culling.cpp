@@ -141,12 +141,9 @@ OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& dep
 
 OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view) {
   OcclusionCounts counts;
-  registry.view<Visibility>().each([](Visibility& visibility) {
-    for (std::uint8_t& state : visibility.primitives) state &= static_cast<std::uint8_t>(~seen::kLastFrame);
-    for (std::uint8_t& state : visibility.meshlets) state &= static_cast<std::uint8_t>(~seen::kLastFrame);
-  });
   for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3 min, glm::vec3 max, std::size_t triangles) {
-    if (!hidden(depth, view, min, max, triangles, counts)) state |= seen::kLastFrame;
+    if (hidden(depth, view, min, max, triangles, counts)) state &= static_cast<std::uint8_t>(~seen::kLastFrame);
+    else state |= seen::kLastFrame;
   });
   return counts;
 }

@@ -62,7 +62,8 @@ struct OcclusionCounts {
 // last frame did not show and `depth` does not hide.
 OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
 // Sets seen::kLastFrame on every opaque primitive and meshlet in view that
-// `depth` does not hide and clears it everywhere else, for the next frame.
+// `depth` does not hide and clears it on those it hides, for the next frame
+// (frustum culling clears it on what leaves the view).
 OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
 
 // Reads a depth buffer back as a DepthPyramid (culling/depth_tiles.comp).

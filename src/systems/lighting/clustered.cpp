@@ -88,14 +88,15 @@ void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& 
   } else {
     const auto pass = frame.timer.scope("depth pre-pass");
     begin_scene_pass(frame, targets);
+    const DrawBatches draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
     if (shading_depth_.id() != 0) {
       glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer_.id());
       const float far = gfx::kDepthFar;
       glClearNamedFramebufferfv(prepass_framebuffer_.id(), GL_COLOR, 0, &far);
-      frame.draw_first_pass([&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); });
+      frame.draw_first_pass(draw_prepass);
     } else {
       glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      frame.draw_first_pass([&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); });
+      frame.draw_first_pass(draw_prepass);
       glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     }
   }
