@@ -2,7 +2,7 @@
 # Builds the libFuzzer targets with clang (build-fuzz/) and runs each for
 # SECONDS (default 60), seeded with ../shared/testdata/gltf, tests/data/gltf-tools
 # (meshopt and Draco files other tools wrote), tests/data/model-tools (DDS and
-# PNG textures), scenes/ and the
+# PNG textures; OBJ, MTL and FBX models), scenes/ and the
 # regression inputs in tests/fuzz/regressions/. A crash leaves its input in
 # build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
 # to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
@@ -12,17 +12,20 @@ cd "$(dirname "$0")/.."
 seconds=${1:-60}
 ./scripts/install-deps.sh
 CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DATRIUM_FUZZ=ON >/dev/null
-cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer texture_fuzzer
+cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer texture_fuzzer model_fuzzer
 testdata=../shared/testdata/gltf
 mkdir -p build-fuzz/crashes
 status=0
-for target in scene_file gltf texture; do
+for target in scene_file gltf texture model; do
   corpus=build-fuzz/corpus/$target
   seeds=build-fuzz/seeds/$target
   rm -rf "$seeds" && mkdir -p "$corpus" "$seeds"
   cp tests/fuzz/regressions/$target/* "$seeds"/ 2>/dev/null || true
   if [ "$target" = scene_file ]; then
     cp scenes/*.json tests/data/*.json "$seeds"/
+  elif [ "$target" = model ]; then
+    # OBJ, MTL and FBX files assimp and Blender wrote, and the hostile ones.
+    find tests/data/model-tools \( -name '*.obj' -o -name '*.mtl' -o -name '*.fbx' \) -size -400k -exec cp {} "$seeds"/ \;
   elif [ "$target" = texture ]; then
     # DDS files ImageMagick wrote (BC1, BC3, uncompressed) and small PNGs.
     cp tests/data/model-tools/*.dds "$seeds"/

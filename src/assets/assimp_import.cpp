@@ -15,6 +15,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "assets/assimp_file_access.hpp"
+#include "assets/file_lookup.hpp"
 #include "assets/texture_decode.hpp"
 
 namespace atrium::assets {
@@ -141,11 +143,18 @@ class AssimpImporter {
     std::error_code ec;
     if (!fs::is_regular_file(path_, ec)) fail("no such file");
     Assimp::Importer importer;
+    // Owned by the importer, which outlives every use of it here.
+    auto* files = new AssimpFileAccess(path_, budget_.limit());
+    importer.SetIOHandler(files);
     // Points and lines are dropped; everything else becomes triangle lists.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_GenSmoothNormals |
                            aiProcess_FlipUVs | aiProcess_ValidateDataStructure;
     const aiScene* scene = importer.ReadFile(path_.string(), flags);
+    for (const AssimpFileAccess::Access& access : files->accesses()) {
+      if (fs::path(access.asked) == path_ && !access.problem.empty()) fail(access.problem);
+    }
+    for (std::string& line : files->warnings()) warn(std::move(line));
     if (!scene || !scene->mRootNode) fail(first_line(importer.GetErrorString()));
     if (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) fail("the file is incomplete (" + first_line(importer.GetErrorString()) + ")");
     scene_ = scene;
@@ -346,53 +355,17 @@ class AssimpImporter {
     }
   }
 
-  // The file a texture path names, found as exporters write paths; a warning
-  // says how when it was not where the path says.
+  // The file a texture path names (file_lookup.hpp), with a warning when it
+  // was not where the path says.
   std::optional<fs::path> find_texture(const std::string& written) {
     if (const auto known = found_.find(written); known != found_.end()) return known->second;
-    std::string path = written;
-    std::replace(path.begin(), path.end(), '\\', '/');
-    // "C:/..." and "//server/..." are absolute on the machine that wrote them.
-    const bool foreign_absolute = (path.size() > 2 && std::isalpha(static_cast<unsigned char>(path[0])) && path[1] == ':' && path[2] == '/') ||
-                                  path.starts_with("//");
-    const bool absolute = foreign_absolute || fs::path(path).is_absolute();
-    const fs::path folder = path_.parent_path();
-    std::error_code ec;
-    const fs::path direct = absolute ? fs::path(path) : folder / path;
-    std::optional<fs::path> found;
-    std::string how;
-    if (!foreign_absolute && fs::is_regular_file(direct, ec)) {
-      found = direct;
-      if (path != written) how = "has Windows separators";
-    } else {
-      // The same name in another letter case, or an absolute path from the
-      // author's machine: look for the file name beside the model and below
-      // it, preferring the file whose folders end the written path.
-      const std::string wanted = lower(fs::path(path).filename().string());
-      const std::string written_lower = "/" + lower(path);
-      std::size_t best = 0;
-      for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::skip_permission_denied, ec);
-           !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
-        if (it.depth() > 4) it.disable_recursion_pending();
-        if (!it->is_regular_file(ec) || lower(it->path().filename().string()) != wanted) continue;
-        const std::string candidate = "/" + lower(fs::relative(it->path(), folder, ec).generic_string());
-        const std::size_t match = written_lower.ends_with(candidate) ? candidate.size() : 1;
-        if (!found || match > best) {
-          found = it->path();
-          best = match;
-        }
-      }
-      if (found) {
-        how = absolute ? "is an absolute path from another machine"
-              : lower(path) == lower(fs::relative(*found, folder, ec).generic_string()) ? "differs in letter case from the file on disk"
-                                                                                         : "is not where the path says";
-      }
+    const FoundFile found = find_named_file(path_.parent_path(), written);
+    if (found.path && !found.how.empty()) {
+      std::error_code ec;
+      warn("texture '" + written + "' " + found.how + "; " + fs::relative(*found.path, path_.parent_path(), ec).generic_string() + " is used");
     }
-    if (found && !how.empty()) {
-      warn("texture '" + written + "' " + how + "; " + fs::relative(*found, folder, ec).generic_string() + " is used");
-    }
-    found_[written] = found;
-    return found;
+    found_[written] = found.path;
+    return found.path;
   }
 
   // Reads a texture's bytes: a file, or one the file embeds ("*3").

@@ -53,9 +53,8 @@ std::vector<std::uint8_t> decode_meshopt(const Document& document, std::size_t v
   return out;
 }
 
-std::map<int, std::vector<std::uint8_t>> decode_draco(const Document& document, const Primitive& primitive,
-                                                      std::span<const std::uint8_t> stream, const std::string& where,
-                                                      const MemoryBudget& budget) {
+DecodedDraco decode_draco(const Document& document, const Primitive& primitive, std::span<const std::uint8_t> stream,
+                          const std::string& where, const MemoryBudget& budget) {
   const std::string file = file_of(document);
   const std::string what = where + " (KHR_draco_mesh_compression)";
   auto fail = [&](const std::string& problem) -> void { throw ImportError(file + ": " + what + " " + problem); };
@@ -82,26 +81,26 @@ std::map<int, std::vector<std::uint8_t>> decode_draco(const Document& document, 
   const std::unique_ptr<draco::Mesh> mesh = std::move(decoded).value();
   const std::size_t points = mesh->num_points();
 
-  std::map<int, std::vector<std::uint8_t>> out;
+  DecodedDraco out;
+  auto differs = [&](const char* things, std::size_t decoded, std::size_t declared_count) {
+    out.warnings.push_back(what + " decodes to " + std::to_string(decoded) + " " + things + ", its accessor declares " +
+                           std::to_string(declared_count) + "; the decoded data is used");
+  };
   if (primitive.indices >= 0) {
     const Accessor& a = document.accessors[static_cast<std::size_t>(primitive.indices)];
-    if (a.count != static_cast<std::size_t>(mesh->num_faces()) * 3) {
-      fail("decodes to " + std::to_string(mesh->num_faces()) + " triangles, but accessors[" + std::to_string(primitive.indices) +
-           "] declares " + std::to_string(a.count) + " indices");
-    }
-    std::vector<std::uint8_t> bytes(budget.bytes(a.count, component_size(a.component_type), what));
-    const std::size_t size = component_size(a.component_type);
+    const std::size_t count = static_cast<std::size_t>(mesh->num_faces()) * 3;
+    if (a.count != count) differs("indices", count, a.count);
+    DecodedAccessor indices{std::vector<std::uint8_t>(budget.bytes(count, sizeof(std::uint32_t), what)), count, kUnsignedInt};
     for (draco::FaceIndex f(0); f < mesh->num_faces(); ++f) {
       for (int k = 0; k < 3; ++k) {
         const std::uint32_t index = mesh->face(f)[k].value();
-        if (size == 1 && index > 0xff) fail("has index " + std::to_string(index) + ", too large for its UNSIGNED_BYTE accessor");
-        if (size == 2 && index > 0xffff) fail("has index " + std::to_string(index) + ", too large for its UNSIGNED_SHORT accessor");
-        // Little-endian, like glTF: the low bytes of the index.
-        std::memcpy(bytes.data() + (static_cast<std::size_t>(f.value()) * 3 + static_cast<std::size_t>(k)) * size, &index, size);
+        std::memcpy(indices.bytes.data() + (static_cast<std::size_t>(f.value()) * 3 + static_cast<std::size_t>(k)) * sizeof index, &index,
+                    sizeof index);
       }
     }
-    out.emplace(primitive.indices, std::move(bytes));
+    out.accessors.emplace(primitive.indices, std::move(indices));
   }
+  bool told_vertices = false;
   for (const auto& [semantic, id] : draco_primitive.attributes) {
     const auto accessor_it = primitive.attributes.find(semantic);
     if (accessor_it == primitive.attributes.end()) continue;  // the extension may carry attributes the primitive does not use
@@ -109,9 +108,9 @@ std::map<int, std::vector<std::uint8_t>> decode_draco(const Document& document, 
     const Accessor& a = document.accessors[static_cast<std::size_t>(accessor)];
     const draco::PointAttribute* attribute = mesh->GetAttributeByUniqueId(static_cast<std::uint32_t>(id));
     if (!attribute) fail("has no attribute " + std::to_string(id) + " for " + semantic);
-    if (a.count != points) {
-      fail("decodes to " + std::to_string(points) + " vertices, but accessors[" + std::to_string(accessor) + "] (" + semantic +
-           ") declares " + std::to_string(a.count));
+    if (a.count != points && !told_vertices) {
+      differs("vertices", points, a.count);
+      told_vertices = true;
     }
     std::vector<std::uint8_t> bytes(budget.bytes(points, a.element_size(), what));
     bool ok = false;
@@ -124,7 +123,7 @@ std::map<int, std::vector<std::uint8_t>> decode_draco(const Document& document, 
       default: ok = store_draco_values<float>(*attribute, points, a.components, bytes); break;
     }
     if (!ok) fail("has values of " + semantic + " that do not convert to its accessor's component type");
-    out.emplace(accessor, std::move(bytes));
+    out.accessors.emplace(accessor, DecodedAccessor{std::move(bytes), points, a.component_type});
   }
   return out;
 }

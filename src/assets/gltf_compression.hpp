@@ -23,11 +23,27 @@ inline constexpr std::size_t kMeshoptMaxExpansion = 64;
 // filter applied. Throws ImportError naming the view.
 [[nodiscard]] std::vector<std::uint8_t> decode_meshopt(const Document& document, std::size_t view, const MemoryBudget& budget);
 
-// A Draco primitive decoded into one tightly packed byte array per accessor
-// it names (its indices and every attribute in the extension), each in that
-// accessor's declared componentType. Throws ImportError naming `where`.
-[[nodiscard]] std::map<int, std::vector<std::uint8_t>> decode_draco(const Document& document, const Primitive& primitive,
-                                                                    std::span<const std::uint8_t> stream, const std::string& where,
-                                                                    const MemoryBudget& budget);
+// One accessor's elements as a Draco primitive decodes them: tightly packed,
+// `count` of them (the decoded count, which may differ from the accessor's
+// declared one), each component of `component_type`.
+struct DecodedAccessor {
+  std::vector<std::uint8_t> bytes;
+  std::size_t count = 0;
+  int component_type = 0;
+};
+
+struct DecodedDraco {
+  std::map<int, DecodedAccessor> accessors;  // by accessor index
+  // Where the decoded counts differ from the declared ones (encoders split
+  // and merge vertices; files from public sample sets do this), one line each.
+  std::vector<std::string> warnings;
+};
+
+// A Draco primitive decoded: its indices (as UNSIGNED_INT, whatever their
+// accessor declares, since the decoded vertices may outnumber its type) and
+// every attribute in the extension, in its accessor's componentType. Throws
+// ImportError naming `where` for what cannot be drawn.
+[[nodiscard]] DecodedDraco decode_draco(const Document& document, const Primitive& primitive, std::span<const std::uint8_t> stream,
+                                        const std::string& where, const MemoryBudget& budget);
 
 }  // namespace atrium::assets::gltf

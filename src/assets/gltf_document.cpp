@@ -157,11 +157,6 @@ class Reader {
   std::string file_;
 };
 
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
 int base64_value(unsigned char c) {
   if (c >= 'A' && c <= 'Z') return c - 'A';
   if (c >= 'a' && c <= 'z') return c - 'a' + 26;
@@ -333,11 +328,15 @@ class DocumentReader {
 
   void parse() {
     const Json& root = root_;
+    // Every glTF names its version in asset.version; JSON without it is some
+    // other document saved as .gltf, refused rather than shown as an empty scene.
+    // (An empty version, as tinygltf's issue-416 case writes, is let through.)
     const Json* asset = r_.member(root, "asset");
-    if (asset && asset->is_object()) {
-      const std::string version = r_.string(*asset, "version", "asset");
-      if (!version.empty() && version[0] != '2') fail("is glTF version " + version + "; Atrium reads glTF 2.0", "");
+    if (!asset || !asset->is_object() || !r_.member(*asset, "version")) {
+      fail("is not a glTF file: its JSON has no asset.version (every glTF names its version there)", "");
     }
+    const std::string version = r_.string(*asset, "version", "asset");
+    if (!version.empty() && version[0] != '2') fail("is glTF version " + version + "; Atrium reads glTF 2.0", "");
     for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
       auto& out = std::string(key) == "extensionsUsed" ? doc_.extensions_used : doc_.extensions_required;
       for (const Json& name : r_.array_member(root, key, "")) {

@@ -175,23 +175,30 @@ class Importer {
 
   // Where an accessor's elements come from: its bufferView, or (for a Draco
   // primitive's accessors) the decoded bytes, tightly packed.
+  // (Draco's count and index type are the decoded ones, not the declared.)
   struct Elements {
     const std::uint8_t* data = nullptr;  // nullptr: every element is zero
     std::size_t stride = 0;
+    std::size_t count = 0;
+    int component_type = 0;
   };
 
-  using DecodedAccessors = std::map<int, std::vector<std::uint8_t>>;
+  using DecodedAccessors = std::map<int, gltf::DecodedAccessor>;
 
   Elements elements(int index, const DecodedAccessors* decoded) const {
     const Accessor& a = doc_.accessors[static_cast<std::size_t>(index)];
     if (decoded) {
       const auto it = decoded->find(index);
-      if (it != decoded->end()) return {it->second.data(), a.element_size()};
+      if (it != decoded->end()) {
+        const gltf::DecodedAccessor& d = it->second;
+        return {d.bytes.data(), gltf::component_size(d.component_type) * static_cast<std::size_t>(a.components), d.count, d.component_type};
+      }
     }
-    if (a.buffer_view < 0) return {};
+    if (a.buffer_view < 0) return {nullptr, 0, a.count, a.component_type};
     const gltf::BufferView& view = doc_.buffer_views[static_cast<std::size_t>(a.buffer_view)];
     // The document checked that every element lies inside the view.
-    return {view_bytes(static_cast<std::size_t>(a.buffer_view)).data() + a.byte_offset, view.byte_stride ? view.byte_stride : a.element_size()};
+    return {view_bytes(static_cast<std::size_t>(a.buffer_view)).data() + a.byte_offset, view.byte_stride ? view.byte_stride : a.element_size(),
+            a.count, a.component_type};
   }
 
   // All elements of an accessor as floats, `components` per element, with
@@ -203,13 +210,15 @@ class Importer {
       fail(what + " is " + accessor_name(index) + ", of type " + a.type + "; expected " + (components.size() > 1 ? "VEC3 or VEC4" :
            *components.begin() == 1 ? "SCALAR" : "VEC" + std::to_string(*components.begin())));
     }
-    const std::size_t size = gltf::component_size(a.component_type);
-    const std::size_t n = static_cast<std::size_t>(a.components);
-    std::vector<float> out(budget_.bytes(a.count, n * sizeof(float), accessor_name(index)) / sizeof(float), 0.0f);
     const Elements source = elements(index, decoded);
+    const std::size_t size = gltf::component_size(source.component_type);
+    const std::size_t n = static_cast<std::size_t>(a.components);
+    std::vector<float> out(budget_.bytes(source.count, n * sizeof(float), accessor_name(index)) / sizeof(float), 0.0f);
     if (source.data) {
-      for (std::size_t i = 0; i < a.count; ++i) {
-        for (std::size_t c = 0; c < n; ++c) out[i * n + c] = to_float(source.data + i * source.stride + c * size, a.component_type, a.normalized);
+      for (std::size_t i = 0; i < source.count; ++i) {
+        for (std::size_t c = 0; c < n; ++c) {
+          out[i * n + c] = to_float(source.data + i * source.stride + c * size, source.component_type, a.normalized);
+        }
       }
     }
     if (a.sparse) {
@@ -219,7 +228,9 @@ class Importer {
       const std::uint8_t* values = view_bytes(s.values_view).data() + s.values_offset;
       for (std::size_t i = 0; i < s.count; ++i) {
         const std::uint32_t target = to_index(indices + i * index_size, s.indices_component_type);
-        if (target >= a.count) fail(accessor_name(index) + ".sparse substitutes element " + std::to_string(target) + " of " + std::to_string(a.count));
+        if (target >= source.count) {
+          fail(accessor_name(index) + ".sparse substitutes element " + std::to_string(target) + " of " + std::to_string(source.count));
+        }
         for (std::size_t c = 0; c < n; ++c) out[target * n + c] = to_float(values + (i * n + c) * size, a.component_type, a.normalized);
       }
     }
@@ -236,9 +247,9 @@ class Importer {
     if (a.sparse) fail(what + ": the index accessor " + accessor_name(index) + " is sparse, which glTF does not allow for indices");
     const Elements source = elements(index, decoded);
     if (!source.data) fail(what + ": the index accessor " + accessor_name(index) + " has no data");
-    std::vector<std::uint32_t> out(budget_.bytes(a.count, sizeof(std::uint32_t), accessor_name(index)) / sizeof(std::uint32_t));
-    for (std::size_t i = 0; i < a.count; ++i) {
-      out[i] = to_index(source.data + i * source.stride, a.component_type);
+    std::vector<std::uint32_t> out(budget_.bytes(source.count, sizeof(std::uint32_t), accessor_name(index)) / sizeof(std::uint32_t));
+    for (std::size_t i = 0; i < source.count; ++i) {
+      out[i] = to_index(source.data + i * source.stride, source.component_type);
       if (out[i] >= vertex_count) {
         fail(what + ": index " + std::to_string(out[i]) + " is out of range (" + std::to_string(vertex_count) + " vertices)");
       }
@@ -324,9 +335,12 @@ class Importer {
         warn(what + " has no POSITION and is skipped");
         continue;
       }
-      DecodedAccessors decoded;
-      if (prim.draco) decoded = gltf::decode_draco(doc_, prim, view_bytes(prim.draco->buffer_view), what, budget_);
-      const DecodedAccessors* draco = prim.draco ? &decoded : nullptr;
+      gltf::DecodedDraco decoded;
+      if (prim.draco) {
+        decoded = gltf::decode_draco(doc_, prim, view_bytes(prim.draco->buffer_view), what, budget_);
+        for (const std::string& line : decoded.warnings) warn(line);
+      }
+      const DecodedAccessors* draco = prim.draco ? &decoded.accessors : nullptr;
       // Without normals the spec asks for flat ones: every triangle gets
       // vertices of its own, so such primitives never share.
       const bool flat = source_accessors.normal < 0;

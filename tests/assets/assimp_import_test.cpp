@@ -129,6 +129,48 @@ TEST_F(ObjFolder, AMissingTextureIsOneWarningAndTheNeutralDefault) {
   EXPECT_FALSE(cube_material(assets, model).base_color_texture.valid());
 }
 
+// Material libraries go through Atrium's file access (assimp_file_access.hpp):
+// missing, a directory, another letter case, beyond the load budget.
+TEST_F(ObjFolder, AMissingMaterialLibraryIsOneWarningNamingIt) {
+  AssetManager assets;
+  const ModelImport model = load(assets);
+  ASSERT_EQ(model.warnings.size(), 1u) << warnings(model);
+  EXPECT_EQ(model.warnings[0], (folder_ / "cube.assimp.obj").string() +
+                                   ": 'cube.assimp.mtl', which it names, cannot be read (no such file); what it holds is left out");
+  EXPECT_EQ(drawn_triangles(assets, model), 12u) << "the geometry still loads";
+}
+
+TEST_F(ObjFolder, AMaterialLibraryThatIsADirectoryIsAWarning) {
+  fs::create_directory(folder_ / "cube.assimp.mtl");
+  AssetManager assets;
+  const ModelImport model = load(assets);
+  ASSERT_EQ(model.warnings.size(), 1u) << warnings(model);
+  EXPECT_NE(model.warnings[0].find("'cube.assimp.mtl', which it names, cannot be read (a directory)"), std::string::npos) << model.warnings[0];
+}
+
+TEST_F(ObjFolder, AMaterialLibraryInAnotherLetterCaseIsFoundWithAWarning) {
+  fs::copy_file(kFixtures / "cube.assimp.mtl", folder_ / "CUBE.Assimp.MTL");
+  put("Cube_BaseColor.png", "Cube_BaseColor.png");
+  AssetManager assets;
+  const ModelImport model = load(assets);
+  ASSERT_EQ(model.warnings.size(), 1u) << warnings(model);
+  EXPECT_NE(model.warnings[0].find("'cube.assimp.mtl' differs in letter case from the file on disk; CUBE.Assimp.MTL is used"), std::string::npos)
+      << model.warnings[0];
+  EXPECT_TRUE(cube_material(assets, model).base_color_texture.valid()) << "its materials are read";
+}
+
+TEST_F(ObjFolder, AMaterialLibraryBeyondTheLoadBudgetIsAWarning) {
+  write_mtl(std::string(256 * 1024, '#'));
+  AssetManager assets;
+  ImportOptions options;
+  options.memory_limit = 128 * 1024;
+  const ModelImport model = import_model(folder_ / "cube.assimp.obj", assets, options);
+  ASSERT_EQ(model.warnings.size(), 1u) << warnings(model);
+  EXPECT_NE(model.warnings[0].find("'cube.assimp.mtl', which it names, cannot be read (256.0 KiB, more than the memory available, 128.0 KiB)"),
+            std::string::npos)
+      << model.warnings[0];
+}
+
 TEST_F(ObjFolder, PhongMaterialsBecomeRoughnessAndAlphaMasks) {
   // An exponent of 98 is GGX roughness sqrt(2 / 100); map_d becomes the colour
   // texture's alpha; a greyscale bump map is a height map, not drawn.

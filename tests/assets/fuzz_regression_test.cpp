@@ -4,9 +4,12 @@
 #include <fstream>
 #include <iterator>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "assets/gltf_import.hpp"
+#include "assets/model_import.hpp"
 #include "assets/scene_file.hpp"
 #include "assets/texture_decode.hpp"
 
@@ -45,6 +48,33 @@ TEST(FuzzRegressions, GltfFilesImportOrAreRefused) {
       EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos) << "the error names the file: " << e.what();
     }
   }
+}
+
+// Hostile OBJ, MTL and FBX files (made from real tools' files by
+// regressions/model/make_hostile.py), imported beside a directory named like a
+// material library: each imports with warnings or is refused in one line.
+TEST(FuzzRegressions, ModelFilesImportOrAreRefused) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("atrium_model_regressions_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder / "folder.mtl");
+  std::size_t imported = 0, refused = 0;
+  for (const auto& file : inputs("model")) std::filesystem::copy_file(file, folder / file.filename());
+  for (const auto& file : inputs("model")) {
+    if (!is_model_file(file)) continue;
+    AssetManager assets;
+    try {
+      const ModelImport model = import_model(folder / file.filename(), assets);
+      for (const std::string& warning : model.warnings) EXPECT_EQ(warning.find('\n'), std::string::npos) << warning;
+      ++imported;
+    } catch (const ImportError& e) {
+      const std::string message = e.what();
+      EXPECT_EQ(message.rfind((folder / file.filename()).string() + ": ", 0), 0u) << "the error names the file: " << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+      ++refused;
+    }
+  }
+  std::filesystem::remove_all(folder);
+  EXPECT_GE(imported, 3u);
+  EXPECT_GE(refused, 5u);
 }
 
 std::vector<std::uint8_t> read_bytes(const std::filesystem::path& file) {

@@ -3,9 +3,13 @@
 // imports with its source's triangles, values decode close to the source's,
 // and what each tool wrote (filters, instancing, colours, unlit) is read.
 // Renders are compared with their sources in tests/systems/gltf_render_test.cpp.
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -148,6 +152,72 @@ TEST(GltfTools, DracoDecodesPositionsWithinItsQuantisationStep) {
     worst = std::max(worst, nearest);
   }
   EXPECT_LT(worst, 2e-4f);
+}
+
+// A .glb with its JSON replaced (its BIN chunk kept byte for byte).
+void write_glb_with_json(const fs::path& from, const nlohmann::json& j, const fs::path& to) {
+  std::ifstream in(from, std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::uint32_t json_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);
+  const std::vector<char> binary(bytes.begin() + 20 + json_length, bytes.end());
+  std::string text = j.dump();
+  text.resize((text.size() + 3) / 4 * 4, ' ');
+  const std::uint32_t header[5] = {0x46546C67, 2, static_cast<std::uint32_t>(20 + text.size() + binary.size()),
+                                   static_cast<std::uint32_t>(text.size()), 0x4E4F534A};
+  std::ofstream out(to, std::ios::binary);
+  out.write(reinterpret_cast<const char*>(header), sizeof header);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  out.write(binary.data(), static_cast<std::streamsize>(binary.size()));
+}
+
+TEST(GltfTools, DracoPrimitivesDrawTheirDecodedCountsWhateverTheAccessorsDeclare) {
+  // Files in public sample sets declare other counts than their Draco streams
+  // decode to (glTF-Sample-Models' BrainStem: 802 declared, 806 decoded; older
+  // gltf-pipeline releases wrote the source's counts). glTF-Transform's teapot
+  // stream with its accessors' counts set as such files have them: the decoded
+  // data draws, with one warning per primitive and kind of count.
+  const fs::path fixture = kFixtures / "teapot.draco-edgebreaker.glb";
+  AssetManager assets;
+  const ModelImport reference = import_gltf(fixture, assets);
+  const std::size_t vertices = assets.mesh_asset(reference.asset).vertex_count();
+  const fs::path folder = fs::temp_directory_path() / ("atrium_draco_counts_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  for (const long change : {-4L, +7L}) {
+    nlohmann::json j = glb_json(fixture);
+    const nlohmann::json& primitive = j["meshes"][0]["primitives"][0];
+    for (const auto& [semantic, accessor] : primitive["attributes"].items()) {
+      j["accessors"][accessor.get<std::size_t>()]["count"] = static_cast<long>(vertices) + change;
+    }
+    j["accessors"][primitive["indices"].get<std::size_t>()]["count"] = j["accessors"][primitive["indices"].get<std::size_t>()]["count"].get<long>() - 3;
+    const fs::path file = folder / ("teapot" + std::to_string(change) + ".glb");
+    write_glb_with_json(fixture, j, file);
+    const ModelImport imported = import_gltf(file, assets);
+    EXPECT_EQ(drawn_triangles(assets, imported), drawn_triangles(assets, reference)) << change;
+    EXPECT_EQ(assets.mesh_asset(imported.asset).vertex_count(), vertices) << change;
+    std::string all;
+    for (const std::string& w : imported.warnings) all += w + "\n";
+    const std::string where = file.string() + ": meshes[0].primitives[0] (KHR_draco_mesh_compression) decodes to ";
+    EXPECT_NE(all.find(where + std::to_string(vertices) + " vertices, its accessor declares " + std::to_string(static_cast<long>(vertices) + change) +
+                       "; the decoded data is used"),
+              std::string::npos)
+        << all;
+    EXPECT_NE(all.find(where + std::to_string(drawn_triangles(assets, reference) * 3) + " indices"), std::string::npos) << all;
+    EXPECT_EQ(imported.warnings.size(), reference.warnings.size() + 2) << all;
+  }
+  fs::remove_all(folder);
+}
+
+TEST(GltfTools, JsonThatIsNotGltfIsRefusedNamingWhatIsMissing) {
+  // npm's package.json saved as .gltf: valid JSON, no asset.version.
+  AssetManager assets;
+  const fs::path file = kFixtures / "not-gltf.npm-package.gltf";
+  try {
+    (void)import_gltf(file, assets);
+    ADD_FAILURE() << "loaded";
+  } catch (const ImportError& e) {
+    EXPECT_EQ(std::string(e.what()), file.string() + ": is not a glTF file: its JSON has no asset.version (every glTF names its version there)");
+  }
 }
 
 TEST(GltfTools, BlenderColoursTangentsAndUnlitAreRead) {

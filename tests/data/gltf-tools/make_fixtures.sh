@@ -41,3 +41,6 @@ $gltf_transform draco "$testdata/blender-exports/torusknot.gltf" torusknot.draco
 gltfpack -i "$testdata/blender-exports/torusknot.gltf" -o /tmp/torusknot.gltfpack-quantized.glb
 $gltf_transform draco /tmp/torusknot.gltfpack-quantized.glb torusknot.quantized.draco-edgebreaker.glb
 $gltf_transform draco blender-colors.glb blender-colors.draco-edgebreaker.glb
+
+# A JSON document that is not glTF, saved as .gltf: npm's package.json.
+(cd "$(mktemp -d)" && npm init -y >/dev/null && cp package.json "$here/not-gltf.npm-package.gltf")

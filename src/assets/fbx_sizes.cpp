@@ -1,0 +1,83 @@
+#include "assets/fbx_sizes.hpp"
+
+#include <cstring>
+#include <vector>
+
+#include "assets/load_budget.hpp"
+
+namespace atrium::assets {
+namespace {
+
+constexpr char kMagic[] = "Kaydara FBX Binary  ";
+// zlib's deflate expands at most 1032:1 (RFC 1951 blocks of 258-byte matches).
+constexpr std::uint64_t kInflateRatio = 1032;
+
+std::uint64_t read_le(std::span<const std::uint8_t> bytes, std::size_t at, std::size_t size) {
+  std::uint64_t value = 0;
+  for (std::size_t i = 0; i < size; ++i) value |= static_cast<std::uint64_t>(bytes[at + i]) << (8 * i);
+  return value;
+}
+
+std::size_t element_size(std::uint8_t type) {
+  switch (type) {
+    case 'f': case 'i': return 4;
+    case 'd': case 'l': return 8;
+    case 'b': return 1;
+    default: return 0;
+  }
+}
+
+}  // namespace
+
+std::string fbx_array_size_problem(std::span<const std::uint8_t> bytes, std::size_t limit) {
+  if (bytes.size() < 27 || std::memcmp(bytes.data(), kMagic, sizeof kMagic - 1) != 0) return {};
+  const std::uint64_t version = read_le(bytes, 23, 4);
+  // Node headers: end offset, property count, property bytes (32 bits before
+  // version 7500, 64 after), then the name's length and the name.
+  const std::size_t word = version >= 7500 ? 8 : 4;
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> pending{{27, bytes.size()}};  // node lists: [begin, end)
+  while (!pending.empty()) {
+    auto [at, end] = pending.back();
+    pending.pop_back();
+    while (at + 3 * word + 1 <= end) {
+      const std::uint64_t node_end = read_le(bytes, at, word);
+      if (node_end == 0) break;  // the null record that closes a list
+      const std::uint64_t property_bytes = read_le(bytes, at + 2 * word, word);
+      const std::uint64_t name_length = bytes[at + 3 * word];
+      const std::uint64_t properties = at + 3 * word + 1 + name_length;
+      // Structure out of bounds: libassimp reports that itself.
+      if (node_end <= at || node_end > end || properties > node_end || property_bytes > node_end - properties) return {};
+      for (std::uint64_t p = properties; p < properties + property_bytes;) {
+        const std::uint8_t type = bytes[p];
+        const std::size_t size = element_size(type);
+        if (size == 0) {
+          const std::size_t scalar = type == 'Y' ? 2 : type == 'C' ? 1 : type == 'I' || type == 'F' ? 4 : type == 'D' || type == 'L' ? 8 : 0;
+          if (scalar) {
+            p += 1 + scalar;
+          } else if ((type == 'S' || type == 'R') && p + 5 <= node_end) {
+            p += 5 + read_le(bytes, p + 1, 4);
+          } else {
+            return {};
+          }
+          continue;
+        }
+        if (p + 13 > node_end) return {};
+        const std::uint64_t count = read_le(bytes, p + 1, 4), encoding = read_le(bytes, p + 5, 4), stored = read_le(bytes, p + 9, 4);
+        const std::uint64_t declared = count * size;
+        const std::string name(reinterpret_cast<const char*>(&bytes[at + 3 * word + 1]), name_length);
+        const std::string what = "its array '" + name + "' at byte " + std::to_string(p) + " declares " + std::to_string(count) + " values (" +
+                                 format_bytes(static_cast<double>(declared)) + ")";
+        if (declared > limit) return what + ", more than the memory available, " + format_bytes(static_cast<double>(limit));
+        if (encoding == 1 && declared > stored * kInflateRatio + 64) {
+          return what + " from " + std::to_string(stored) + " compressed bytes, more than zlib can inflate them to";
+        }
+        p += 13 + stored;
+      }
+      if (properties + property_bytes < node_end) pending.emplace_back(properties + property_bytes, node_end);
+      at = node_end;
+    }
+  }
+  return {};
+}
+
+}  // namespace atrium::assets

@@ -1,0 +1,58 @@
+#include "assets/file_lookup.hpp"
+
+#include <algorithm>
+#include <cctype>
+
+namespace atrium::assets {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+}  // namespace
+
+FoundFile find_named_file(const fs::path& folder, const std::string& written) {
+  std::string path = written;
+  std::replace(path.begin(), path.end(), '\\', '/');
+  // "C:/..." and "//server/..." are absolute on the machine that wrote them.
+  const bool foreign_absolute = (path.size() > 2 && std::isalpha(static_cast<unsigned char>(path[0])) && path[1] == ':' && path[2] == '/') ||
+                                path.starts_with("//");
+  const bool absolute = foreign_absolute || fs::path(path).is_absolute();
+  std::error_code ec;
+  const fs::path direct = absolute ? fs::path(path) : folder / path;
+  FoundFile result;
+  if (!foreign_absolute && fs::is_regular_file(direct, ec)) {
+    result.path = direct;
+    if (path != written) result.how = "has Windows separators";
+    return result;
+  }
+  // The same name in another letter case, or an absolute path from the
+  // author's machine: look for the file name beside the model and below it,
+  // preferring the file whose folders end the written path.
+  const std::string wanted = lower(fs::path(path).filename().string());
+  const std::string written_lower = "/" + lower(path);
+  std::size_t best = 0;
+  for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::skip_permission_denied, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    if (it.depth() > 4) it.disable_recursion_pending();
+    if (!it->is_regular_file(ec) || lower(it->path().filename().string()) != wanted) continue;
+    const std::string candidate = "/" + lower(fs::relative(it->path(), folder, ec).generic_string());
+    const std::size_t match = written_lower.ends_with(candidate) ? candidate.size() : 1;
+    if (!result.path || match > best) {
+      result.path = it->path();
+      best = match;
+    }
+  }
+  if (result.path) {
+    result.how = absolute ? "is an absolute path from another machine"
+                 : lower(path) == lower(fs::relative(*result.path, folder, ec).generic_string()) ? "differs in letter case from the file on disk"
+                                                                                                  : "is not where the path says";
+  }
+  return result;
+}
+
+}  // namespace atrium::assets
