@@ -61,7 +61,10 @@ void main() {
 #ifndef POSITION_ONLY
   v_position = world.xyz;
   v_normal = mat3(instance.normal_matrix) * a_normal;
-  v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, a_tangent.w);
+  // A mirroring model matrix (negative determinant) turns the bitangent that
+  // cross(normal, tangent) gives, so the handedness turns with it.
+  float handedness = determinant(mat3(instance.model)) < 0.0 ? -a_tangent.w : a_tangent.w;
+  v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, handedness);
   Material material = u_materials[instance.material.x];
   for (int slot = 0; slot < 5; ++slot) {
     vec3 uv = vec3((material.uv_sets & (1u << slot)) != 0u ? a_uv1 : a_uv0, 1.0);

@@ -368,9 +368,13 @@ class AssimpImporter {
     return found.path;
   }
 
-  // Reads a texture's bytes: a file, or one the file embeds ("*3").
+  // Whether the model holds the texture it names: "*3", or (FBX) a file name
+  // whose bytes it embeds.
+  bool embedded(const std::string& written) const { return written[0] == '*' || scene_->GetEmbeddedTexture(written.c_str()); }
+
+  // Reads a texture's bytes: a file, or one the file embeds.
   std::vector<std::uint8_t> texture_bytes(const std::string& written, const fs::path* file, std::string& error) {
-    if (!written.empty() && written[0] == '*') {
+    if (embedded(written)) {
       const aiTexture* embedded = scene_->GetEmbeddedTexture(written.c_str());
       if (!embedded) {
         error = "no embedded texture " + written;
@@ -412,7 +416,7 @@ class AssimpImporter {
     std::vector<std::size_t> job_of_wanted;
     for (const Wanted& w : wanted_) {
       std::optional<fs::path> file;
-      if (w.path[0] != '*') file = find_texture(w.path);
+      if (!embedded(w.path)) file = find_texture(w.path);
       const std::string key = file ? fs::weakly_canonical(*file).string() : w.path;
       const auto [it, added] = job_of.try_emplace({key, w.space}, jobs.size());
       if (added) jobs.push_back({w.path, file, w.space});

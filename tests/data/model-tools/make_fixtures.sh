@@ -27,3 +27,8 @@ $im bricks.png -define dds:compression=none -define dds:mipmaps=0 bricks.rgba.dd
 $im "$textures/5061699253647017043.png" -resize 128x128 leaves.png
 $im leaves.png -define dds:compression=dxt5 -define dds:mipmaps=7 leaves.bc3.dds
 $im leaves.png -define dds:compression=none -define dds:mipmaps=0 leaves.rgba.dds
+
+# An asymmetric, single-sided, normal-mapped letter F by Blender, as modelled
+# and mirrored (scale -1 on X): glTF and FBX keep the node's scale, OBJ bakes
+# it; the FBX embeds the normal map mirror-f-bumps.png.
+blender --background --python blender_mirrored.py -- mirror-f
