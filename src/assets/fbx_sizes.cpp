@@ -1,7 +1,10 @@
 #include "assets/fbx_sizes.hpp"
 
+#include <algorithm>
 #include <cstring>
 #include <vector>
+
+#include <zlib.h>
 
 #include "assets/load_budget.hpp"
 
@@ -27,6 +30,21 @@ std::size_t element_size(std::uint8_t type) {
   }
 }
 
+// Whether zlib inflates `stored` bytes into `declared` without an error, as
+// libassimp's reader asks (Z_OK or Z_STREAM_END).
+bool inflates(const std::uint8_t* stored, std::size_t stored_size, std::size_t declared, std::vector<std::uint8_t>& scratch) {
+  scratch.resize(std::max<std::size_t>(declared, 1));
+  z_stream stream{};
+  if (inflateInit(&stream) != Z_OK) return false;
+  stream.next_in = const_cast<Bytef*>(stored);
+  stream.avail_in = static_cast<uInt>(stored_size);
+  stream.next_out = scratch.data();
+  stream.avail_out = static_cast<uInt>(declared);
+  const int status = inflate(&stream, Z_FINISH);
+  inflateEnd(&stream);
+  return status == Z_STREAM_END || status == Z_OK;
+}
+
 }  // namespace
 
 std::string fbx_array_size_problem(std::span<const std::uint8_t> bytes, std::size_t limit) {
@@ -36,6 +54,7 @@ std::string fbx_array_size_problem(std::span<const std::uint8_t> bytes, std::siz
   // version 7500, 64 after), then the name's length and the name.
   const std::size_t word = version >= 7500 ? 8 : 4;
   std::vector<std::pair<std::uint64_t, std::uint64_t>> pending{{27, bytes.size()}};  // node lists: [begin, end)
+  std::vector<std::uint8_t> scratch;
   while (!pending.empty()) {
     auto [at, end] = pending.back();
     pending.pop_back();
@@ -71,6 +90,8 @@ std::string fbx_array_size_problem(std::span<const std::uint8_t> bytes, std::siz
         if (encoding == 1 && declared > stored * kInflateRatio + 64) {
           return what + " from " + std::to_string(stored) + " compressed bytes, more than zlib can inflate them to";
         }
+        if (p + 13 + stored > node_end) return {};
+        if (encoding == 1 && !inflates(&bytes[p + 13], stored, declared, scratch)) return what + " whose compressed bytes do not inflate";
         p += 13 + stored;
       }
       if (properties + property_bytes < node_end) pending.emplace_back(properties + property_bytes, node_end);

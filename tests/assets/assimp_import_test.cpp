@@ -49,6 +49,20 @@ TEST(AssimpImport, FbxFromBlenderIsItsSourceZUpOrYUp) {
   expect_same_model(kFixtures / "subpass_scene_opaque.blender-zup.fbx", kTestdata / "gltf/blender-exports/subpass_scene_opaque.gltf");
 }
 
+TEST(AssimpImport, TexturesAnFbxEmbedsAreReadFromIt) {
+  // Blender embeds the normal map under its file name; alone in a folder,
+  // the FBX still has it.
+  const fs::path folder = fs::temp_directory_path() / ("atrium_fbx_embedded_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  fs::copy_file(kFixtures / "mirror-f.plain.fbx", folder / "mirror-f.plain.fbx", fs::copy_options::overwrite_existing);
+  AssetManager assets;
+  const ModelImport model = import_model(folder / "mirror-f.plain.fbx", assets);
+  fs::remove_all(folder);
+  EXPECT_EQ(model.images, 1u);
+  EXPECT_TRUE(model.warnings.empty()) << model.warnings.front();
+  EXPECT_TRUE(assets.mesh_asset(model.asset).materials.at(0).normal_texture.valid());
+}
+
 // A folder per test holding the cube's OBJ, with its MTL written by the test.
 class ObjFolder : public ::testing::Test {
  protected:
