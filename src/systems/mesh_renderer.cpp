@@ -8,6 +8,7 @@
 #include "components/visibility.hpp"
 #include "gfx/depth.hpp"
 #include "gfx/limits.hpp"
+#include "render/contributors.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/frame_uniforms.hpp"
@@ -134,6 +135,10 @@ void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
   materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
   commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
+  bind_draws();
+}
+
+void MeshRenderer::bind_draws() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
@@ -208,7 +213,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& assets = registry.resource<assets::AssetManager>();
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
-  timer_.begin_frame();
   occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling;
   draws_ = lighting::build_draw_list(registry, assets, gpu, view.view,
                                      occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame : lighting::DrawSelection::InView);
@@ -237,45 +241,68 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
-  // Before the technique's passes: the shadow passes bind instance, material and
-  // command buffers of their own, and mark the shadowed lights in the light buffer.
-  shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows, timer_);
+  // Chooses the shadowed lights and moves them to the front of the light
+  // buffer, before anything reads it; their maps are drawn by the graph.
+  const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
   stats_.shadows = shadows_.stats();
   upload_draws(draws);
+  refuse_unbounded_loops(draws, lights.count);
 
+  // The frame's graph: the renderer's long-lived targets, then each
+  // contributor's passes in the order they run.
+  graph_.reset();
+  const int samples = technique_options_.msaa;
+  const render::ResourceId depth = graph_.import_texture("depth", depth_stencil_.id(), {gfx::kDepthStencilFormat, size_, samples});
+  const render::ResourceId hdr = graph_.import_texture("hdr", hdr_color_.id(), {GL_RGBA16F, size_, samples});
+  const render::ResourceId output = graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
+  const render::ResourceId light_resource =
+      graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)});
+  if (split_lighting_) {
+    graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples});
+    graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples});
+  }
   const lighting::FrameContext frame{draws,
                                      [&](const lighting::DrawBatches& draw) { draw_first_pass(registry, draw); },
                                      gpu,
                                      lights.staging,
                                      scene.background,
-                                     timer_,
+                                     depth,
+                                     hdr,
+                                     light_resource,
                                      view.view,
                                      view.projection,
                                      view.near_plane,
                                      view.far_plane};
-  if (counting) debug_views().begin_counting(debug_view);
-  if (split_lighting_) {
-    // Forward modes leave the sums untouched: they show as no light, not a stale frame.
-    const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-    glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 1, zero);
-    glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 2, zero);
-  }
-  refuse_unbounded_loops(draws, lights.count);
-  try {
-    technique_->execute(frame, targets());
-  } catch (const gfx::ResourceLimitError& e) {
-    throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
-                                  std::to_string(size.y) + ": " + e.what());
-  }
-  stats_.draw_calls = draws.draw_calls();
-  stats_.triangles = draws.triangles;
-  stats_.triangles_drawn = draws.triangles_drawn;
-  stats_.light_list_entries = technique_->light_lists().entries;
-  stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
+  const lighting::FrameTargets frame_targets = targets();
 
-  // Tone map into the 8-bit output.
-  {
-    const auto pass = timer_.scope("tonemap");
+  if (draw_shadows) {
+    const render::ResourceId atlas = graph_.import_texture("shadow-atlas", shadows_.texture(), {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(stats_.shadows.atlas_size), 1});
+    graph_.add_pass("shadows", [&](render::PassBuilder& pass) { pass.write(atlas, render::Access::Attachment); },
+                    [&](const render::PassResources&) {
+                      shadows_.draw_pending(registry);
+                      bind_draws();  // the shadow passes bound casters of their own
+                    });
+  }
+  if (counting || split_lighting_) {
+    graph_.add_pass("clear counters", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
+      if (counting) debug_views().begin_counting(debug_view);
+      if (split_lighting_) {
+        // Forward modes leave the sums untouched: they show as no light, not a stale frame.
+        const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
+        glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 1, zero);
+        glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 2, zero);
+      }
+    }, false);
+  }
+  technique_->add_passes(graph_, frame, frame_targets);
+  if (const auto* contributors = registry.try_resource<RenderContributors>()) {
+    for (const RenderContributor& contributor : contributors->after_lighting) contributor(graph_, registry, frame, frame_targets);
+  }
+
+  graph_.add_pass("tonemap", [&](render::PassBuilder& pass) {
+    pass.read(hdr, render::Access::Sampled);
+    pass.write(output, render::Access::Attachment);
+  }, [&](const render::PassResources&) {
     glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
     glViewport(0, 0, size_.x, size_.y);
     glDisable(GL_DEPTH_TEST);
@@ -287,28 +314,46 @@ void MeshRenderer::render(ecs::Registry& registry) {
     glBindVertexArray(empty_vertex_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
-  }
+  });
 
-  thumbnails_drawn_ = false;
-  if (settings.gbuffer_thumbnails && technique_->gbuffer()) {
-    debug_views().draw_thumbnails(*technique_->gbuffer(), targets(), scene.bounds_min, scene.bounds_max);
-    thumbnails_drawn_ = true;
+  thumbnails_drawn_ = settings.gbuffer_thumbnails && technique_->gbuffer();
+  if (thumbnails_drawn_) {
+    graph_.add_pass("thumbnails", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
+      debug_views().draw_thumbnails(*technique_->gbuffer(), frame_targets, scene.bounds_min, scene.bounds_max);
+    }, false);
   }
-
-  // Debug views are not timed: their own geometry pass would nest in the scope.
   if (debug_view >= 0) {
-    debug_views().draw(debug_view, *technique_, frame, targets(), output_framebuffer_.id(), scene.bounds_min, scene.bounds_max,
-                          shadows_.texture());
-    if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
-    if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
+    graph_.add_pass("debug view", [&](render::PassBuilder& pass) { pass.write(output, render::Access::Attachment); },
+                    [&](const render::PassResources&) {
+                      debug_views().draw(debug_view, *technique_, frame, frame_targets, output_framebuffer_.id(), scene.bounds_min,
+                                         scene.bounds_max, shadows_.texture());
+                    });
   }
-
-  timer_.end_frame();
-
   if (settings.present_to_window) {
-    glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y,
-                           GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    graph_.add_pass("present", [&](render::PassBuilder& pass) {
+      pass.read(output, render::Access::Transfer);
+      pass.keep();
+    }, [&](const render::PassResources&) {
+      glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    }, false);
   }
+
+  graph_.compile();
+  timer_.begin_frame();
+  try {
+    graph_.execute(&timer_);
+  } catch (const gfx::ResourceLimitError& e) {
+    throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
+                                  std::to_string(size.y) + ": " + e.what());
+  }
+  timer_.end_frame();
+  stats_.draw_calls = draws.draw_calls();
+  stats_.triangles = draws.triangles;
+  stats_.triangles_drawn = draws.triangles_drawn;
+  stats_.light_list_entries = technique_->light_lists().entries;
+  stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
+  if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
+  if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

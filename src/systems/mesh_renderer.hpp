@@ -16,6 +16,7 @@
 #include "gfx/pass_timer.hpp"
 #include "gfx/shader_program.hpp"
 #include "gfx/stream_buffer.hpp"
+#include "render/frame_graph.hpp"
 #include "systems/lighting/technique.hpp"
 #include "systems/occlusion_culling.hpp"
 #include "systems/shadows/shadow_atlas.hpp"
@@ -71,8 +72,11 @@ class MeshRenderer {
   [[nodiscard]] glm::ivec2 thumbnail_size() const;
   [[nodiscard]] const FrameStats& stats() const { return stats_; }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
-  // Per-pass times of the latest frame whose timings are complete.
+  // Per-pass times of the latest frame whose timings are complete (each pass
+  // of the frame graph is timed by it).
   [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
+  // The last frame's graph: its passes, resources and render-target memory.
+  [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
   // The shadow maps of the last frame (RendererSettings::shadows).
   [[nodiscard]] const shadows::ShadowAtlas& shadow_atlas() const { return shadows_; }
 
@@ -98,6 +102,9 @@ class MeshRenderer {
   // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
   // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame.
   void upload_draws(const lighting::DrawList& draws);
+  // Binds the frame's instance, material and command buffers again (after a
+  // pass that bound its own).
+  void bind_draws() const;
   // FrameContext::draw_first_pass: draws draws_ (what the last frame showed),
   // then, with occlusion culling and once a frame, what the depth it wrote
   // does not hide, and leaves draws_ holding both.
@@ -131,6 +138,7 @@ class MeshRenderer {
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
   FrameStats stats_;
   gfx::PassTimer timer_;
+  render::FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
   glm::vec2 planes_{0.05f, 200.0f};  // the last frame's near and far planes
 };

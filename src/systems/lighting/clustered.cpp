@@ -1,6 +1,7 @@
 #include "systems/lighting/clustered.hpp"
 
 #include "gfx/depth.hpp"
+#include "systems/lighting/scene_passes.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -81,52 +82,68 @@ GLuint ClusteredTechnique::mark_clusters(const FrameContext& frame, const FrameT
   return buffer;
 }
 
-void ClusteredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
+void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
   grid_.update(frame.projection, frame.near_plane, frame.far_plane);
+  std::vector<render::ResourceId> gbuffer;
   if (deferred_) {
-    gbuffer_.draw_geometry(geometry_, frame);
+    gbuffer = add_geometry_pass(graph, gbuffer_, geometry_, frame);
   } else {
-    const auto pass = frame.timer.scope("depth pre-pass");
-    begin_scene_pass(frame, targets);
-    const DrawBatches draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
-    if (shading_depth_.id() != 0) {
-      glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer_.id());
-      const float far = gfx::kDepthFar;
-      glClearNamedFramebufferfv(prepass_framebuffer_.id(), GL_COLOR, 0, &far);
-      frame.draw_first_pass(draw_prepass);
-    } else {
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      frame.draw_first_pass(draw_prepass);
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    }
+    graph.add_pass("depth pre-pass", [&](render::PassBuilder& pass) { pass.write(frame.scene_depth, render::Access::Attachment); },
+                   [this, &frame, &targets](const render::PassResources&) { draw_prepass(frame, targets); });
   }
-  {
-    const auto pass = frame.timer.scope("light assignment");
+  const render::ResourceId lists = grid_.list().import_into(graph, "cluster light lists");
+  graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
+    if (deferred_) read_gbuffer(pass, gbuffer);
+    else pass.read(frame.scene_depth, render::Access::Sampled);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(lists, render::Access::Storage);
+  }, [this, &frame, &targets](const render::PassResources&) {
     const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(frame, targets) : 0;
     grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
-  }
-  {
-    const auto pass = frame.timer.scope(deferred_ ? "lighting" : "shading");
-    grid_.bind();
-    if (deferred_) {
-      gbuffer_.draw_fullscreen(shading_, targets);
-    } else {
-      glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-      glViewport(0, 0, targets.size.x, targets.size.y);
-      // Every visible fragment is shaded once: its depth is already there.
-      glEnable(GL_DEPTH_TEST);
-      glDepthFunc(gfx::kDepthCloserOrEqual);
-      glDepthMask(GL_FALSE);
-      shading_.per_pixel().use();
-      draw_items(frame.draws.opaque);
-      glDepthMask(GL_TRUE);
-      glDepthFunc(gfx::kDepthCloser);
-    }
-  }
+  });
+  graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
+    if (deferred_) read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.read(lists, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources&) { shade(frame, targets); });
   // Blended surfaces are shaded forward+ from the same lists: their clusters
   // were marked with the opaque pixels'.
+  add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
+                        [this] { grid_.bind(); });
+}
+
+void ClusteredTechnique::draw_prepass(const FrameContext& frame, const FrameTargets& targets) {
+  begin_scene_pass(frame, targets);
+  const DrawBatches draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
+  if (shading_depth_.id() != 0) {
+    glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer_.id());
+    const float far = gfx::kDepthFar;
+    glClearNamedFramebufferfv(prepass_framebuffer_.id(), GL_COLOR, 0, &far);
+    frame.draw_first_pass(draw_prepass);
+  } else {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    frame.draw_first_pass(draw_prepass);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+}
+
+void ClusteredTechnique::shade(const FrameContext& frame, const FrameTargets& targets) {
   grid_.bind();
-  draw_transparent(blended_, frame, targets);
+  if (deferred_) {
+    gbuffer_.draw_fullscreen(shading_, targets);
+    return;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  // Every visible fragment is shaded once: its depth is already there.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloserOrEqual);
+  glDepthMask(GL_FALSE);
+  shading_.per_pixel().use();
+  draw_items(frame.draws.opaque);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(gfx::kDepthCloser);
 }
 
 }  // namespace atrium::lighting

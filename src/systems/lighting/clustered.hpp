@@ -18,7 +18,7 @@ class ClusteredTechnique final : public LightingTechnique {
  public:
   ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
   [[nodiscard]] const GBuffer* gbuffer() const override { return deferred_ ? &gbuffer_ : nullptr; }
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
@@ -35,6 +35,10 @@ class ClusteredTechnique final : public LightingTechnique {
   // flags) from the positions shading will light (G-buffer, or depths) and the
   // blended fragments in front of them; returns it.
   GLuint mark_clusters(const FrameContext& frame, const FrameTargets& targets);
+  // Forward+: the depth pre-pass (through FrameContext::draw_first_pass).
+  void draw_prepass(const FrameContext& frame, const FrameTargets& targets);
+  // The opaque surfaces lit from the lists: full-screen (deferred) or forward.
+  void shade(const FrameContext& frame, const FrameTargets& targets);
 
   bool deferred_;
   bool pixel_bounds_;

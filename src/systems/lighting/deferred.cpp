@@ -1,5 +1,7 @@
 #include "systems/lighting/deferred.hpp"
 
+#include "systems/lighting/scene_passes.hpp"
+
 namespace atrium::lighting {
 
 DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius)
@@ -12,14 +14,14 @@ DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOpti
 
 void DeferredTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
 
-void DeferredTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
-  gbuffer_.draw_geometry(geometry_, frame);
-  {
-    const auto pass = frame.timer.scope("lighting");
-    gbuffer_.draw_fullscreen(lighting_, targets);
-  }
-
-  draw_transparent(forward_, frame, targets);
+void DeferredTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  const std::vector<render::ResourceId> gbuffer = add_geometry_pass(graph, gbuffer_, geometry_, frame);
+  graph.add_pass("lighting", [&](render::PassBuilder& pass) {
+    read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &targets](const render::PassResources&) { gbuffer_.draw_fullscreen(lighting_, targets); });
+  add_transparency_pass(graph, forward_, frame, targets);
 }
 
 }  // namespace atrium::lighting

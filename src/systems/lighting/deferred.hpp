@@ -15,7 +15,7 @@ class DeferredTechnique final : public LightingTechnique {
  public:
   DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
   [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
  private:

@@ -245,7 +245,6 @@ void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position
 
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {
   if (frame.draws.blended.empty()) return;
-  const auto pass = frame.timer.scope("transparency");
   glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   glEnable(GL_DEPTH_TEST);

@@ -148,10 +148,12 @@ struct FrameContext;
 struct FrameTargets;
 
 // Draws the frame's blended items over the lit image, back to front, shaded by
-// every light with `forward_program`, depth-tested against the opaque depth.
+// every light with `forward_program`, depth-tested against the opaque depth
+// (the body of the "transparency" pass, lighting/scene_passes.hpp).
 void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
 
-// Binds the HDR target, clears it to the background and depth to 1, and sets
+// Binds the HDR target, clears it to the background and depth to the far
+// plane (gfx::kDepthFar, reversed depth), and sets
 // the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
 void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets);
 

@@ -1,5 +1,7 @@
 #include "systems/lighting/forward.hpp"
 
+#include "systems/lighting/scene_passes.hpp"
+
 namespace atrium::lighting {
 
 ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& /*options*/)
@@ -7,15 +9,17 @@ ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOption
 
 void ForwardTechnique::resize(const FrameTargets& /*targets*/) {}
 
-void ForwardTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
-  {
-    const auto pass = frame.timer.scope("shading");
+void ForwardTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  graph.add_pass("shading", [&](render::PassBuilder& pass) {
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(frame.scene_depth, render::Access::Attachment);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources&) {
     begin_scene_pass(frame, targets);
     program_.use();
     frame.draw_first_pass(draw_items);
-  }
-
-  draw_transparent(program_, frame, targets);
+  });
+  add_transparency_pass(graph, program_, frame, targets);
 }
 
 }  // namespace atrium::lighting

@@ -13,7 +13,7 @@ class ForwardTechnique final : public LightingTechnique {
  public:
   ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
 
  private:
   gfx::ShaderProgram& program_;

@@ -38,7 +38,6 @@ void GBuffer::resize(glm::ivec2 size, GLuint depth_stencil) {
 }
 
 void GBuffer::draw_geometry(gfx::ShaderProgram& program, const FrameContext& frame) {
-  const auto pass = frame.timer.scope("geometry");
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_.id());
   glViewport(0, 0, size_.x, size_.y);
   // Zero everywhere marks "no geometry" in both layouts (position.w, distance).

@@ -66,6 +66,8 @@ class GBuffer {
   // top of the renderer's globals (which carry COMPACT_GBUFFER).
   [[nodiscard]] std::vector<gfx::ShaderDefine> defines() const;
   [[nodiscard]] GLuint texture(std::size_t index) const { return textures_[index].id(); }
+  [[nodiscard]] glm::ivec2 size() const { return size_; }
+  [[nodiscard]] int samples() const { return samples_; }
   // Bytes per pixel of the targets plus the shared DEPTH24_STENCIL8.
   [[nodiscard]] static std::size_t bytes_per_pixel(GBufferLayout layout);
   [[nodiscard]] static std::span<const Target> targets(GBufferLayout layout);

@@ -86,6 +86,11 @@ void LightIndexList::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightTotalBinding, total_.id());
 }
 
+render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const std::string& name) const {
+  const std::size_t bytes = (static_cast<std::size_t>(bins_) * 2 + capacity_ + 1) * sizeof(std::uint32_t);
+  return graph.import_buffer(name, ranges_.id(), {bytes});
+}
+
 std::vector<std::vector<std::uint32_t>> LightIndexList::read() const {
   std::vector<std::uint32_t> ranges(static_cast<std::size_t>(bins_) * 2), indices(capacity_);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -8,9 +8,11 @@
 #pragma once
 
 #include <functional>
+#include <string>
 #include <vector>
 
 #include "gfx/gl_object.hpp"
+#include "render/frame_graph.hpp"
 
 namespace atrium::lighting {
 
@@ -25,6 +27,9 @@ class LightIndexList {
   // gfx::ResourceLimitError when it cannot fit.
   void assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize);
   void bind() const;
+  // The lists as one buffer resource of the frame graph (their ranges buffer
+  // stands for all three; the size counts them all).
+  [[nodiscard]] render::ResourceId import_into(render::FrameGraph& graph, const std::string& name) const;
 
   [[nodiscard]] std::uint32_t capacity() const { return capacity_; }
   [[nodiscard]] std::uint32_t last_total() const { return last_total_; }

@@ -1,5 +1,9 @@
 #include "systems/lighting/light_prepass.hpp"
 
+#include <string>
+
+#include "systems/lighting/scene_passes.hpp"
+
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
@@ -39,17 +43,24 @@ void LightPrepassTechnique::resize(const FrameTargets& targets) {
   gfx::require_complete(light_framebuffer_.id(), "light buffer");
 }
 
-void LightPrepassTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
-  gbuffer_.draw_geometry(geometry_, frame);
-  {
-    const auto pass = frame.timer.scope("light buffer");
-    accumulate_lights(frame, targets);
+void LightPrepassTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  const std::vector<render::ResourceId> gbuffer = add_geometry_pass(graph, gbuffer_, geometry_, frame);
+  std::vector<render::ResourceId> sums;
+  for (std::size_t i = 0; i < light_buffer_.size(); ++i) {
+    const std::string name = i == 0 ? "light buffer" : "light buffer " + std::to_string(i);
+    sums.push_back(graph.import_texture(name, light_buffer_[i].id(), {kLightBufferFormat, targets.size, targets.samples}));
   }
-  {
-    const auto pass = frame.timer.scope("material");
-    shade_materials(frame, targets);
-  }
-  draw_transparent(forward_, frame, targets);
+  graph.add_pass("light buffer", [&](render::PassBuilder& pass) {
+    read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    for (const render::ResourceId sum : sums) pass.write(sum, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources&) { accumulate_lights(frame, targets); });
+  graph.add_pass("material", [&](render::PassBuilder& pass) {
+    for (const render::ResourceId sum : sums) pass.read(sum, render::Access::Sampled);
+    pass.write(frame.scene_depth, render::Access::Attachment);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources&) { shade_materials(frame, targets); });
+  add_transparency_pass(graph, forward_, frame, targets);
 }
 
 void LightPrepassTechnique::accumulate_lights(const FrameContext& frame, const FrameTargets& targets) {

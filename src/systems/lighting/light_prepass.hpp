@@ -24,7 +24,7 @@ class LightPrepassTechnique final : public LightingTechnique {
 
   LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
   [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
   [[nodiscard]] GLuint light_buffer() const override { return light_buffer_[0].id(); }
 

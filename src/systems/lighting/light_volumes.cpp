@@ -1,5 +1,7 @@
 #include "systems/lighting/light_volumes.hpp"
 
+#include "systems/lighting/scene_passes.hpp"
+
 #include "gfx/depth.hpp"
 
 namespace atrium::lighting {
@@ -18,37 +20,43 @@ LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const Techniq
 
 void LightVolumeTechnique::resize(const FrameTargets& targets) { gbuffer_.resize(targets.size, targets.depth_stencil); }
 
-void LightVolumeTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
-  gbuffer_.draw_geometry(geometry_, frame);
-  {
-    const auto pass = frame.timer.scope("base");
-    gbuffer_.draw_fullscreen(unlit_, targets);
+void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  const std::vector<render::ResourceId> gbuffer = add_geometry_pass(graph, gbuffer_, geometry_, frame);
+  auto lights_scene = [&](render::PassBuilder& pass) {
+    read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  };
+  graph.add_pass("base", lights_scene, [this, &targets](const render::PassResources&) { gbuffer_.draw_fullscreen(unlit_, targets); });
+  if (std::vector<std::uint32_t> suns = directional_lights(frame.lights); !suns.empty()) {
+    graph.add_pass("directional", lights_scene, [this, &targets, suns = std::move(suns)](const render::PassResources&) {
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+      for (const std::uint32_t light : suns) {
+        directional_.each([&](gfx::ShaderProgram& program) { program.set("u_light_index", light); });
+        gbuffer_.draw_fullscreen(directional_, targets);
+      }
+    });
   }
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE);
-  if (const std::vector<std::uint32_t> suns = directional_lights(frame.lights); !suns.empty()) {
-    const auto pass = frame.timer.scope("directional");
-    for (const std::uint32_t light : suns) {
-      directional_.each([&](gfx::ShaderProgram& program) { program.set("u_light_index", light); });
-      gbuffer_.draw_fullscreen(directional_, targets);
-    }
-  }
-  {
-    // Stencil and lighting alternate per light, so they are timed together.
-    const auto pass = frame.timer.scope(instanced_ ? "volumes" : "volumes (stencil + lighting)");
+  // Stencil and lighting alternate per light, so they are one pass.
+  graph.add_pass(instanced_ ? "volumes" : "volumes (stencil + lighting)", [&](render::PassBuilder& pass) {
+    lights_scene(pass);
+    pass.write(frame.scene_depth, render::Access::Attachment);  // its stencil
+  }, [this, &frame](const render::PassResources&) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
     glEnable(GL_DEPTH_CLAMP);
     if (instanced_) draw_volumes_instanced(frame);
     else draw_volumes_with_stencil(frame);
     glBindVertexArray(0);
-  }
-  glDisable(GL_DEPTH_CLAMP);
-  glDisable(GL_BLEND);
-  glDisable(GL_STENCIL_TEST);
-  glCullFace(GL_BACK);
-  glDepthFunc(gfx::kDepthCloser);
-  glDepthMask(GL_TRUE);
-
-  draw_transparent(forward_, frame, targets);
+    glDisable(GL_DEPTH_CLAMP);
+    glDisable(GL_BLEND);
+    glDisable(GL_STENCIL_TEST);
+    glCullFace(GL_BACK);
+    glDepthFunc(gfx::kDepthCloser);
+    glDepthMask(GL_TRUE);
+  });
+  add_transparency_pass(graph, forward_, frame, targets);
 }
 
 // The volume count lives in the stencil bits below kEdgeStencilBit; with MSAA

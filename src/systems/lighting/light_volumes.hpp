@@ -19,7 +19,7 @@ class LightVolumeTechnique final : public LightingTechnique {
  public:
   LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
   [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
  private:

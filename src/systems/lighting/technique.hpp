@@ -1,8 +1,9 @@
 // The one interface every lighting technique implements, and the technique table
-// that names them. A technique draws the frame's lit, linear HDR image into the
-// renderer's colour target (with depth in its depth-stencil target); the
-// MeshRenderer then tone-maps it. Adding a technique is one file pair here, one
-// shader folder, and one row in technique_table.cpp.
+// that names them. A technique contributes the passes that draw the frame's lit,
+// linear HDR image into the renderer's colour target (with depth in its
+// depth-stencil target) to the frame graph; the renderer's own passes then
+// tone-map it. Adding a technique is one file pair here, one shader folder, and
+// one row in technique_table.cpp.
 #pragma once
 
 #include <functional>
@@ -16,7 +17,7 @@
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl.hpp"
-#include "gfx/pass_timer.hpp"
+#include "render/frame_graph.hpp"
 #include "systems/lighting/technique_options.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/lighting/draw_list.hpp"
@@ -42,7 +43,9 @@ struct FrameContext {
   const assets::GpuAssets& gpu;
   std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};
-  gfx::PassTimer& timer;             // wrap each pass: auto pass = frame.timer.scope("lighting");
+  // The renderer's long-lived resources in the frame graph: the scene's
+  // depth-stencil and HDR colour (FrameTargets), and the light buffer.
+  render::ResourceId scene_depth, scene_color, light_buffer;
   glm::mat4 view{1.0f};
   glm::mat4 projection{1.0f};
   float near_plane = 0.05f;
@@ -53,7 +56,7 @@ struct FrameContext {
 struct FrameTargets {
   GLuint hdr_framebuffer = 0;  // colour attachment 0 = hdr_color, depth-stencil = depth_stencil
   GLuint hdr_color = 0;        // RGBA16F
-  GLuint depth_stencil = 0;    // DEPTH24_STENCIL8
+  GLuint depth_stencil = 0;    // gfx::kDepthStencilFormat
   glm::ivec2 size{0};
   int samples = 1;             // MSAA samples of every target here (TechniqueOptions::msaa)
   // Where deferred lighting passes draw (shaders/common/lighting_targets.glsl):
@@ -73,7 +76,10 @@ class LightingTechnique {
   // Called before the first frame and whenever the renderer's targets change
   // (their size); a technique (re)allocates only targets of its own here.
   virtual void resize(const FrameTargets& targets) = 0;
-  virtual void execute(const FrameContext& frame, const FrameTargets& targets) = 0;
+  // Adds the technique's passes (G-buffer, light assignment, lighting,
+  // blended surfaces...) to the frame's graph. They run when the graph runs,
+  // before render() returns, so they may keep references to frame and targets.
+  virtual void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) = 0;
   // Technique-specific controls for the overlay; most techniques have none.
   virtual void draw_ui() {}
   // Techniques with light lists report their size and how often a frame's

@@ -1,6 +1,7 @@
 #include "systems/lighting/tiled.hpp"
 
 #include "gfx/depth.hpp"
+#include "systems/lighting/scene_passes.hpp"
 
 namespace atrium::lighting {
 
@@ -43,26 +44,40 @@ void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& ass
   list.assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
 }
 
-void TiledTechnique::execute(const FrameContext& frame, const FrameTargets& targets) {
-  gbuffer_.draw_geometry(geometry_, frame);
-  {
-    const auto pass = frame.timer.scope("light culling");
+void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  const std::vector<render::ResourceId> gbuffer = add_geometry_pass(graph, gbuffer_, geometry_, frame);
+  const render::ResourceId lists = list_->import_into(graph, "tile light lists");
+  graph.add_pass("light culling", [&](render::PassBuilder& pass) {
+    read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(lists, render::Access::Storage);
+  }, [this](const render::PassResources&) {
     gbuffer_.bind_textures();
     assign_lights(*list_, assign_, [&](std::uint32_t capacity) { set_capacity(capacity); });
-  }
-  {
-    const auto pass = frame.timer.scope("lighting");
+  });
+  graph.add_pass("lighting", [&](render::PassBuilder& pass) {
+    read_gbuffer(pass, gbuffer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.read(lists, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &targets](const render::PassResources&) {
     list_->bind();
     gbuffer_.draw_fullscreen(lighting_, targets);
-  }
-  draw_blended(frame, targets);
-}
-
-void TiledTechnique::draw_blended(const FrameContext& frame, const FrameTargets& targets) {
+  });
   blended_listed_ = !frame.draws.blended.empty();
   if (!blended_listed_) return;
+  const render::ResourceId blended_lists = blended_list_->import_into(graph, "blended tile light lists");
+  graph.add_pass("blended light culling", [&](render::PassBuilder& pass) {
+    pass.read(frame.scene_depth, render::Access::Transfer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(blended_lists, render::Access::Storage);
+  }, [this, &frame, &targets](const render::PassResources&) { cull_for_blended(frame, targets); });
+  add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(blended_lists, render::Access::Storage); },
+                        [this] { blended_list_->bind(); });
+}
+
+void TiledTechnique::cull_for_blended(const FrameContext& frame, const FrameTargets& targets) {
   {
-    const auto pass = frame.timer.scope("blended light culling");
     const glm::ivec2 size = targets.size;
     glBlitNamedFramebuffer(targets.hdr_framebuffer, front_framebuffer_.id(), 0, 0, size.x, size.y, 0, 0, size.x, size.y,
                            GL_DEPTH_BUFFER_BIT, GL_NEAREST);
@@ -77,8 +92,6 @@ void TiledTechnique::draw_blended(const FrameContext& frame, const FrameTargets&
     glBindTextureUnit(1, front_depth_.id());
     assign_lights(*blended_list_, assign_blended_, [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
   }
-  blended_list_->bind();
-  draw_transparent(blended_, frame, targets);
 }
 
 LightingTechnique::ListStats TiledTechnique::light_lists() const {

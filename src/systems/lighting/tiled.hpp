@@ -21,7 +21,7 @@ class TiledTechnique final : public LightingTechnique {
  public:
   TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets) override;
-  void execute(const FrameContext& frame, const FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
   [[nodiscard]] const GBuffer* gbuffer() const override { return &gbuffer_; }
 
   [[nodiscard]] const LightIndexList& list() const { return *list_; }
@@ -39,8 +39,8 @@ class TiledTechnique final : public LightingTechnique {
   // `set_capacity` gives the programs that read the list its new capacity.
   void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, const std::function<void(std::uint32_t)>& set_capacity);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
-  // their lists, then their forward shading from those lists.
-  void draw_blended(const FrameContext& frame, const FrameTargets& targets);
+  // then their lists (their forward shading reads those lists).
+  void cull_for_blended(const FrameContext& frame, const FrameTargets& targets);
 
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram& assign_;

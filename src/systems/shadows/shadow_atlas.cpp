@@ -111,7 +111,7 @@ void ShadowAtlas::ensure_atlas() {
   limits_.max_tile = std::min(limits_.max_tile, size);
   allocator_ = AtlasAllocator(size, limits_.min_tile);
   atlas_ = gfx::create_texture(GL_TEXTURE_2D);
-  glTextureStorage2D(atlas_.id(), 1, GL_DEPTH_COMPONENT32F, size, size);
+  glTextureStorage2D(atlas_.id(), 1, kAtlasFormat, size, size);
   // Hardware comparison with bilinear filtering: each tap is a 2x2 PCF.
   glTextureParameteri(atlas_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(atlas_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
@@ -227,13 +227,15 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
   if (caster_materials_.empty()) caster_materials_.emplace_back();
 }
 
-void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
-                         bool redraw, gfx::PassTimer& timer) {
+bool ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
+                         bool redraw) {
   stats_ = {};
+  pending_views_.clear();
+  pending_reach_.clear();
   if (count <= 0) {
     if (atlas_) release();
     bind();
-    return;
+    return false;
   }
   ensure_atlas();
   stats_.atlas_size = limits_.atlas_size;
@@ -295,8 +297,8 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
 
   // This frame's views, and which of them must be drawn.
   views_.clear();
-  std::vector<std::uint32_t> to_draw;
-  std::vector<glm::vec4> reach;
+  std::vector<std::uint32_t>& to_draw = pending_views_;
+  std::vector<glm::vec4>& reach = pending_reach_;
   CascadeFrame cascade_frame{view.view, view.projection, view.near_plane, view.far_plane, glm::vec3(-1.0f), glm::vec3(1.0f)};
   if (const auto* scene = registry.try_resource<SceneBounds>(); scene && !scene->empty) {
     cascade_frame.scene_min = scene->min;
@@ -349,13 +351,15 @@ void ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
     patched.push_back(c.light);
   }
   upload_patched_lights(lights, patched);
-
-  if (!to_draw.empty()) {
-    const auto pass = timer.scope("shadows");
-    gather_casters(registry);
-    draw_maps(to_draw, reach);
-  }
   view_buffer_.upload(views_.data(), views_.size() * sizeof(ShadowView));
+  bind();
+  return !to_draw.empty();
+}
+
+void ShadowAtlas::draw_pending(ecs::Registry& registry) {
+  if (pending_views_.empty()) return;
+  gather_casters(registry);
+  draw_maps(pending_views_, pending_reach_);
   bind();
 }
 

@@ -49,15 +49,21 @@ struct ShadowStats {
 
 class ShadowAtlas {
  public:
+  static constexpr GLenum kAtlasFormat = GL_DEPTH_COMPONENT32F;
+
   explicit ShadowAtlas(assets::GpuAssets& gpu);
 
-  // Chooses and draws this frame's maps (timed as the "shadows" pass), moves
-  // the shadowed lights to the front of `lights` and patches them (CPU copy
-  // and buffer; light loops rely on the order, common/shading.glsl), binds the atlas
-  // and the views for the frame's shaders. `count` 0 gives everything back;
-  // `redraw` draws every map, changed or not (to measure the worst case).
-  void update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count, bool redraw,
-              gfx::PassTimer& timer);
+  // Chooses this frame's maps, moves the shadowed lights to the front of
+  // `lights` and patches them (CPU copy and buffer; light loops rely on the
+  // order, common/shading.glsl), binds the atlas and the views for the frame's
+  // shaders. Returns whether some maps must be drawn: draw_pending, the
+  // frame's "shadows" pass. `count` 0 gives everything back; `redraw` draws
+  // every map, changed or not (to measure the worst case).
+  [[nodiscard]] bool update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
+                            bool redraw);
+  // Draws the maps update() found stale, with instance, material and command
+  // buffers of its own (bound when it returns), then binds the atlas again.
+  void draw_pending(ecs::Registry& registry);
 
   // The atlas texture (depth, compare mode on), 0 while shadows are off.
   [[nodiscard]] GLuint texture() const { return atlas_.id(); }
@@ -107,6 +113,9 @@ class ShadowAtlas {
   gfx::StreamBuffer view_buffer_, instances_, materials_, commands_;
   std::unordered_map<ecs::Entity, Entry> entries_;
   std::vector<ShadowView> views_;
+  // The views update() found stale and their lights' spheres, for draw_pending.
+  std::vector<std::uint32_t> pending_views_;
+  std::vector<glm::vec4> pending_reach_;
   // Geometry tracking: each instance's world box last frame, and this frame's changes.
   struct Seen {
     Box box;

@@ -1,0 +1,371 @@
+#include "render/frame_graph.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace atrium::render {
+namespace {
+
+// Frames a pooled object may go untaken before it is released (a debug view
+// switched off, a size changed): a few, so that toggles do not churn.
+constexpr int kIdleFramesKept = 3;
+
+std::size_t bytes_per_texel(GLenum format) {
+  switch (format) {
+    case GL_R8: return 1;
+    case GL_RG8: case GL_R16F: case GL_R16UI: return 2;
+    case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_RGB10_A2: case GL_R11F_G11F_B10F:
+    case GL_DEPTH24_STENCIL8: case GL_DEPTH_COMPONENT32F: case GL_RG16UI: return 4;
+    case GL_DEPTH32F_STENCIL8: return 8;  // 32-bit depth, 8-bit stencil, padded as drivers store it
+    case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: case GL_RGBA16UI: return 8;
+    case GL_RGBA32F: case GL_RGBA32UI: return 16;
+    default: return 4;
+  }
+}
+
+bool is_depth(GLenum format) {
+  return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8 || format == GL_DEPTH_COMPONENT32F ||
+         format == GL_DEPTH_COMPONENT24 || format == GL_DEPTH_COMPONENT16;
+}
+
+bool has_stencil(GLenum format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
+
+// The barrier a use needs after a write through storage or image access.
+GLbitfield barrier_for(Access access, ResourceKind kind) {
+  switch (access) {
+    case Access::Attachment: return GL_FRAMEBUFFER_BARRIER_BIT;
+    case Access::Sampled: return GL_TEXTURE_FETCH_BARRIER_BIT;
+    case Access::Storage: return kind == ResourceKind::Buffer ? GL_SHADER_STORAGE_BARRIER_BIT : GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+    case Access::Indirect: return GL_COMMAND_BARRIER_BIT;
+    case Access::Uniform: return GL_UNIFORM_BARRIER_BIT;
+    case Access::Transfer: return kind == ResourceKind::Buffer ? GL_BUFFER_UPDATE_BARRIER_BIT : GL_TEXTURE_UPDATE_BARRIER_BIT;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::size_t texture_bytes(const TextureDesc& desc) {
+  return static_cast<std::size_t>(std::max(desc.size.x, 0)) * static_cast<std::size_t>(std::max(desc.size.y, 0)) *
+         static_cast<std::size_t>(std::max(desc.samples, 1)) * bytes_per_texel(desc.format);
+}
+
+struct FrameGraph::Pool {
+  struct PooledTexture {
+    TextureDesc desc;
+    gfx::Texture object;
+    int idle = 0;
+    bool taken = false;
+  };
+  struct PooledBuffer {
+    BufferDesc desc;
+    gfx::Buffer object;
+    int idle = 0;
+    bool taken = false;
+  };
+  std::vector<PooledTexture> textures;
+  std::vector<PooledBuffer> buffers;
+  std::map<std::vector<GLuint>, gfx::Framebuffer> framebuffers;  // by attachments: colours..., depth (0: none)
+
+  GLuint take(const TextureDesc& desc) {
+    for (PooledTexture& t : textures) {
+      if (!t.taken && t.desc == desc) {
+        t.taken = true;
+        return t.object.id();
+      }
+    }
+    textures.push_back({desc, gfx::create_render_target(desc.format, desc.size.x, desc.size.y, desc.samples), 0, true});
+    return textures.back().object.id();
+  }
+
+  GLuint take(const BufferDesc& desc) {
+    for (PooledBuffer& b : buffers) {
+      if (!b.taken && b.desc == desc) {
+        b.taken = true;
+        return b.object.id();
+      }
+    }
+    gfx::Buffer buffer = gfx::create_buffer();
+    glNamedBufferStorage(buffer.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(desc.bytes, 4)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    buffers.push_back({desc, std::move(buffer), 0, true});
+    return buffers.back().object.id();
+  }
+
+  // Releases what no frame took for a while, with the framebuffers on it.
+  void end_frame() {
+    std::vector<GLuint> released;
+    std::erase_if(textures, [&](PooledTexture& t) {
+      t.idle = t.taken ? 0 : t.idle + 1;
+      t.taken = false;
+      if (t.idle <= kIdleFramesKept) return false;
+      released.push_back(t.object.id());
+      return true;
+    });
+    std::erase_if(buffers, [](PooledBuffer& b) {
+      b.idle = b.taken ? 0 : b.idle + 1;
+      b.taken = false;
+      return b.idle > kIdleFramesKept;
+    });
+    std::erase_if(framebuffers, [&](const auto& entry) {
+      return std::any_of(entry.first.begin(), entry.first.end(),
+                         [&](GLuint id) { return id != 0 && std::find(released.begin(), released.end(), id) != released.end(); });
+    });
+  }
+};
+
+ResourceId PassBuilder::create(const std::string& name, const TextureDesc& desc) {
+  return graph_.create(pass_, {name, ResourceKind::Texture, desc, {}}, Access::Attachment);
+}
+
+ResourceId PassBuilder::create(const std::string& name, const BufferDesc& desc) {
+  return graph_.create(pass_, {name, ResourceKind::Buffer, {}, desc}, Access::Transfer);
+}
+
+ResourceId PassBuilder::read(ResourceId resource, Access access) {
+  graph_.use(pass_, resource, access, false);
+  return resource;
+}
+
+ResourceId PassBuilder::write(ResourceId resource, Access access) {
+  graph_.use(pass_, resource, access, true);
+  return resource;
+}
+
+ResourceId PassBuilder::find(const std::string& name) const { return graph_.find(name); }
+
+void PassBuilder::keep() { graph_.passes_[pass_].kept = true; }
+
+GLuint PassResources::texture(ResourceId resource) const {
+  const auto& r = graph_.resources_.at(resource.index);
+  if (r.kind != ResourceKind::Texture) throw std::logic_error("frame graph: '" + r.name + "' is not a texture");
+  return r.object;
+}
+
+GLuint PassResources::buffer(ResourceId resource) const {
+  const auto& r = graph_.resources_.at(resource.index);
+  if (r.kind != ResourceKind::Buffer) throw std::logic_error("frame graph: '" + r.name + "' is not a buffer");
+  return r.object;
+}
+
+const TextureDesc& PassResources::texture_desc(ResourceId resource) const { return graph_.resources_.at(resource.index).texture; }
+
+GLuint PassResources::framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const { return graph_.framebuffer(colors, depth); }
+
+FrameGraph::FrameGraph() : pool_(std::make_unique<Pool>()) {}
+FrameGraph::~FrameGraph() = default;
+
+void FrameGraph::reset() {
+  passes_.clear();
+  resources_.clear();
+  by_name_.clear();
+  slots_.clear();
+  compiled_.clear();
+  memory_ = {};
+  frame_framebuffers_.clear();
+}
+
+std::uint32_t FrameGraph::add_resource(Resource resource) {
+  if (by_name_.contains(resource.name)) throw std::logic_error("frame graph: two resources are named '" + resource.name + "'");
+  const auto index = static_cast<std::uint32_t>(resources_.size());
+  by_name_.emplace(resource.name, index);
+  resources_.push_back(std::move(resource));
+  return index;
+}
+
+ResourceId FrameGraph::create(std::uint32_t pass, Resource resource, Access first_write) {
+  const ResourceId id{add_resource(std::move(resource))};
+  use(pass, id, first_write, true);
+  return id;
+}
+
+ResourceId FrameGraph::import_texture(const std::string& name, GLuint texture, const TextureDesc& desc) {
+  Resource resource;
+  resource.name = name;
+  resource.kind = ResourceKind::Texture;
+  resource.texture = desc;
+  resource.imported = true;
+  resource.object = texture;
+  return {add_resource(std::move(resource))};
+}
+
+ResourceId FrameGraph::import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc) {
+  Resource resource;
+  resource.name = name;
+  resource.kind = ResourceKind::Buffer;
+  resource.buffer = desc;
+  resource.imported = true;
+  resource.object = buffer;
+  return {add_resource(std::move(resource))};
+}
+
+void FrameGraph::use(std::uint32_t pass, ResourceId resource, Access access, bool write) {
+  if (!resource.valid() || resource.index >= resources_.size()) {
+    throw std::logic_error("frame graph: pass '" + passes_[pass].name + "' uses a resource that was never declared");
+  }
+  const Resource& r = resources_[resource.index];
+  if (!write && !r.imported) {
+    const bool written = std::any_of(passes_.begin(), passes_.begin() + pass, [&](const Pass& p) {
+      return std::any_of(p.uses.begin(), p.uses.end(), [&](const Use& u) { return u.write && u.resource == resource.index; });
+    });
+    if (!written) throw std::logic_error("frame graph: pass '" + passes_[pass].name + "' reads '" + r.name + "' before any pass writes it");
+  }
+  passes_[pass].uses.push_back({resource.index, access, write});
+}
+
+void FrameGraph::add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed) {
+  const auto index = static_cast<std::uint32_t>(passes_.size());
+  passes_.push_back({name, std::move(execute), timed, false, {}});
+  PassBuilder builder(*this, index);
+  if (setup) setup(builder);
+}
+
+ResourceId FrameGraph::find(const std::string& name) const {
+  const auto it = by_name_.find(name);
+  return it == by_name_.end() ? ResourceId{} : ResourceId{it->second};
+}
+
+ResourceKind FrameGraph::kind(ResourceId resource) const { return resources_.at(resource.index).kind; }
+
+const std::string& FrameGraph::name(ResourceId resource) const { return resources_.at(resource.index).name; }
+
+std::vector<std::string> FrameGraph::resource_names() const {
+  std::vector<std::string> names;
+  for (const Resource& r : resources_) names.push_back(r.name);
+  return names;
+}
+
+void FrameGraph::compile() {
+  const std::size_t count = passes_.size();
+  // Culling, from the last pass back: a pass is needed when it keeps itself,
+  // writes a long-lived (imported) resource, or writes what a needed pass reads.
+  std::vector<bool> needed(count, false), resource_needed(resources_.size(), false);
+  for (std::size_t p = count; p-- > 0;) {
+    const Pass& pass = passes_[p];
+    bool need = pass.kept;
+    for (const Use& u : pass.uses) need = need || (u.write && (resources_[u.resource].imported || resource_needed[u.resource]));
+    if (!need) continue;
+    needed[p] = true;
+    for (const Use& u : pass.uses) {
+      if (!u.write) resource_needed[u.resource] = true;
+    }
+  }
+  // Lifetimes over the passes that run.
+  for (Resource& r : resources_) r.used = false;
+  for (std::uint32_t p = 0; p < count; ++p) {
+    if (!needed[p]) continue;
+    for (const Use& u : passes_[p].uses) {
+      Resource& r = resources_[u.resource];
+      if (!r.used) r.first = p;
+      r.used = true;
+      r.last = p;
+    }
+  }
+  // Transient resources share an object with an earlier one of the same kind
+  // and description whose last pass came before their first.
+  slots_.clear();
+  memory_ = {};
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t i = 0; i < resources_.size(); ++i) {
+    if (resources_[i].used && !resources_[i].imported) order.push_back(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return resources_[a].first < resources_[b].first; });
+  for (const std::uint32_t i : order) {
+    Resource& r = resources_[i];
+    const std::size_t bytes = r.kind == ResourceKind::Texture ? texture_bytes(r.texture) : r.buffer.bytes;
+    memory_.transient_bytes += bytes;
+    auto fits = [&](const Slot& s) {
+      return s.kind == r.kind && s.free_after < r.first && (r.kind == ResourceKind::Texture ? s.texture == r.texture : s.buffer == r.buffer);
+    };
+    const auto slot = std::find_if(slots_.begin(), slots_.end(), fits);
+    if (slot != slots_.end()) {
+      slot->free_after = r.last;
+      r.slot = static_cast<std::uint32_t>(slot - slots_.begin());
+    } else {
+      slots_.push_back({r.kind, r.texture, r.buffer, r.last});
+      r.slot = static_cast<std::uint32_t>(slots_.size() - 1);
+      memory_.aliased_bytes += bytes;
+    }
+  }
+  for (const Resource& r : resources_) {
+    if (r.imported && r.used) memory_.imported_bytes += r.kind == ResourceKind::Texture ? texture_bytes(r.texture) : r.buffer.bytes;
+  }
+  // Barriers: a use after a write through storage or image access waits for it.
+  compiled_.assign(count, {});
+  std::vector<bool> storage_written(resources_.size(), false);
+  for (std::uint32_t p = 0; p < count; ++p) {
+    compiled_[p].name = passes_[p].name;
+    compiled_[p].culled = !needed[p];
+    if (!needed[p]) continue;
+    for (const Use& u : passes_[p].uses) {
+      if (storage_written[u.resource]) compiled_[p].barriers |= barrier_for(u.access, resources_[u.resource].kind);
+    }
+    for (const Use& u : passes_[p].uses) {
+      if (!u.write) continue;
+      storage_written[u.resource] = u.access == Access::Storage;
+    }
+  }
+  compiled_once_ = true;
+}
+
+void FrameGraph::execute(gfx::PassTimer* timer) {
+  if (!compiled_once_ || compiled_.size() != passes_.size()) compile();
+  // Each slot takes one pooled object; its resources all point at it.
+  std::vector<GLuint> objects(slots_.size());
+  for (std::size_t s = 0; s < slots_.size(); ++s) {
+    objects[s] = slots_[s].kind == ResourceKind::Texture ? pool_->take(slots_[s].texture) : pool_->take(slots_[s].buffer);
+  }
+  for (Resource& r : resources_) {
+    if (r.used && !r.imported) r.object = objects[r.slot];
+  }
+  for (std::size_t p = 0; p < passes_.size(); ++p) {
+    if (compiled_[p].culled) continue;
+    if (compiled_[p].barriers) glMemoryBarrier(compiled_[p].barriers);
+    Pass& pass = passes_[p];
+    if (!pass.execute) continue;
+    const PassResources resources(*this);
+    if (timer && pass.timed) {
+      const auto scope = timer->scope(pass.name);
+      pass.execute(resources);
+    } else {
+      pass.execute(resources);
+    }
+  }
+  pool_->end_frame();
+}
+
+std::size_t FrameGraph::pooled_objects() const { return pool_->textures.size() + pool_->buffers.size(); }
+
+GLuint FrameGraph::framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const {
+  std::vector<GLuint> key;
+  for (const ResourceId c : colors) key.push_back(resources_.at(c.index).object);
+  key.push_back(depth.valid() ? resources_.at(depth.index).object : 0);
+  // Pooled objects live until the pool releases them, with their framebuffers;
+  // an imported texture may be remade under the same name by its owner, so a
+  // framebuffer on one lasts this frame only.
+  bool all_pooled = !depth.valid() || !resources_.at(depth.index).imported;
+  for (const ResourceId c : colors) all_pooled = all_pooled && !resources_.at(c.index).imported;
+  if (all_pooled) {
+    const auto it = pool_->framebuffers.find(key);
+    if (it != pool_->framebuffers.end()) return it->second.id();
+  }
+  gfx::Framebuffer framebuffer = gfx::create_framebuffer();
+  std::vector<GLenum> buffers;
+  for (std::size_t i = 0; i + 1 < key.size(); ++i) {
+    glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i), key[i], 0);
+    buffers.push_back(GL_COLOR_ATTACHMENT0 + static_cast<GLenum>(i));
+  }
+  if (depth.valid()) {
+    const GLenum format = resources_.at(depth.index).texture.format;
+    if (!is_depth(format)) throw std::logic_error("frame graph: '" + resources_.at(depth.index).name + "' is not a depth target");
+    glNamedFramebufferTexture(framebuffer.id(), has_stencil(format) ? GL_DEPTH_STENCIL_ATTACHMENT : GL_DEPTH_ATTACHMENT, key.back(), 0);
+  }
+  if (buffers.empty()) glNamedFramebufferDrawBuffer(framebuffer.id(), GL_NONE);
+  else glNamedFramebufferDrawBuffers(framebuffer.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
+  gfx::require_complete(framebuffer.id(), "frame graph");
+  const GLuint id = framebuffer.id();
+  if (all_pooled) pool_->framebuffers.emplace(std::move(key), std::move(framebuffer));
+  else frame_framebuffers_.push_back(std::move(framebuffer));
+  return id;
+}
+
+}  // namespace atrium::render

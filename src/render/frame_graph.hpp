@@ -1,0 +1,209 @@
+// The frame as a graph of passes. Every pass that draws or computes is added
+// with a setup, which declares the named resources it creates, reads and
+// writes, and an execute, which issues its GL commands. compile() culls the
+// passes whose writes nothing reads (unless they keep(): present, read back),
+// finds each transient resource's lifetime and lets transient resources of
+// one kind whose lifetimes do not overlap share one GL object (aliasing);
+// execute() runs the passes in the order they were added, makes the GL
+// objects from a pool kept across frames, issues glMemoryBarrier where a pass
+// reads what an earlier pass wrote through storage or image access, and times
+// every pass with the frame's PassTimer. Resources are found by name, so any
+// contributor (a debug view, a system that draws) can read what another made.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfx/gl.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/pass_timer.hpp"
+
+namespace atrium::render {
+
+// How a pass touches a resource: what decides the barriers between passes.
+enum class Access : std::uint8_t {
+  Attachment,  // rendered to or depth/stencil-tested as a framebuffer attachment
+  Sampled,     // read through a sampler (texelFetch, texture)
+  Storage,     // storage buffer or image load/store
+  Indirect,    // indirect draw or dispatch commands
+  Uniform,     // a uniform block
+  Transfer,    // clears, copies, blits, uploads and read-backs
+};
+
+struct TextureDesc {
+  GLenum format = GL_RGBA8;
+  glm::ivec2 size{0};
+  int samples = 1;
+  bool operator==(const TextureDesc&) const = default;
+};
+
+struct BufferDesc {
+  std::size_t bytes = 0;
+  bool operator==(const BufferDesc&) const = default;
+};
+
+// Bytes a texture of `desc` holds (every sample, no mip chain).
+[[nodiscard]] std::size_t texture_bytes(const TextureDesc& desc);
+
+struct ResourceId {
+  static constexpr std::uint32_t kNone = 0xffffffffu;
+  std::uint32_t index = kNone;
+  [[nodiscard]] bool valid() const { return index != kNone; }
+  bool operator==(const ResourceId&) const = default;
+};
+
+enum class ResourceKind : std::uint8_t { Texture, Buffer };
+
+// What a pass declares about itself while the graph is built.
+class PassBuilder {
+ public:
+  // A transient resource this pass writes first; made by the graph, valid
+  // from this pass to the last pass that reads it.
+  ResourceId create(const std::string& name, const TextureDesc& desc);
+  ResourceId create(const std::string& name, const BufferDesc& desc);
+  ResourceId read(ResourceId resource, Access access);
+  ResourceId write(ResourceId resource, Access access);
+  // By name (any contributor's resource); invalid when none has that name.
+  [[nodiscard]] ResourceId find(const std::string& name) const;
+  // The pass has effects the graph cannot see (presenting, a read-back, state
+  // a later frame uses): it is never culled.
+  void keep();
+
+ private:
+  friend class FrameGraph;
+  PassBuilder(class FrameGraph& graph, std::uint32_t pass) : graph_(graph), pass_(pass) {}
+  FrameGraph& graph_;
+  std::uint32_t pass_;
+};
+
+// What a pass sees while it runs: the GL objects behind its resources.
+class PassResources {
+ public:
+  [[nodiscard]] GLuint texture(ResourceId resource) const;
+  [[nodiscard]] GLuint buffer(ResourceId resource) const;
+  [[nodiscard]] const TextureDesc& texture_desc(ResourceId resource) const;
+  // A framebuffer with these textures as colour attachments 0.. and `depth`
+  // (depth-stencil or depth, by its format; invalid: none), made once and kept
+  // while the textures live.
+  [[nodiscard]] GLuint framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth = {}) const;
+
+ private:
+  friend class FrameGraph;
+  explicit PassResources(const FrameGraph& graph) : graph_(graph) {}
+  const FrameGraph& graph_;
+};
+
+// Render-target memory of one compiled frame.
+struct GraphMemory {
+  std::size_t transient_bytes = 0;  // every transient resource in a GL object of its own
+  std::size_t aliased_bytes = 0;    // as allocated, resources that never live together sharing objects
+  std::size_t imported_bytes = 0;   // long-lived targets owned outside the graph (depth, HDR colour, output, shadows...)
+};
+
+// One pass as compiled: for tests, the overlay and docs.
+struct CompiledPass {
+  std::string name;
+  bool culled = false;
+  GLbitfield barriers = 0;  // glMemoryBarrier bits issued before it
+};
+
+class FrameGraph {
+ public:
+  using Setup = std::function<void(PassBuilder&)>;
+  using Execute = std::function<void(const PassResources&)>;
+
+  FrameGraph();
+  ~FrameGraph();
+  FrameGraph(const FrameGraph&) = delete;
+  FrameGraph& operator=(const FrameGraph&) = delete;
+
+  // Starts a new frame's graph; the GL objects of transient resources stay
+  // pooled for the next frames.
+  void reset();
+
+  // A long-lived GL object owned elsewhere, under `name`.
+  ResourceId import_texture(const std::string& name, GLuint texture, const TextureDesc& desc);
+  ResourceId import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc);
+
+  // Adds a pass; `setup` runs now, `execute` when the graph executes. Untimed
+  // passes (timed = false) are for work too small to be worth a line.
+  void add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed = true);
+
+  [[nodiscard]] ResourceId find(const std::string& name) const;
+  [[nodiscard]] ResourceKind kind(ResourceId resource) const;
+  [[nodiscard]] const std::string& name(ResourceId resource) const;
+  // The names of every resource declared so far, in declaration order.
+  [[nodiscard]] std::vector<std::string> resource_names() const;
+
+  // Culls, finds lifetimes and plans which transient resources share objects.
+  void compile();
+  // Runs the passes that were not culled, each timed by `timer` when given.
+  void execute(gfx::PassTimer* timer);
+
+  [[nodiscard]] const std::vector<CompiledPass>& passes() const { return compiled_; }
+  [[nodiscard]] GraphMemory memory() const { return memory_; }
+  // The objects the pool holds (transient resources made in earlier frames).
+  [[nodiscard]] std::size_t pooled_objects() const;
+
+ private:
+  friend class PassBuilder;
+  friend class PassResources;
+
+  struct Use {
+    std::uint32_t resource;
+    Access access;
+    bool write;
+  };
+  struct Pass {
+    std::string name;
+    Execute execute;
+    bool timed = true;
+    bool kept = false;
+    std::vector<Use> uses;
+  };
+  struct Resource {
+    std::string name;
+    ResourceKind kind = ResourceKind::Texture;
+    TextureDesc texture;
+    BufferDesc buffer;
+    bool imported = false;
+    GLuint object = 0;              // imported: given; transient: set by execute
+    std::uint32_t first = 0, last = 0;  // passes that first and last use it
+    bool used = false;
+    std::uint32_t slot = 0;         // transient: the shared object it lives in
+  };
+  struct Slot {
+    ResourceKind kind;
+    TextureDesc texture;
+    BufferDesc buffer;
+    std::uint32_t free_after = 0;  // the last pass of its latest resource
+  };
+
+  std::uint32_t add_resource(Resource resource);
+  ResourceId create(std::uint32_t pass, Resource resource, Access first_write);
+  void use(std::uint32_t pass, ResourceId resource, Access access, bool write);
+  GLuint framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const;
+
+  std::vector<Pass> passes_;
+  std::vector<Resource> resources_;
+  std::map<std::string, std::uint32_t> by_name_;
+  std::vector<Slot> slots_;
+  std::vector<CompiledPass> compiled_;
+  GraphMemory memory_;
+  mutable std::vector<gfx::Framebuffer> frame_framebuffers_;  // on imported textures: this frame's only
+  bool compiled_once_ = false;
+
+  // GL objects kept across frames: per description, a list; a frame takes
+  // them in order, and those no frame took for a while are released.
+  struct Pool;
+  std::unique_ptr<Pool> pool_;
+};
+
+}  // namespace atrium::render

@@ -1,0 +1,170 @@
+// The frame graph (render/frame_graph.hpp) on the real driver: passes run in
+// the order added; a pass whose writes nothing reads is culled unless it keeps
+// itself or writes a long-lived resource; transient targets whose lifetimes do
+// not overlap share one GL object, and the memory report says so; a use after
+// a storage write gets the barrier its access needs, and only then; pooled
+// objects are reused frame after frame; every timed pass is timed.
+#include <gtest/gtest.h>
+
+#include "render/frame_graph.hpp"
+#include "support/gl_test.hpp"
+
+namespace atrium::render {
+namespace {
+
+using FrameGraphTest = testing::GlTest;
+
+constexpr TextureDesc kColour{GL_RGBA8, {64, 32}, 1};
+
+TEST_F(FrameGraphTest, PassesWhoseWritesNothingReadsAreCulled) {
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  FrameGraph graph;
+  std::vector<std::string> ran;
+  const ResourceId out = graph.import_texture("output", output.id(), kColour);
+  graph.add_pass("unread", [](PassBuilder& b) { b.create("scratch", kColour); }, [&](const PassResources&) { ran.push_back("unread"); });
+  ResourceId feeds;
+  graph.add_pass("feeds", [&](PassBuilder& b) { feeds = b.create("fed", kColour); }, [&](const PassResources&) { ran.push_back("feeds"); });
+  graph.add_pass("writes output", [&](PassBuilder& b) {
+    b.read(feeds, Access::Sampled);
+    b.write(out, Access::Attachment);
+  }, [&](const PassResources&) { ran.push_back("writes output"); });
+  graph.add_pass("kept", [](PassBuilder& b) { b.keep(); }, [&](const PassResources&) { ran.push_back("kept"); });
+  graph.compile();
+  graph.execute(nullptr);
+  EXPECT_EQ(ran, (std::vector<std::string>{"feeds", "writes output", "kept"}));
+  ASSERT_EQ(graph.passes().size(), 4u);
+  EXPECT_TRUE(graph.passes()[0].culled);
+  EXPECT_FALSE(graph.passes()[1].culled);
+}
+
+TEST_F(FrameGraphTest, ResourcesAreFoundByNameAndOnlyWhatWasDeclaredIsUsed) {
+  FrameGraph graph;
+  ResourceId made;
+  graph.add_pass("first", [&](PassBuilder& b) { made = b.create("made", kColour); }, {});
+  graph.add_pass("second", [&](PassBuilder& b) { EXPECT_EQ(b.read(b.find("made"), Access::Sampled), made); }, {});
+  EXPECT_FALSE(graph.find("nothing").valid());
+  EXPECT_THROW(graph.add_pass("third", [&](PassBuilder& b) { b.read(b.find("nothing"), Access::Sampled); }, {}), std::logic_error);
+  EXPECT_THROW(graph.add_pass("fourth", [&](PassBuilder& b) { b.create("made", kColour); }, {}), std::logic_error) << "one name, one resource";
+}
+
+TEST_F(FrameGraphTest, TargetsThatNeverLiveTogetherShareOneObject) {
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  FrameGraph graph;
+  const ResourceId out = graph.import_texture("output", output.id(), kColour);
+  ResourceId a, b, c;
+  GLuint object_a = 0, object_b = 0, object_c = 0;
+  graph.add_pass("make a", [&](PassBuilder& p) { a = p.create("a", kColour); }, [&](const PassResources& r) { object_a = r.texture(a); });
+  graph.add_pass("a to b", [&](PassBuilder& p) {
+    p.read(a, Access::Sampled);
+    b = p.create("b", kColour);
+  }, [&](const PassResources& r) { object_b = r.texture(b); });
+  graph.add_pass("b to c", [&](PassBuilder& p) {
+    p.read(b, Access::Sampled);
+    c = p.create("c", kColour);
+  }, [&](const PassResources& r) { object_c = r.texture(c); });
+  graph.add_pass("c to output", [&](PassBuilder& p) {
+    p.read(c, Access::Sampled);
+    p.write(out, Access::Attachment);
+  }, {});
+  graph.compile();
+  graph.execute(nullptr);
+  EXPECT_NE(object_a, object_b) << "a and b are both used by 'a to b'";
+  EXPECT_NE(object_b, object_c);
+  EXPECT_EQ(object_a, object_c) << "a's last use comes before c's first";
+  const std::size_t one = texture_bytes(kColour);
+  EXPECT_EQ(one, 64u * 32u * 4u);
+  EXPECT_EQ(graph.memory().transient_bytes, 3 * one);
+  EXPECT_EQ(graph.memory().aliased_bytes, 2 * one);
+  EXPECT_EQ(graph.memory().imported_bytes, one);
+}
+
+TEST_F(FrameGraphTest, ObjectsArePooledFromFrameToFrame) {
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  FrameGraph graph;
+  std::vector<GLuint> seen;
+  for (int frame = 0; frame < 3; ++frame) {
+    graph.reset();
+    const ResourceId out = graph.import_texture("output", output.id(), kColour);
+    ResourceId t;
+    graph.add_pass("make", [&](PassBuilder& p) { t = p.create("t", kColour); }, [&](const PassResources& r) { seen.push_back(r.texture(t)); });
+    graph.add_pass("use", [&](PassBuilder& p) {
+      p.read(t, Access::Sampled);
+      p.write(out, Access::Attachment);
+    }, {});
+    graph.compile();
+    graph.execute(nullptr);
+  }
+  EXPECT_EQ(graph.pooled_objects(), 1u);
+  EXPECT_EQ(seen, std::vector<GLuint>(3, seen.front()));
+  // A frame that no longer makes it lets it go after a few frames.
+  for (int frame = 0; frame < 5; ++frame) {
+    graph.reset();
+    graph.add_pass("idle", [](PassBuilder& p) { p.keep(); }, {});
+    graph.compile();
+    graph.execute(nullptr);
+  }
+  EXPECT_EQ(graph.pooled_objects(), 0u);
+}
+
+TEST_F(FrameGraphTest, StorageWritesGetTheBarrierTheirReadersNeed) {
+  const gfx::Buffer lists = gfx::create_buffer();
+  glNamedBufferStorage(lists.id(), 256, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  FrameGraph graph;
+  const ResourceId buffer = graph.import_buffer("lists", lists.id(), {256});
+  const ResourceId out = graph.import_texture("output", output.id(), kColour);
+  ResourceId drawn;
+  graph.add_pass("assign", [&](PassBuilder& p) { p.write(buffer, Access::Storage); }, {});
+  graph.add_pass("draw", [&](PassBuilder& p) {
+    p.read(buffer, Access::Indirect);
+    p.read(buffer, Access::Storage);
+    drawn = p.create("drawn", kColour);
+  }, {});
+  graph.add_pass("compose", [&](PassBuilder& p) {
+    p.read(drawn, Access::Sampled);
+    p.write(out, Access::Attachment);
+  }, {});
+  graph.compile();
+  ASSERT_EQ(graph.passes().size(), 3u);
+  EXPECT_EQ(graph.passes()[0].barriers, 0u);
+  EXPECT_EQ(graph.passes()[1].barriers, static_cast<GLbitfield>(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT));
+  EXPECT_EQ(graph.passes()[2].barriers, 0u) << "sampling what was rendered needs no barrier in GL";
+  graph.execute(nullptr);
+}
+
+TEST_F(FrameGraphTest, PassesDrawIntoTheirTargetsAndAreTimed) {
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  const gfx::Framebuffer output_framebuffer = gfx::create_framebuffer();
+  glNamedFramebufferTexture(output_framebuffer.id(), GL_COLOR_ATTACHMENT0, output.id(), 0);
+  FrameGraph graph;
+  gfx::PassTimer timer;
+  timer.begin_frame();
+  const ResourceId out = graph.import_texture("output", output.id(), kColour);
+  ResourceId t;
+  graph.add_pass("clear", [&](PassBuilder& p) { t = p.create("t", kColour); }, [&](const PassResources& r) {
+    const GLfloat colour[] = {0.0f, 1.0f, 0.0f, 1.0f};
+    glClearNamedFramebufferfv(r.framebuffer({t}), GL_COLOR, 0, colour);
+  });
+  graph.add_pass("copy", [&](PassBuilder& p) {
+    p.read(t, Access::Transfer);
+    p.write(out, Access::Transfer);
+  }, [&](const PassResources& r) {
+    glBlitNamedFramebuffer(r.framebuffer({t}), output_framebuffer.id(), 0, 0, 64, 32, 0, 0, 64, 32, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  });
+  graph.add_pass("untimed", [](PassBuilder& p) { p.keep(); }, {}, false);
+  graph.compile();
+  graph.execute(&timer);
+  timer.end_frame();
+  std::uint8_t pixel[4] = {};
+  glGetTextureSubImage(output.id(), 0, 10, 10, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, 4, pixel);
+  EXPECT_EQ(pixel[1], 255);
+  EXPECT_EQ(pixel[0], 0);
+  if (timer.method() == gfx::TimingMethod::CpuFinish) {
+    ASSERT_EQ(timer.latest().size(), 2u);
+    EXPECT_EQ(timer.latest()[0].name, "clear");
+    EXPECT_EQ(timer.latest()[1].name, "copy");
+  }
+}
+
+}  // namespace
+}  // namespace atrium::render
