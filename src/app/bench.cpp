@@ -148,9 +148,18 @@ BenchResult run_bench(const BenchOptions& options, const std::function<void(std:
                             std::max<std::size_t>(options.views.size(), 1);
   std::size_t done = 0;
   for (const std::uint32_t lights : options.light_counts) {
-    World world({options.scene, lights, "forward", 1, options.size, options.shading, "", options.technique_options,
-                 bench_radius(options, lights), 0, options.camera, options.frustum_culling, 0,
-                 options.occlusion_culling});
+    WorldOptions world_options;
+    world_options.scene = options.scene;
+    world_options.lights = lights;
+    world_options.mode = "forward";
+    world_options.size = options.size;
+    world_options.shading = options.shading;
+    world_options.technique_options = options.technique_options;
+    world_options.light_radius = bench_radius(options, lights);
+    world_options.camera = options.camera;
+    world_options.frustum_culling = options.frustum_culling;
+    world_options.occlusion_culling = options.occlusion_culling;
+    World world(world_options);
     std::vector<int> views = options.views;
     if (views.empty()) {
       for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);

@@ -23,7 +23,7 @@ WorldOptions world_options(const CliOptions& options) {
   return {options.scene, options.lights,     options.mode,       options.view,
           options.size,  options.shading,    options.debug_view, options.technique_options,
           options.light_radius, options.max_texture_size, options.camera, options.frustum_culling, options.shadows,
-          options.occlusion_culling};
+          options.occlusion_culling, options.system_options};
 }
 
 namespace {

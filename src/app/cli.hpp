@@ -3,6 +3,7 @@
 // Exit codes: 0 success, 1 runtime failure, 2 bad usage or bad input.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -52,6 +53,7 @@ struct CliOptions {
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling
   int shadows = 0;                      // --shadows K: lights with shadow maps
+  std::map<std::string, double> system_options;  // rows of the system options table, by name
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)
   BenchOptions bench;                   // bench: the sweep
   std::string csv, md, plot;            // bench: output files

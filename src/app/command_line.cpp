@@ -57,6 +57,21 @@ struct OptionSpec {
   std::string help;
 };
 
+// Options of optional systems (components/system_options.hpp): each row is
+// parsed by its own range into CliOptions::system_options under its name
+// without the dashes, which is the name the system reads.
+struct SystemOptionSpec {
+  std::string_view name;  // with its dashes
+  std::string_view value;
+  std::string_view help;
+  int min, max;
+};
+
+constexpr std::array kSystemOptions{
+    SystemOptionSpec{"--fireflies", "N", "N small point lights wandering through the scene, each drawn as a glowing sprite (0..4096; "
+                     "a scene file's \"systems\": {\"fireflies\": N})", 0, 4096},
+};
+
 // Every option. One name may appear twice when its value means something else
 // in `atrium bench` (a list there).
 const std::vector<OptionSpec>& option_table() {
@@ -126,7 +141,12 @@ const std::vector<OptionSpec>& option_table() {
       {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)"},
       {"--json", "", kInfo, "print JSON"},
   };
-  return table;
+  static const std::vector<OptionSpec> with_systems = [] {
+    std::vector<OptionSpec> rows = table;
+    for (const SystemOptionSpec& s : kSystemOptions) rows.push_back({std::string(s.name), std::string(s.value), kWindow | kRender | kCompare, std::string(s.help)});
+    return rows;
+  }();
+  return with_systems;
 }
 
 // "the window and `atrium render`": the commands in `commands`, for messages and help.
@@ -303,6 +323,11 @@ bool apply_bench_option(std::string_view name, std::string_view value, CliOption
 // One option given on the command line, already known to belong to the command.
 void apply_option(std::string_view name, std::string_view value, CliOptions& options) {
   if (options.command == Command::Bench && apply_bench_option(name, value, options)) return;
+  for (const SystemOptionSpec& s : kSystemOptions) {
+    if (s.name != name) continue;
+    options.system_options[std::string(name.substr(2))] = parse_number<int>(name, value, s.min, s.max);
+    return;
+  }
   if (name == "--mode") {
     options.mode = std::string(value);
   } else if (name == "--cluster-grid") {

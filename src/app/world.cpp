@@ -18,8 +18,11 @@
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
+#include "components/system_options.hpp"
+#include "render/contributors.hpp"
 #include "systems/bounds.hpp"
 #include "systems/camera.hpp"
+#include "systems/fireflies/fireflies.hpp"
 #include "systems/frustum_culling.hpp"
 #include "systems/light_buffer.hpp"
 #include "systems/light_radius.hpp"
@@ -138,6 +141,10 @@ void World::start(const WorldOptions& options) {
       SceneSettings{scene_.bounds_min, scene_.bounds_max, scene_.ambient, scene_.background, scene_.exposure});
   registry_.set_resource<RendererSettings>();
   registry_.set_resource<LightAnimationSettings>();
+  auto& system_options = registry_.set_resource<SystemOptions>();
+  for (const auto& [name, value] : scene_.system_options) system_options.set(name, value);
+  for (const auto& [name, value] : options.system_options) system_options.set(name, value);
+  registry_.set_resource<RenderContributors>();
   registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
   light_radius_ = options.light_radius;
   spawn(registry_, scene_, light_radius_);
@@ -155,6 +162,7 @@ void World::start(const WorldOptions& options) {
   register_bounds(scheduler_);
   register_camera(scheduler_);
   register_frustum_culling(scheduler_);
+  register_fireflies(scheduler_, registry_);
   register_light_buffer(scheduler_);
   register_mesh_renderer(scheduler_);
 }

@@ -3,6 +3,7 @@
 // assets. Both the window and the headless commands drive a World.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -47,6 +48,9 @@ struct WorldOptions {
   int shadows = 0;
   // --no-occlusion-culling turns it off: passes draw what is in view, hidden or not.
   bool occlusion_culling = true;
+  // Settings of optional systems by name (components/system_options.hpp),
+  // over the scene file's.
+  std::map<std::string, double> system_options;
 };
 
 class World {

@@ -3,6 +3,7 @@
 // files and glTF import produce the same structure.
 #pragma once
 
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -68,6 +69,9 @@ struct SceneDescription {
   glm::vec3 bounds_max{0.0f};
   // Fills the scene up to --lights N: the scene's own generator, or one over its bounds.
   std::optional<LightGenerator> fill_generator;
+  // A scene file's "systems": settings of optional systems by name
+  // (components/system_options.hpp).
+  std::map<std::string, double> system_options;
 };
 
 // Sets the scene's light count to `count`: its listed lights first (cut when

@@ -303,7 +303,7 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
     throw SceneFileError(file + ": not valid JSON (" + what.substr(what.find(']') + 2) + ")");
   }
   const Reader r(file);
-  r.only_keys(root, "", {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode"});
+  r.only_keys(root, "", {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode", "systems"});
   SceneDescription scene;
   scene.name = root.contains("name") ? r.string(root["name"], "/name") : path.stem().string();
   // The mode name is checked against the technique table by the World.
@@ -375,6 +375,13 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   if (root.contains("ambient")) scene.ambient = r.color(root["ambient"], "/ambient");
   if (root.contains("background")) scene.background = r.color(root["background"], "/background");
   if (root.contains("exposure")) scene.exposure = static_cast<float>(r.number(root["exposure"], "/exposure", 1e-6, 1e6, "a positive number"));
+  if (root.contains("systems")) {
+    // Settings of optional systems by name; each system clamps its own.
+    if (!root["systems"].is_object()) r.fail("/systems", "expected an object of numbers by system name, got " + r.describe(root["systems"]));
+    for (const auto& [name, value] : root["systems"].items()) {
+      scene.system_options[name] = r.number(value, "/systems/" + name, -1e9, 1e9, "a number");
+    }
+  }
   if (root.contains("lights")) {
     const json& lights = r.array(root["lights"], "/lights");
     for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], "/lights/" + std::to_string(i), scene));

@@ -11,6 +11,7 @@
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
+#include "components/system_options.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/limits.hpp"
 #include "systems/light_radius.hpp"
@@ -197,6 +198,17 @@ void Overlay::controls(ecs::Registry& registry) {
   // with it, as --light-radius gives them.
   if (ImGui::SliderFloat("light radius (m)", &light_radius_, 0.5f, 40.0f, "%.1f", ImGuiSliderFlags_Logarithmic)) {
     set_every_light_radius(registry, light_radius_);
+  }
+  // The options systems declared (components/system_options.hpp): a slider each.
+  if (auto* system_options = registry.try_resource<SystemOptions>()) {
+    for (auto& [name, option] : system_options->options) {
+      if (!option.declared) continue;
+      int value = static_cast<int>(option.value);
+      if (ImGui::SliderInt(option.label.c_str(), &value, static_cast<int>(option.min), static_cast<int>(option.max), "%d",
+                           ImGuiSliderFlags_Logarithmic)) {
+        option.value = value;
+      }
+    }
   }
   ImGui::PopItemWidth();
 }

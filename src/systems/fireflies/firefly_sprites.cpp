@@ -1,0 +1,55 @@
+#include "systems/fireflies/firefly_sprites.hpp"
+
+#include "assets/gpu_assets.hpp"
+#include "components/light.hpp"
+#include "components/transform.hpp"
+#include "gfx/depth.hpp"
+#include "systems/fireflies/firefly.hpp"
+
+namespace atrium {
+namespace {
+
+// The storage binding the sprite vertex shader reads (shaders/fireflies/sprite.vert).
+constexpr GLuint kSpriteBinding = 12;
+
+}  // namespace
+
+void FireflySprites::add_pass(render::FrameGraph& graph, ecs::Registry& registry, const lighting::FrameContext& frame,
+                              const lighting::FrameTargets& targets) {
+  sprites_.clear();
+  registry.view<Firefly, Transform, LightColor>().each([&](ecs::Entity, const Firefly& firefly, const Transform& transform, const LightColor& light) {
+    sprites_.push_back({glm::vec4(transform.position, firefly.size), glm::vec4(light.color, 0.0f)});
+  });
+  if (sprites_.empty()) return;
+  if (!program_) {
+    program_ = &registry.resource<assets::GpuAssets>().shaders().get({"fireflies/sprite.vert", "fireflies/sprite.frag"});
+    empty_vertex_array_ = gfx::create_vertex_array();
+  }
+  graph.add_pass("fireflies", [&](render::PassBuilder& pass) {
+    pass.read(frame.scene_depth, render::Access::Attachment);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &targets](const render::PassResources&) { draw(targets); });
+}
+
+void FireflySprites::draw(const lighting::FrameTargets& targets) {
+  buffer_.upload(sprites_.data(), sprites_.size() * sizeof(Sprite));
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  // Hidden behind the scene where it is, glowing over it where it is not.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloser);
+  glDepthMask(GL_FALSE);
+  glDisable(GL_CULL_FACE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE);
+  program_->use();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpriteBinding, buffer_.buffer.id());
+  glBindVertexArray(empty_vertex_array_.id());
+  glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(sprites_.size()));
+  glBindVertexArray(0);
+  glDisable(GL_BLEND);
+  glEnable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+}
+
+}  // namespace atrium

@@ -1,0 +1,36 @@
+// The fireflies' sprites pass: reads the scene depth, adds a camera-facing
+// glowing disc per Firefly to the lit HDR image (after lighting, before tone
+// mapping), so that each light is seen where it shines from. It owns the GL
+// buffer of the sprites and joins the frame graph as a RenderContributor.
+#pragma once
+
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "gfx/shader_program.hpp"
+#include "gfx/stream_buffer.hpp"
+#include "render/contributors.hpp"
+
+namespace atrium {
+
+class FireflySprites {
+ public:
+  // Adds the "fireflies" pass when the registry holds fireflies.
+  void add_pass(render::FrameGraph& graph, ecs::Registry& registry, const lighting::FrameContext& frame,
+                const lighting::FrameTargets& targets);
+
+ private:
+  // One sprite: xyz world position, w radius; then rgb colour.
+  struct Sprite {
+    glm::vec4 position_size;
+    glm::vec4 color;
+  };
+  void draw(const lighting::FrameTargets& targets);
+
+  std::vector<Sprite> sprites_;
+  gfx::StreamBuffer buffer_;
+  gfx::ShaderProgram* program_ = nullptr;  // from the shader library, on first use
+  gfx::VertexArray empty_vertex_array_;
+};
+
+}  // namespace atrium
