@@ -17,6 +17,7 @@
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
 #include "systems/overlay.hpp"
+#include "systems/lighting/gbuffer.hpp"
 #include "systems/shadows/shadow_selection.hpp"
 
 namespace atrium {
@@ -72,6 +73,12 @@ constexpr std::array kSystemOptions{
                      "a scene file's \"systems\": {\"fireflies\": N})", 0, 4096},
 };
 
+// "5 targets, 48 B/px": a layout's targets and bytes per pixel with depth.
+std::string gbuffer_size(lighting::GBufferLayout layout) {
+  return std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) +
+         " B/px";
+}
+
 // Every option. One name may appear twice when its value means something else
 // in `atrium bench` (a list there).
 const std::vector<OptionSpec>& option_table() {
@@ -89,8 +96,8 @@ const std::vector<OptionSpec>& option_table() {
        "plain-log (logarithmic from the near plane) or uniform"},
       {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)"},
       {"--gbuffer", "L", kDrawing,
-       "deferred modes: G-buffer layout, full (5 targets, 44 B/px, default) or compact (2 targets, 24 B/px; position "
-       "from depth, octahedral normal)"},
+       "deferred modes: G-buffer layout, full (" + gbuffer_size(lighting::GBufferLayout::Full) + ", default) or compact (" +
+           gbuffer_size(lighting::GBufferLayout::Compact) + "; position from depth, octahedral normal)"},
       {"--split-lighting", "", kDrawing,
        "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
        "diffuse-light and specular-light views turn this on while shown)"},

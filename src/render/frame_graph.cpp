@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <stdexcept>
+#include <string>
 
 namespace atrium::render {
 namespace {
@@ -12,14 +13,14 @@ constexpr int kIdleFramesKept = 3;
 
 std::size_t bytes_per_texel(GLenum format) {
   switch (format) {
-    case GL_R8: return 1;
+    case GL_R8: case GL_STENCIL_INDEX8: return 1;
     case GL_RG8: case GL_R16F: case GL_R16UI: return 2;
     case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_RGB10_A2: case GL_R11F_G11F_B10F:
     case GL_DEPTH24_STENCIL8: case GL_DEPTH_COMPONENT32F: case GL_RG16UI: return 4;
     case GL_DEPTH32F_STENCIL8: return 8;  // 32-bit depth, 8-bit stencil, padded as drivers store it
-    case GL_RGBA16F: case GL_RG32F: case GL_RG32UI: case GL_RGBA16UI: return 8;
+    case GL_RGBA16F: case GL_RGBA16: case GL_RG32F: case GL_RG32UI: case GL_RGBA16UI: return 8;
     case GL_RGBA32F: case GL_RGBA32UI: return 16;
-    default: return 4;
+    default: throw std::logic_error("frame graph: no size known for texture format " + std::to_string(format));
   }
 }
 

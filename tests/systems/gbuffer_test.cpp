@@ -3,11 +3,17 @@
 // the two layouts cost the bytes per pixel the docs state, and each deferred
 // mode draws nearly the same picture with either (docs/techniques.md quotes it).
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <numbers>
 
 #include <glm/glm.hpp>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
+#include "gfx/depth.hpp"
+#include "render/frame_graph.hpp"
 #include "assets/image.hpp"
 #include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
@@ -17,7 +23,9 @@
 namespace atrium {
 namespace {
 
+namespace fs = std::filesystem;
 using CompactGBuffer = testing::GlTest;
+using GBufferBytes = testing::GlTest;
 
 std::vector<glm::vec4> sphere_directions() {
   std::vector<glm::vec4> directions;
@@ -57,11 +65,45 @@ TEST_F(CompactGBuffer, OctahedralNormalsRoundTripWithinATenThousandthOfARadian) 
   RecordProperty("worst_angle_radians", std::to_string(worst));
 }
 
-TEST(GBufferLayouts, CostTheBytesPerPixelTheDocsState) {
-  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Full), 44u);
-  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Compact), 24u);
-  EXPECT_EQ(lighting::GBuffer::targets(lighting::GBufferLayout::Compact).size(), 2u);
-  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Thin), 16u) << "the light pre-pass's";
+// The bytes each layout costs come from its targets' GL formats (and the
+// renderer's depth-stencil), as the driver sizes them; README and --help state
+// them from the same function.
+TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
+  auto gl_bits = [](GLenum format) {
+    GLint total = 0;
+    for (const GLenum size : {GL_INTERNALFORMAT_RED_SIZE, GL_INTERNALFORMAT_GREEN_SIZE, GL_INTERNALFORMAT_BLUE_SIZE,
+                              GL_INTERNALFORMAT_ALPHA_SIZE, GL_INTERNALFORMAT_DEPTH_SIZE, GL_INTERNALFORMAT_STENCIL_SIZE}) {
+      GLint bits = 0;
+      glGetInternalformativ(GL_TEXTURE_2D, format, size, 1, &bits);
+      total += bits;
+    }
+    return total;
+  };
+  for (const auto layout : {lighting::GBufferLayout::Full, lighting::GBufferLayout::Compact, lighting::GBufferLayout::Thin}) {
+    std::size_t bytes = 0;
+    for (const lighting::GBuffer::Target& target : lighting::GBuffer::targets(layout)) {
+      const std::size_t texel = render::texture_bytes({target.format, {1, 1}, 1});
+      EXPECT_EQ(static_cast<GLint>(texel * 8), gl_bits(target.format)) << target.name;
+      bytes += texel;
+    }
+    // DEPTH32F_STENCIL8: 40 bits of data, stored as 64 (GL_FLOAT_32_UNSIGNED_INT_24_8_REV).
+    EXPECT_EQ(gl_bits(gfx::kDepthStencilFormat), 40);
+    EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(layout), bytes + 8);
+  }
+  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Full), 48u);
+  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Compact), 28u);
+  std::ifstream readme(fs::path(ATRIUM_SOURCE_DIR) / "README.md");
+  const std::string text((std::istreambuf_iterator<char>(readme)), std::istreambuf_iterator<char>());
+  for (const auto& [name, layout] : {std::pair{"full", lighting::GBufferLayout::Full}, std::pair{"compact", lighting::GBufferLayout::Compact}}) {
+    const std::string stated = std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) + " B/px";
+    EXPECT_NE(text.find("`" + std::string(name) + "` (" + std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + stated),
+              std::string::npos)
+        << name << ": README states another size than " << stated;
+    EXPECT_NE(help_text(Command::Render).find(std::string(name) + " (" + std::to_string(lighting::GBuffer::targets(layout).size()) +
+                                              " targets, " + stated),
+              std::string::npos)
+        << name;
+  }
 }
 
 TEST_F(CompactGBuffer, DrawsWhatTheFullLayoutDrawsInEveryDeferredMode) {

@@ -1,6 +1,9 @@
 #include "systems/lighting/gbuffer.hpp"
 
 #include "gfx/depth.hpp"
+#include "render/frame_graph.hpp"
+
+#include "gfx/depth.hpp"
 
 namespace atrium::lighting {
 
@@ -104,8 +107,8 @@ void GBuffer::draw_fullscreen(const SampleRatePrograms& programs, const FrameTar
 }
 
 std::size_t GBuffer::bytes_per_pixel(GBufferLayout layout) {
-  std::size_t bytes = 4;  // DEPTH24_STENCIL8
-  for (const Target& target : targets(layout)) bytes += target.bytes_per_pixel;
+  std::size_t bytes = render::texture_bytes({gfx::kDepthStencilFormat, {1, 1}, 1});
+  for (const Target& target : targets(layout)) bytes += render::texture_bytes({target.format, {1, 1}, 1});
   return bytes;
 }
 

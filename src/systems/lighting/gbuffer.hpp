@@ -26,24 +26,22 @@ class GBuffer {
   struct Target {
     const char* name;
     GLenum format;
-    std::size_t bytes_per_pixel;
   };
   static constexpr std::size_t kMaxTargets = 5;
   // Full: formats chosen so that deferred matches forward shading: 32-bit float
   // positions, 16-bit unorm normals, 16-bit float emission, sRGB albedo.
-  static constexpr std::array<Target, 5> kFullLayout{{{"position", GL_RGBA32F, 16},
-                                                      {"albedo", GL_SRGB8_ALPHA8, 4},
-                                                      {"normal", GL_RGBA16, 8},
-                                                      {"metallic-roughness", GL_RGBA8, 4},
-                                                      {"emissive", GL_RGBA16F, 8}}};
+  static constexpr std::array<Target, 5> kFullLayout{{{"position", GL_RGBA32F},
+                                                      {"albedo", GL_SRGB8_ALPHA8},
+                                                      {"normal", GL_RGBA16},
+                                                      {"metallic-roughness", GL_RGBA8},
+                                                      {"emissive", GL_RGBA16F}}};
   // Compact: albedo as above; normal (octahedral, 2x16 bits), emission (3 half
   // floats), metallic and roughness (8 bits each) and the distance to the camera
   // (32-bit float) packed into the four words of one integer target.
-  static constexpr std::array<Target, 2> kCompactLayout{{{"albedo", GL_SRGB8_ALPHA8, 4},
-                                                         {"packed", GL_RGBA32UI, 16}}};
+  static constexpr std::array<Target, 2> kCompactLayout{{{"albedo", GL_SRGB8_ALPHA8}, {"packed", GL_RGBA32UI}}};
   // Thin: the light pre-pass's normal and roughness (16-bit unorm each) and the
   // distance to the camera.
-  static constexpr std::array<Target, 2> kThinLayout{{{"normal-roughness", GL_RGBA16, 8}, {"distance", GL_R32F, 4}}};
+  static constexpr std::array<Target, 2> kThinLayout{{{"normal-roughness", GL_RGBA16}, {"distance", GL_R32F}}};
 
   // `samples` > 1: multisampled targets (the renderer's --msaa), edges marked
   // after the geometry pass.
@@ -68,7 +66,8 @@ class GBuffer {
   [[nodiscard]] GLuint texture(std::size_t index) const { return textures_[index].id(); }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
   [[nodiscard]] int samples() const { return samples_; }
-  // Bytes per pixel of the targets plus the shared DEPTH24_STENCIL8.
+  // Bytes per pixel of the targets plus the shared depth-stencil
+  // (gfx::kDepthStencilFormat, 8 bytes), from their GL formats.
   [[nodiscard]] static std::size_t bytes_per_pixel(GBufferLayout layout);
   [[nodiscard]] static std::span<const Target> targets(GBufferLayout layout);
 
