@@ -13,6 +13,7 @@
 #include "app/world.hpp"
 #include "components/frame_resources.hpp"
 #include "assets/image.hpp"
+#include "assets/load_budget.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
 #include "systems/lighting/technique.hpp"
@@ -62,6 +63,11 @@ int run_render(const CliOptions& options) {
     }
     std::printf("fragments shaded per pixel: %s\n", passes.c_str());
   }
+  const render::GraphMemory memory = world.renderer().graph().memory();
+  std::printf("render targets: %s long-lived (imported into the frame graph), %s transient (%s if none shared an object)\n",
+              format_bytes(static_cast<double>(memory.imported_bytes)).c_str(),
+              format_bytes(static_cast<double>(memory.aliased_bytes)).c_str(),
+              format_bytes(static_cast<double>(memory.transient_bytes)).c_str());
   if (stats.shadows.atlas_size > 0) {
     std::printf("shadows: %u lights shadowed, %u maps drawn, %u reused, %zu triangles in shadow passes (%dx%d atlas)\n",
                 stats.shadows.lights, stats.shadows.maps_rendered, stats.shadows.maps_reused, stats.shadows.triangles,

@@ -21,15 +21,6 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
 constexpr std::uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
 
-std::string with_commas(std::size_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 // Reads typed members of the JSON with the JSON path of each in its errors.
 class Reader {
  public:

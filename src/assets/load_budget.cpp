@@ -20,15 +20,6 @@ std::size_t memory_available() {
 
 }  // namespace
 
-std::string format_bytes(double bytes) {
-  char text[64];
-  if (bytes >= 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f GiB", bytes / (1024.0 * 1024.0 * 1024.0));
-  else if (bytes >= 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", bytes / (1024.0 * 1024.0));
-  else if (bytes >= 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", bytes / 1024.0);
-  else std::snprintf(text, sizeof text, "%.0f bytes", bytes);
-  return text;
-}
-
 MemoryBudget::MemoryBudget(std::size_t limit_bytes) : limit_(limit_bytes ? limit_bytes : memory_available()) {}
 
 void MemoryBudget::require(std::size_t bytes, const std::string& what) const {

@@ -10,6 +10,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "base/format.hpp"
+
 namespace atrium::assets {
 
 // "<file>: <problem>", one line: the file cannot be used.
@@ -50,7 +52,5 @@ auto refuse_out_of_memory(const std::filesystem::path& path, Load&& load) -> dec
   }
 }
 
-// "1.5 GiB", "12.0 MiB", "640 bytes".
-[[nodiscard]] std::string format_bytes(double bytes);
 
 }  // namespace atrium::assets

@@ -48,14 +48,4 @@ bool is_software_renderer() {
 
 std::uint32_t shader_loop_limit() { return is_software_renderer() ? 65535u : 0u; }
 
-std::string format_bytes(std::uint64_t bytes) {
-  char text[32];
-  const double b = static_cast<double>(bytes);
-  if (bytes < 1024) std::snprintf(text, sizeof text, "%llu B", static_cast<unsigned long long>(bytes));
-  else if (b < 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f KiB", b / 1024.0);
-  else if (b < 1024.0 * 1024.0 * 1024.0) std::snprintf(text, sizeof text, "%.1f MiB", b / (1024.0 * 1024.0));
-  else std::snprintf(text, sizeof text, "%.2f GiB", b / (1024.0 * 1024.0 * 1024.0));
-  return text;
-}
-
 }  // namespace atrium::gfx

@@ -38,7 +38,4 @@ class ResourceLimitError : public std::runtime_error {
 // that would drop the rest, so such frames are refused instead.
 [[nodiscard]] std::uint32_t shader_loop_limit();
 
-// "12.0 KiB", "496.1 MiB", "1.50 GiB".
-[[nodiscard]] std::string format_bytes(std::uint64_t bytes);
-
 }  // namespace atrium::gfx

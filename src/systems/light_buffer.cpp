@@ -7,6 +7,7 @@
 
 #include "components/light.hpp"
 #include "components/transform.hpp"
+#include "base/format.hpp"
 #include "gfx/limits.hpp"
 #include "systems/lighting/light_falloff.hpp"
 
@@ -90,8 +91,8 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     const std::size_t limit = block / sizeof(GpuLight);
     if (needed > limit) {
       throw gfx::ResourceLimitError(std::to_string(state->staging.size()) + " lights need a " +
-                                    gfx::format_bytes(needed * sizeof(GpuLight)) + " light buffer, more than one storage buffer may hold here (" +
-                                    gfx::format_bytes(block) + ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights");
+                                    format_bytes(static_cast<double>(needed * sizeof(GpuLight))) + " light buffer, more than one storage buffer may hold here (" +
+                                    format_bytes(static_cast<double>(block)) + ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights");
     }
     if (!state->buffer || needed > state->capacity) {
       state->capacity = std::min(std::max(needed, state->capacity * 2), limit);

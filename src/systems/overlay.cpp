@@ -130,6 +130,9 @@ void Overlay::statistics(ecs::Registry& registry) {
                 stats.shadows.maps_reused, stats.shadows.atlas_size);
   }
   ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
+  const render::GraphMemory targets = renderer.graph().memory();
+  ImGui::Text("render targets: %.1f MiB long-lived, %.1f MiB transient (%.1f unshared)", static_cast<double>(targets.imported_bytes) / (1024.0 * 1024.0),
+              static_cast<double>(targets.aliased_bytes) / (1024.0 * 1024.0), static_cast<double>(targets.transient_bytes) / (1024.0 * 1024.0));
   // Fragments shaded per pixel tell a pass that draws too much (overdraw, a
   // camera inside foliage) from one that shades expensively.
   const bool fragments = renderer.timer().counts_fragments();

@@ -113,7 +113,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},
       {"--warmup", "1"},            {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
-      {"--msaa", "2"},              {"--shadows", "4"}};
+      {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench}) {
     std::istringstream help(help_text(command));
     int options = 0;

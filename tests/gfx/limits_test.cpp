@@ -3,6 +3,7 @@
 // usable, and memory figures print the way refusal messages quote them.
 #include <gmock/gmock.h>
 
+#include "base/format.hpp"
 #include "gfx/limits.hpp"
 #include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
@@ -54,11 +55,12 @@ TEST_F(Limits, RenderAndTextureSizesAreUsable) {
 }
 
 TEST(FormatBytes, PicksTheUnitAUserReads) {
-  EXPECT_EQ(format_bytes(0), "0 B");
-  EXPECT_EQ(format_bytes(1023), "1023 B");
+  EXPECT_EQ(format_bytes(0), "0 bytes");
+  EXPECT_EQ(format_bytes(1023), "1023 bytes");
   EXPECT_EQ(format_bytes(12 * 1024), "12.0 KiB");
   EXPECT_EQ(format_bytes(813'088'000), "775.4 MiB");
-  EXPECT_EQ(format_bytes(std::uint64_t{3} << 29), "1.50 GiB");
+  EXPECT_EQ(format_bytes(static_cast<double>(std::uint64_t{3} << 29)), "1.5 GiB");
+  EXPECT_EQ(with_commas(4'000'000'000), "4,000,000,000");
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <string>
 
+#include "base/format.hpp"
 #include "gfx/limits.hpp"
 
 namespace atrium::lighting {
@@ -17,16 +18,6 @@ struct ListTotal {
   std::uint32_t longest = 0;  // lights in the fullest bin
 };
 static_assert(sizeof(ListTotal) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
-
-std::string with_commas(std::uint64_t n) {
-  const std::string digits = std::to_string(n);
-  std::string grouped;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) grouped += ',';
-    grouped += digits[i];
-  }
-  return grouped;
-}
 
 }  // namespace
 
@@ -60,9 +51,9 @@ void LightIndexList::assign(const std::function<void()>& dispatch, const std::fu
     last_total_ = total.entries;
     if (total.wrapped || total.entries > max_entries_) {
       const std::string entries = total.wrapped ? "more than 4,294,967,295" : with_commas(total.entries);
-      const std::string bytes = total.wrapped ? "over 16 GiB" : gfx::format_bytes(std::uint64_t{total.entries} * sizeof(std::uint32_t));
+      const std::string bytes = total.wrapped ? "over 16 GiB" : format_bytes(static_cast<double>(std::uint64_t{total.entries} * sizeof(std::uint32_t)));
       throw gfx::ResourceLimitError("the light lists need " + entries + " entries (" + bytes + "), more than one storage buffer may hold here (" +
-                                    gfx::format_bytes(max_entries_ * sizeof(std::uint32_t)) +
+                                    format_bytes(static_cast<double>(max_entries_ * sizeof(std::uint32_t))) +
                                     ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights (--lights), smaller ones (--light-radius), "
                                     "fewer clusters (--cluster-grid) or, for tiles, a smaller image (--size)");
     }
