@@ -31,11 +31,6 @@ TextureHandle AssetManager::add_texture(TextureData texture, const std::string& 
   return add_cached(textures_, texture_keys_, std::move(texture), key);
 }
 
-MeshAssetHandle AssetManager::find_mesh_asset(const std::string& key) const {
-  auto it = mesh_keys_.find(key);
-  return it == mesh_keys_.end() ? MeshAssetHandle{} : it->second;
-}
-
 TextureHandle AssetManager::find_texture(const std::string& key) const {
   auto it = texture_keys_.find(key);
   return it == texture_keys_.end() ? TextureHandle{} : it->second;

@@ -36,7 +36,6 @@ class AssetManager {
   MeshAssetHandle add_mesh_asset(MeshAsset asset, const std::string& key = {});
   TextureHandle add_texture(TextureData texture, const std::string& key = {});
 
-  [[nodiscard]] MeshAssetHandle find_mesh_asset(const std::string& key) const;
   [[nodiscard]] TextureHandle find_texture(const std::string& key) const;
 
   [[nodiscard]] const MeshAsset& mesh_asset(MeshAssetHandle handle) const;

@@ -163,7 +163,6 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
         first_index += p.indices.size();
       }
     }
-    buffer_bytes_ += vertex_total * sizeof(Vertex) + index_total * sizeof(std::uint32_t);
 
     gpu.vertex_array = gfx::create_vertex_array();
     const GLuint vao = gpu.vertex_array.id();

@@ -58,7 +58,6 @@ class GpuAssets {
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
   // Shader programs, cached by files and defines.
   [[nodiscard]] gfx::ShaderLibrary& shaders() { return shaders_; }
-  [[nodiscard]] std::size_t buffer_bytes() const { return buffer_bytes_; }
 
  private:
   void make_sampler(const SamplerDesc& desc);
@@ -73,7 +72,6 @@ class GpuAssets {
   std::map<SamplerDesc, gfx::Sampler> samplers_;
   gfx::ShaderLibrary shaders_;
   std::size_t texture_bytes_ = 0;
-  std::size_t buffer_bytes_ = 0;
 };
 
 }  // namespace atrium::assets

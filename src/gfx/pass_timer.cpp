@@ -15,12 +15,6 @@ const char* PassTimer::method_name() const {
   return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer)";
 }
 
-double PassTimer::latest_total() const {
-  double total = 0.0;
-  for (const PassTime& pass : latest_) total += pass.milliseconds;
-  return total;
-}
-
 void PassTimer::begin_frame() {
   if (method_ == TimingMethod::CpuFinish) {
     current_.clear();

@@ -49,8 +49,6 @@ class PassTimer {
   // The most recent frame whose timings are complete (with queries, a few
   // frames old), in pass order; empty until one is.
   [[nodiscard]] const std::vector<PassTime>& latest() const { return latest_; }
-  // That frame's total (sum of its passes).
-  [[nodiscard]] double latest_total() const;
 
   // RAII helper: times a pass for the enclosing scope.
   class Scope {

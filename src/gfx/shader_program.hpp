@@ -25,6 +25,7 @@ class ShaderError : public std::runtime_error {
 struct ShaderDefine {
   std::string name;
   std::string value = "1";
+  bool operator==(const ShaderDefine&) const = default;
 };
 
 // Folders searched for shader files, in order. The default holds one folder:

@@ -318,6 +318,12 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
   for (Resource& r : resources_) {
     if (r.used && !r.imported) r.object = objects[r.slot];
   }
+  // A pass may throw (a frame the driver cannot hold): the pool still ends
+  // the frame, so that its objects are taken again by the next one.
+  struct EndFrame {
+    Pool& pool;
+    ~EndFrame() { pool.end_frame(); }
+  } end_frame{*pool_};
   for (std::size_t p = 0; p < passes_.size(); ++p) {
     if (compiled_[p].culled) continue;
     if (compiled_[p].barriers) glMemoryBarrier(compiled_[p].barriers);
@@ -331,7 +337,6 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
       pass.execute(resources);
     }
   }
-  pool_->end_frame();
 }
 
 std::size_t FrameGraph::pooled_objects() const { return pool_->textures.size() + pool_->buffers.size(); }

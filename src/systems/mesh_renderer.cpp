@@ -15,6 +15,23 @@
 #include "systems/lighting/shading_model.hpp"
 
 namespace atrium {
+namespace {
+
+// The SPLIT_LIGHTING and MSAA_SAMPLES rows of the shader globals: the
+// renderer's light-sum targets and sample count.
+void target_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+  if (inputs.split_lighting) defines.push_back({"SPLIT_LIGHTING"});
+  const int samples = inputs.settings.technique_options.msaa;
+  if (samples > 1) defines.push_back({"MSAA_SAMPLES", std::to_string(samples)});
+}
+
+// Every define shaders are compiled with, each row from the part that needs it
+// (render/shader_globals.hpp), in the order the programs' cache keys list them.
+constexpr render::GlobalDefineRow kGlobalDefines[] = {&lighting::shading_model_defines, &lighting::DebugViews::counting_defines,
+                                                      &lighting::GBuffer::layout_defines, &target_defines,
+                                                      &shadows::ShadowAtlas::shadow_defines};
+
+}  // namespace
 
 MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
@@ -173,26 +190,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
   if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
   const bool counting_lights = debug_view == lighting::kHeatmapView;
   const bool counting_fragments = debug_view == lighting::kFragmentView;
-  const int counting = counting_lights ? 1 : counting_fragments ? 2 : 0;
+  const bool counting = counting_lights || counting_fragments;
   const bool split_lighting = settings.technique_options.split_lighting || debug_view == lighting::kDiffuseLightView ||
                               debug_view == lighting::kSpecularLightView;
-  const bool shadowed = settings.shadows > 0;
-  if (settings.shading != shading_ || counting != counting_ || settings.technique_options != technique_options_ ||
-      split_lighting != split_lighting_ || shadowed != shadowed_) {
-    const int model = lighting::shading_model_index(settings.shading);
-    if (model < 0) throw std::invalid_argument("unknown shading model '" + settings.shading + "'");
-    std::vector<gfx::ShaderDefine> globals{{"SHADING_MODEL", std::to_string(model)}};
-    if (counting_lights) globals.push_back({"COUNT_LIGHTS"});
-    if (counting_fragments) globals.push_back({"COUNT_FRAGMENTS"});
-    if (settings.technique_options.gbuffer_layout == lighting::GBufferLayout::Compact) globals.push_back({"COMPACT_GBUFFER"});
-    if (split_lighting) globals.push_back({"SPLIT_LIGHTING"});
-    if (settings.technique_options.msaa > 1) globals.push_back({"MSAA_SAMPLES", std::to_string(settings.technique_options.msaa)});
-    if (shadowed) globals.push_back({"SHADOWS"});  // the lookup in every light loop (common/shadows.glsl)
-    gpu_.shaders().set_global_defines(std::move(globals));
+  std::vector<gfx::ShaderDefine> globals;
+  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, debug_view, split_lighting}, globals);
+  if (globals != globals_ || settings.technique_options != technique_options_) {
+    gpu_.shaders().set_global_defines(globals);
+    globals_ = std::move(globals);
     tonemap_ = &gpu_.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"});
-    shading_ = settings.shading;
-    counting_ = counting;
-    shadowed_ = shadowed;
     // Every target is remade with the new sample count.
     if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
     technique_options_ = settings.technique_options;

@@ -112,11 +112,9 @@ class MeshRenderer {
 
   glm::ivec2 size_{0};
   std::string mode_;
-  std::string shading_;
   lighting::TechniqueOptions technique_options_;
-  int counting_ = 0;  // what the shaders count: 0 nothing, 1 lights, 2 fragments
-  bool split_lighting_ = false;  // shaders compiled with SPLIT_LIGHTING
-  bool shadowed_ = false;        // shaders compiled with SHADOWS (--shadows above 0)
+  std::vector<gfx::ShaderDefine> globals_;  // what every program is compiled with (render/shader_globals.hpp)
+  bool split_lighting_ = false;  // the light-sum targets exist (shaders compiled with SPLIT_LIGHTING)
   std::unique_ptr<lighting::DebugViews> debug_views_;
   bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;

@@ -21,6 +21,7 @@
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl_object.hpp"
+#include "render/shader_globals.hpp"
 #include "systems/lighting/cluster_grid.hpp"
 #include "systems/lighting/gbuffer.hpp"
 #include "systems/lighting/technique.hpp"
@@ -48,6 +49,12 @@ class DebugViews {
   // to the image unit the technique's counting shaders write (0 for lights, 1
   // for fragments).
   void begin_counting(int view);
+  // The COUNT_LIGHTS and COUNT_FRAGMENTS rows of the shader globals
+  // (render/shader_globals.hpp): the heatmap and fragments views' counters.
+  static void counting_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+    if (inputs.debug_view == kHeatmapView) defines.push_back({"COUNT_LIGHTS"});
+    if (inputs.debug_view == kFragmentView) defines.push_back({"COUNT_FRAGMENTS"});
+  }
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
   // image) after `technique` has drawn the frame; `shadow_atlas` is the
   // frame's shadow atlas texture (0 while shadows are off).

@@ -15,6 +15,7 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_library.hpp"
 #include "gfx/shader_program.hpp"
+#include "render/shader_globals.hpp"
 #include "systems/lighting/sample_rate.hpp"
 #include "systems/lighting/technique.hpp"
 #include "systems/lighting/technique_options.hpp"
@@ -69,6 +70,10 @@ class GBuffer {
   // Bytes per pixel of the targets plus the shared depth-stencil
   // (gfx::kDepthStencilFormat, 8 bytes), from their GL formats.
   [[nodiscard]] static std::size_t bytes_per_pixel(GBufferLayout layout);
+  // The COMPACT_GBUFFER row of the shader globals (render/shader_globals.hpp).
+  static void layout_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+    if (inputs.settings.technique_options.gbuffer_layout == GBufferLayout::Compact) defines.push_back({"COMPACT_GBUFFER"});
+  }
   [[nodiscard]] static std::span<const Target> targets(GBufferLayout layout);
 
  private:

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "render/shader_globals.hpp"
 #include "assets/asset_manager.hpp"
 #include "assets/gpu_assets.hpp"
 #include "components/bounds.hpp"
@@ -50,6 +51,12 @@ struct ShadowStats {
 class ShadowAtlas {
  public:
   static constexpr GLenum kAtlasFormat = GL_DEPTH_COMPONENT32F;
+
+  // The SHADOWS row of the shader globals (render/shader_globals.hpp): the
+  // lookup in every light loop (common/shadows.glsl) while lights have maps.
+  static void shadow_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+    if (inputs.settings.shadows > 0) defines.push_back({"SHADOWS"});
+  }
 
   explicit ShadowAtlas(assets::GpuAssets& gpu);
 
