@@ -1,7 +1,9 @@
-// The MeshRenderer system (Render phase): owns the frame's render targets, the
-// lighting technique selected by RendererSettings::mode, and the tone-mapping
-// pass. Each frame it gathers the draw list, fills the frame uniforms, runs the
-// technique into the HDR target and tone-maps into the 8-bit output target.
+// The MeshRenderer system (Render phase): owns the frame's long-lived render
+// targets, the lighting technique selected by RendererSettings::mode and the
+// frame graph. Each frame it gathers the draw list and fills the frame
+// uniforms, then builds the graph from its contributors (shadow maps, the
+// technique's passes, systems' RenderContributors, tone map, thumbnails,
+// debug view, present), compiles and executes it.
 #pragma once
 
 #include <memory>
