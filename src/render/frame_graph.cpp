@@ -148,7 +148,6 @@ GLuint PassResources::buffer(ResourceId resource) const {
   return r.object;
 }
 
-const TextureDesc& PassResources::texture_desc(ResourceId resource) const { return graph_.resources_.at(resource.index).texture; }
 
 GLuint PassResources::framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const { return graph_.framebuffer(colors, depth); }
 
@@ -180,23 +179,11 @@ ResourceId FrameGraph::create(std::uint32_t pass, Resource resource, Access firs
 }
 
 ResourceId FrameGraph::import_texture(const std::string& name, GLuint texture, const TextureDesc& desc) {
-  Resource resource;
-  resource.name = name;
-  resource.kind = ResourceKind::Texture;
-  resource.texture = desc;
-  resource.imported = true;
-  resource.object = texture;
-  return {add_resource(std::move(resource))};
+  return {add_resource({name, ResourceKind::Texture, desc, {}, true, texture})};
 }
 
 ResourceId FrameGraph::import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc) {
-  Resource resource;
-  resource.name = name;
-  resource.kind = ResourceKind::Buffer;
-  resource.buffer = desc;
-  resource.imported = true;
-  resource.object = buffer;
-  return {add_resource(std::move(resource))};
+  return {add_resource({name, ResourceKind::Buffer, {}, desc, true, buffer})};
 }
 
 void FrameGraph::use(std::uint32_t pass, ResourceId resource, Access access, bool write) {
@@ -223,16 +210,6 @@ void FrameGraph::add_pass(const std::string& name, const Setup& setup, Execute e
 ResourceId FrameGraph::find(const std::string& name) const {
   const auto it = by_name_.find(name);
   return it == by_name_.end() ? ResourceId{} : ResourceId{it->second};
-}
-
-ResourceKind FrameGraph::kind(ResourceId resource) const { return resources_.at(resource.index).kind; }
-
-const std::string& FrameGraph::name(ResourceId resource) const { return resources_.at(resource.index).name; }
-
-std::vector<std::string> FrameGraph::resource_names() const {
-  std::vector<std::string> names;
-  for (const Resource& r : resources_) names.push_back(r.name);
-  return names;
 }
 
 void FrameGraph::compile() {
@@ -305,11 +282,11 @@ void FrameGraph::compile() {
       storage_written[u.resource] = u.access == Access::Storage;
     }
   }
-  compiled_once_ = true;
 }
 
 void FrameGraph::execute(gfx::PassTimer* timer) {
-  if (!compiled_once_ || compiled_.size() != passes_.size()) compile();
+  // reset() empties the compiled passes: a graph not compiled since is now.
+  if (compiled_.size() != passes_.size()) compile();
   // Each slot takes one pooled object; its resources all point at it.
   std::vector<GLuint> objects(slots_.size());
   for (std::size_t s = 0; s < slots_.size(); ++s) {

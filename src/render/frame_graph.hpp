@@ -88,7 +88,6 @@ class PassResources {
  public:
   [[nodiscard]] GLuint texture(ResourceId resource) const;
   [[nodiscard]] GLuint buffer(ResourceId resource) const;
-  [[nodiscard]] const TextureDesc& texture_desc(ResourceId resource) const;
   // A framebuffer with these textures as colour attachments 0.. and `depth`
   // (depth-stencil or depth, by its format; invalid: none), made once and kept
   // while the textures live.
@@ -137,10 +136,6 @@ class FrameGraph {
   void add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed = true);
 
   [[nodiscard]] ResourceId find(const std::string& name) const;
-  [[nodiscard]] ResourceKind kind(ResourceId resource) const;
-  [[nodiscard]] const std::string& name(ResourceId resource) const;
-  // The names of every resource declared so far, in declaration order.
-  [[nodiscard]] std::vector<std::string> resource_names() const;
 
   // Culls, finds lifetimes and plans which transient resources share objects.
   void compile();
@@ -198,7 +193,6 @@ class FrameGraph {
   std::vector<CompiledPass> compiled_;
   GraphMemory memory_;
   mutable std::vector<gfx::Framebuffer> frame_framebuffers_;  // on imported textures: this frame's only
-  bool compiled_once_ = false;
 
   // GL objects kept across frames: per description, a list; a frame takes
   // them in order, and those no frame took for a while are released.
