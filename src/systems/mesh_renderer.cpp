@@ -263,9 +263,10 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const render::ResourceId output = graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
   const render::ResourceId light_resource =
       graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)});
+  std::vector<render::ResourceId> light_sums;
   if (split_lighting_) {
-    graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples});
-    graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples});
+    light_sums = {graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples}),
+                  graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples})};
   }
   const lighting::FrameContext frame{draws,
                                      [&](const lighting::DrawBatches& draw) { draw_first_pass(registry, draw); },
@@ -290,7 +291,10 @@ void MeshRenderer::render(ecs::Registry& registry) {
                     });
   }
   if (counting || split_lighting_) {
-    graph_.add_pass("clear counters", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
+    graph_.add_pass("clear counters", [&](render::PassBuilder& pass) {
+      pass.keep();  // the debug views' counters live outside the graph
+      for (const render::ResourceId sum : light_sums) pass.write(sum, render::Access::Transfer);
+    }, [&](const render::PassResources&) {
       if (counting) debug_views().begin_counting(debug_view);
       if (split_lighting_) {
         // Forward modes leave the sums untouched: they show as no light, not a stale frame.
