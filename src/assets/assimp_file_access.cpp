@@ -1,28 +1,26 @@
 #include "assets/assimp_file_access.hpp"
 
-#include <algorithm>
-#include <fstream>
-#include <memory>
+#include <vector>
 
 #include <assimp/MemoryIOWrapper.h>
 
 #include "assets/fbx_sizes.hpp"
 #include "assets/file_lookup.hpp"
-#include "assets/load_budget.hpp"
 
 namespace atrium::assets {
 namespace {
 
 namespace fs = std::filesystem;
 
-// What a path names when it is not a regular file, in a few words.
-std::string not_a_file(const fs::path& path) {
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (ec || status.type() == fs::file_type::not_found) return "no such file";
-  if (status.type() == fs::file_type::directory) return "a directory";
-  return "not a regular file";
-}
+// A stream over bytes it owns (assimp's MemoryIOStream only borrows them):
+// the holder comes first, so the bytes exist before the stream points at them.
+struct OwnedBytes {
+  std::vector<std::uint8_t> bytes;
+};
+struct OwnedMemoryStream : OwnedBytes, Assimp::MemoryIOStream {
+  explicit OwnedMemoryStream(std::vector<std::uint8_t> data)
+      : OwnedBytes{std::move(data)}, Assimp::MemoryIOStream(bytes.data(), bytes.size(), false) {}
+};
 
 }  // namespace
 
@@ -51,15 +49,7 @@ AssimpFileAccess::Access AssimpFileAccess::resolve(const std::string& asked) con
   if (!fs::is_regular_file(access.read, ec)) {
     access.problem = not_a_file(access.read);
     access.read.clear();
-    return access;
   }
-  const std::uintmax_t size = fs::file_size(access.read, ec);
-  if (ec) {
-    access.problem = "unreadable";
-  } else if (size > limit_) {
-    access.problem = format_bytes(static_cast<double>(size)) + ", more than the memory available, " + format_bytes(static_cast<double>(limit_));
-  }
-  if (!access.problem.empty()) access.read.clear();
   return access;
 }
 
@@ -73,25 +63,17 @@ Assimp::IOStream* AssimpFileAccess::Open(const char* file, const char* mode) {
     access.problem = "opened for writing, which Atrium never does";
     access.read.clear();
   }
-  std::unique_ptr<std::uint8_t[]> bytes;
-  std::size_t size = 0;
+  FileBytes read;
   if (access.problem.empty()) {
-    std::error_code ec;
-    size = static_cast<std::size_t>(fs::file_size(access.read, ec));
-    std::ifstream in(access.read, std::ios::binary);
-    bytes.reset(new std::uint8_t[std::max<std::size_t>(size, 1)]);
-    in.read(reinterpret_cast<char*>(bytes.get()), static_cast<std::streamsize>(size));
-    if (ec || static_cast<std::size_t>(in.gcount()) != size) {
-      access.problem = "unreadable";
-    } else {
-      access.problem = fbx_array_size_problem({bytes.get(), size}, limit_);
-    }
+    read = read_file_within(access.read, limit_);
+    access.problem = read.problem.empty() ? fbx_array_size_problem(read.bytes, limit_) : read.problem;
   }
+  if (!access.problem.empty()) access.read.clear();
   const bool ok = access.problem.empty();
   accesses_.push_back(std::move(access));
   if (!ok) return nullptr;
   // The stream owns the bytes; Close deletes both.
-  return new Assimp::MemoryIOStream(bytes.release(), size, true);
+  return new OwnedMemoryStream(std::move(read.bytes));
 }
 
 void AssimpFileAccess::Close(Assimp::IOStream* stream) { delete stream; }

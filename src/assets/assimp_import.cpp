@@ -4,7 +4,6 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
-#include <fstream>
 #include <iterator>
 #include <map>
 
@@ -391,17 +390,9 @@ class AssimpImporter {
       error = "the file is missing";
       return {};
     }
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(*file, ec);
-    if (ec || size > budget_.limit()) {
-      error = ec ? "the file cannot be read" : "the file has " + format_bytes(static_cast<double>(size)) + ", more than the memory available";
-      return {};
-    }
-    std::ifstream in(*file, std::ios::binary);
-    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(size));
-    in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(size));
-    if (static_cast<std::size_t>(in.gcount()) != bytes.size()) error = "the file cannot be read";
-    return bytes;
+    FileBytes read = read_file_within(*file, budget_.limit());
+    error = std::move(read.problem);
+    return std::move(read.bytes);
   }
 
   void decode_textures(std::vector<Material>& materials) {

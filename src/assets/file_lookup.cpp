@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
+
+#include "assets/load_budget.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -51,6 +54,38 @@ FoundFile find_named_file(const fs::path& folder, const std::string& written) {
     result.how = absolute ? "is an absolute path from another machine"
                  : lower(path) == lower(fs::relative(*result.path, folder, ec).generic_string()) ? "differs in letter case from the file on disk"
                                                                                                   : "is not where the path says";
+  }
+  return result;
+}
+
+std::string not_a_file(const fs::path& path) {
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (ec || status.type() == fs::file_type::not_found) return "no such file";
+  if (status.type() == fs::file_type::directory) return "a directory";
+  return "not a regular file";
+}
+
+FileBytes read_file_within(const fs::path& path, std::size_t limit) {
+  FileBytes result;
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) {
+    result.problem = not_a_file(path);
+    return result;
+  }
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) {
+    result.problem = "unreadable";
+  } else if (size > limit) {
+    result.problem = format_bytes(static_cast<double>(size)) + ", more than the memory available, " + format_bytes(static_cast<double>(limit));
+  }
+  if (!result.problem.empty()) return result;
+  std::ifstream in(path, std::ios::binary);
+  result.bytes.resize(static_cast<std::size_t>(size));
+  in.read(reinterpret_cast<char*>(result.bytes.data()), static_cast<std::streamsize>(size));
+  if (static_cast<std::size_t>(in.gcount()) != result.bytes.size()) {
+    result.bytes.clear();
+    result.problem = "unreadable";
   }
   return result;
 }

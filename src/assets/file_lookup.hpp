@@ -1,13 +1,17 @@
 // Finds the files a model names (textures, material libraries, external
 // parts) the way exporters write their paths: Windows separators, another
 // letter case than on disk, absolute paths from the author's machine (looked up
-// beside the model and in the folders below it). Every importer that opens a
-// file a model names goes through here, so they all agree on what is found.
+// beside the model and in the folders below it), and reads them whole within
+// the load budget. Every importer that opens a file a model names goes through
+// here, so they all agree on what is found and what is refused.
 #pragma once
 
+#include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace atrium::assets {
 
@@ -21,5 +25,17 @@ struct FoundFile {
 // `written` as the model wrote it, relative to `folder` (the model's folder)
 // unless absolute.
 [[nodiscard]] FoundFile find_named_file(const std::filesystem::path& folder, const std::string& written);
+
+// What a path names when it is not a regular file, in a few words: "no such
+// file", "a directory", "not a regular file".
+[[nodiscard]] std::string not_a_file(const std::filesystem::path& path);
+
+// A file's bytes, read whole; `problem` empty, or why nothing was read ("no
+// such file", "unreadable", "3.0 GiB, more than the memory available, 2.0 GiB").
+struct FileBytes {
+  std::vector<std::uint8_t> bytes;
+  std::string problem;
+};
+[[nodiscard]] FileBytes read_file_within(const std::filesystem::path& path, std::size_t limit);
 
 }  // namespace atrium::assets
