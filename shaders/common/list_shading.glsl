@@ -7,12 +7,18 @@
 #include "shading.glsl"
 #include "light_lists.glsl"
 
-// The sum of the lights in `range`, read up to `capacity` entries of the
-// global list (the unlit terms are the caller's).
+// The sum of the lights in `range` (the unlit terms are the caller's). A
+// range that ends past the list's `capacity` did not fit this frame (the list
+// grows for the next one, LightIndexList): its pixels add every light that
+// reaches them instead, the same sum, only slower.
 LightSum shade_listed_lights(Surface s, LightRange range, uint capacity) {
   vec3 v = normalize(u_camera_position.xyz - s.position);
   LightSum sum = no_light();
-  uint end = min(range.offset + range.count, capacity);
+  if (range.count > capacity || range.offset > capacity - range.count) {
+    add_buffer_lights_culled(sum, s, v, true);
+    return sum;
+  }
+  uint end = range.offset + range.count;
   uint i = range.offset;
   for (; i < end && has_shadow_maps(u_lights[u_light_indices[i]]); ++i) add_light_as(sum, s, v, u_lights[u_light_indices[i]], true);
   for (; i < end; ++i) add_light_as(sum, s, v, u_lights[u_light_indices[i]], false);

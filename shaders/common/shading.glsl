@@ -121,23 +121,29 @@ const bool kShadowedLights = false;
 // cost every light: GPU lanes diverge, and llvmpipe runs both sides of a
 // branch for its group of pixels.
 
-// Adds every light in the buffer to `sum`; with LIGHT_RADIUS_CULL (mode
-// deferred-radius) those that cannot reach `s` are skipped unevaluated.
-void add_buffer_lights(inout LightSum sum, Surface s, vec3 v) {
+// Adds every light in the buffer to `sum`; with `radius_cull` those that
+// cannot reach `s` are skipped unevaluated (the same sum: a light adds nothing
+// beyond its radius).
+void add_buffer_lights_culled(inout LightSum sum, Surface s, vec3 v, bool radius_cull) {
   uint i = 0u;
   for (; i < u_light_count && has_shadow_maps(u_lights[i]); ++i) {
-#ifdef LIGHT_RADIUS_CULL
-    if (!light_reaches(u_lights[i], s.position)) continue;
-#endif
+    if (radius_cull && !light_reaches(u_lights[i], s.position)) continue;
     add_light_as(sum, s, v, u_lights[i], true);
   }
   for (; i < u_light_count; ++i) {
-#ifdef LIGHT_RADIUS_CULL
-    if (!light_reaches(u_lights[i], s.position)) continue;
-#endif
+    if (radius_cull && !light_reaches(u_lights[i], s.position)) continue;
     add_light_as(sum, s, v, u_lights[i], false);
   }
 }
+
+// Every light in the buffer; LIGHT_RADIUS_CULL (mode deferred-radius) skips
+// those that cannot reach `s`.
+#ifdef LIGHT_RADIUS_CULL
+const bool kLightRadiusCull = true;
+#else
+const bool kLightRadiusCull = false;
+#endif
+void add_buffer_lights(inout LightSum sum, Surface s, vec3 v) { add_buffer_lights_culled(sum, s, v, kLightRadiusCull); }
 
 vec3 shade_unlit_terms(Surface s, vec3 ambient) {
   return ambient * s.albedo * s.occlusion + s.emissive;

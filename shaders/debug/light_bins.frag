@@ -2,7 +2,7 @@
 // Debug views of the tiled and clustered modes' binning, from the depth buffer
 // and the technique's light lists: LIGHT_BINS 1 colours each pixel by the light
 // count of its tile, 2 by that of its cluster (black for none, magenta for a bin
-// that did not fit this frame's first list and was filled after it grew);
+// that did not fit this frame's list, whose pixels shaded every light);
 // DEPTH_SLICES colours each pixel by its cluster depth slice.
 #include "common/frame.glsl"
 #include "common/colour_map.glsl"
@@ -13,7 +13,7 @@ layout(binding = 5) uniform target2D u_depth;  // with MSAA: sample 0
 uniform uvec2 u_tiles;
 uniform uint u_tile_size;
 uniform float u_scale_max;
-uniform uint u_overflow_capacity;  // the list's size before it grew this frame; 0 if it did not
+uniform uint u_list_capacity;  // entries this frame's list holds (LightIndexList::capacity)
 
 layout(location = 0) out vec4 out_color;
 
@@ -31,7 +31,7 @@ void main() {
 #else
   LightRange range = u_light_ranges[cluster_index(gl_FragCoord.xy, u_viewport_size, view_depth)];
 #endif
-  bool overflowed = u_overflow_capacity != 0u && range.offset + range.count > u_overflow_capacity;
+  bool overflowed = range.count > u_list_capacity || range.offset > u_list_capacity - range.count;
   vec3 color = overflowed ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
 #endif
   // The background reads no list; it is drawn dimmed grey to set it apart.

@@ -9,15 +9,32 @@
 #include <sstream>
 
 #include "app/world.hpp"
+#include "base/format.hpp"
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "gfx/gl.hpp"
+#include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 #include "systems/lighting/light_falloff.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
 namespace {
+
+// A mode is skipped at a light count where its frame, grown linearly from a
+// smaller count, would take this many times the frame limit.
+constexpr double kEstimateFactor = 4.0;
+constexpr double kFirstFrameFactor = 10.0;
+
+// NaN (a refused row, an uncountable value) prints as "-".
+std::string fixed(double value, int decimals) {
+  if (std::isnan(value)) return "-";
+  std::ostringstream out;
+  out.setf(std::ios::fixed);
+  out.precision(decimals);
+  out << value;
+  return out.str();
+}
 
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0.0;
@@ -55,8 +72,12 @@ double count_evaluations(World& world, const std::string& mode) {
   return count;
 }
 
-// Frame and pass times of `mode` from the world's current camera.
-BenchRow measure_mode(World& world, const std::string& mode, int frames, int warmup, double reaching) {
+// Frame and pass times of `mode` from the world's current camera. A frame
+// slower than `frame_limit_ms` ends the run after it (the row keeps that one
+// frame), so one slow mode cannot hold the whole sweep. The first frame gets
+// kFirstFrameFactor times the limit: it compiles the mode's programs and may
+// draw every shadow map.
+BenchRow measure_mode(World& world, const std::string& mode, int frames, int warmup, double reaching, double frame_limit_ms) {
   world.set_mode(mode);
   BenchRow row;
   row.mode = mode;
@@ -66,38 +87,46 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.view = world.view();
   row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
   row.reaching_per_pixel = reaching;
-  std::vector<double> frame_ms;
+  std::vector<double> frame_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
   auto slices_depth = [&] {
     const lighting::LightingTechnique* technique = world.renderer().technique();
     return technique && technique->bind_light_bins().binning == lighting::LightingTechnique::Binning::Clusters;
   };
-  for (int f = 0; f < warmup + frames; ++f) {
-    glFinish();
+  bool over_limit = false;
+  for (int f = 0; f < warmup + frames && !over_limit; ++f) {
+    gfx::finish();
     const auto start = std::chrono::steady_clock::now();
     try {
       world.frame(1.0 / 60.0);
     } catch (const gfx::ResourceLimitError& e) {
       row.refused = e.what();
       row.sliced = slices_depth();
-      row.median_ms = row.p5_ms = row.p95_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+      row.median_ms = row.p5_ms = row.p95_ms = row.gpu_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
       return row;
     }
-    glFinish();
+    gfx::finish();
     const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    if (f < warmup) continue;
+    over_limit = ms > (f == 0 ? kFirstFrameFactor : 1.0) * frame_limit_ms;
+    if (f < warmup && !over_limit) continue;
+    if (over_limit) row.stopped = "one frame took " + fixed(ms, 0) + " ms, over the " + fixed(frame_limit_ms, 0) + " ms limit";
     frame_ms.push_back(ms);
+    row.gpu_waits = std::max(row.gpu_waits, world.renderer().stats().gpu_waits);
+    double frame_gpu_ms = 0.0;
     for (const gfx::PassTime& pass : world.renderer().timer().latest()) {
       if (!pass_ms.contains(pass.name)) pass_order.push_back(pass.name);
       pass_ms[pass.name].push_back(pass.milliseconds);
       pass_cpu_ms[pass.name].push_back(pass.cpu_milliseconds);
+      frame_gpu_ms += pass.milliseconds;
     }
+    gpu_ms.push_back(frame_gpu_ms);
   }
   row.sliced = slices_depth();
   row.median_ms = percentile(frame_ms, 0.5);
   row.p5_ms = percentile(frame_ms, 0.05);
   row.p95_ms = percentile(frame_ms, 0.95);
+  row.gpu_ms = percentile(gpu_ms, 0.5);
   // The camera holds still: every measured frame submits the same draws.
   row.triangles_drawn = world.renderer().stats().triangles_drawn;
   row.triangles_occluded = world.renderer().stats().triangles_occluded;
@@ -105,8 +134,30 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   for (const std::string& name : pass_order) {
     row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5)});
   }
-  row.evaluated_per_pixel = count_evaluations(world, mode);
+  // Counting costs one more frame: not for a mode already over the limit.
+  row.evaluated_per_pixel = over_limit ? std::numeric_limits<double>::quiet_NaN() : count_evaluations(world, mode);
   return row;
+}
+
+// Why `mode` is not measured at `lights` after the rows measured so far (empty:
+// measure it): a frame at a smaller count passed the limit, or would at this
+// count if its time grew with the lights (the linear cost of forward shading).
+std::string skip_reason(const std::vector<BenchRow>& rows, const std::string& mode, std::uint32_t lights, int shadows, double frame_limit_ms) {
+  for (auto row = rows.rbegin(); row != rows.rend(); ++row) {
+    if (row->mode != mode || row->shadows != shadows || row->lights >= lights || !row->skipped.empty()) continue;
+    if (!row->refused.empty()) return "refused at " + with_commas(row->lights) + " lights";
+    const double estimate = row->median_ms * static_cast<double>(lights) / std::max(1.0, static_cast<double>(row->lights));
+    if (row->median_ms > frame_limit_ms) {
+      return "a frame took " + fixed(row->median_ms, 0) + " ms at " + with_commas(row->lights) + " lights, over the " + fixed(frame_limit_ms, 0) +
+             " ms limit";
+    }
+    if (estimate > kEstimateFactor * frame_limit_ms) {
+      return fixed(row->median_ms, 0) + " ms at " + with_commas(row->lights) + " lights would be about " + fixed(estimate, 0) +
+             " ms here, over " + fixed(kEstimateFactor, 0) + "x the " + fixed(frame_limit_ms, 0) + " ms limit";
+    }
+    return {};
+  }
+  return {};
 }
 
 void describe_renderer(BenchResult& result, World& world) {
@@ -129,7 +180,7 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   const std::string previous = world.mode();
   const double reaching = count_evaluations(world, "deferred-radius");
   for (const std::string& mode : lighting::mode_names()) {
-    result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching));
+    result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching, BenchOptions{}.frame_limit_ms));
     result.rows.back().view_name = "current camera";
   }
   describe_renderer(result, world);
@@ -137,56 +188,79 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   return result;
 }
 
-BenchResult run_bench(const BenchOptions& options, const std::function<void(std::size_t, std::size_t)>& progress) {
+BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress) {
   BenchResult result;
   result.options = options;
   const std::vector<std::string> modes = options.modes.empty() ? lighting::mode_names() : options.modes;
   const std::vector<lighting::ZSlicing> slicings =
       options.z_slicings.empty() ? std::vector{options.technique_options.z_slicing} : options.z_slicings;
   const std::vector<int> shadow_counts = options.shadow_counts.empty() ? std::vector{0} : options.shadow_counts;
-  const std::size_t total = options.light_counts.size() * modes.size() * slicings.size() * shadow_counts.size() *
-                            std::max<std::size_t>(options.views.size(), 1);
+  std::vector<std::uint32_t> light_counts = options.light_counts;
+  std::sort(light_counts.begin(), light_counts.end());  // skipping learns from the smaller counts
+  WorldOptions world_options;
+  world_options.scene = options.scene;
+  world_options.lights = light_counts.empty() ? 0 : light_counts.front();
+  world_options.mode = "forward";
+  world_options.size = options.size;
+  world_options.shading = options.shading;
+  world_options.technique_options = options.technique_options;
+  world_options.light_radius = bench_radius(options, world_options.lights.value_or(0));
+  world_options.camera = options.camera;
+  world_options.frustum_culling = options.frustum_culling;
+  world_options.occlusion_culling = options.occlusion_culling;
+  // One world for the sweep: the scene loads once, and each count replaces
+  // the lights as a world made with that count would have them.
+  World world(world_options);
+  std::vector<int> views = options.views;
+  if (views.empty()) {
+    for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
+  }
+  const std::size_t total = light_counts.size() * modes.size() * slicings.size() * shadow_counts.size() * views.size();
   std::size_t done = 0;
-  for (const std::uint32_t lights : options.light_counts) {
-    WorldOptions world_options;
-    world_options.scene = options.scene;
-    world_options.lights = lights;
-    world_options.mode = "forward";
-    world_options.size = options.size;
-    world_options.shading = options.shading;
-    world_options.technique_options = options.technique_options;
-    world_options.light_radius = bench_radius(options, lights);
-    world_options.camera = options.camera;
-    world_options.frustum_culling = options.frustum_culling;
-    world_options.occlusion_culling = options.occlusion_culling;
-    World world(world_options);
-    std::vector<int> views = options.views;
-    if (views.empty()) {
-      for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
-    }
+  auto& settings = world.registry().resource<RendererSettings>();
+  settings.redraw_shadows = options.shadow_redraw;
+  for (const std::uint32_t lights : light_counts) {
+    if (lights != world.light_count()) world.set_light_count(lights);
+    if (options.light_radius || options.constant_density) world.set_light_radius(bench_radius(options, lights));
     for (const int view : views) {
       world.set_view(view);
       // deferred-radius evaluates exactly the lights whose radius covers a pixel.
       const double reaching = count_evaluations(world, "deferred-radius");
-      // Modes that do not slice depth are measured once, with the first slicing.
-      auto& settings = world.registry().resource<RendererSettings>();
-      settings.redraw_shadows = options.shadow_redraw;
       for (const int shadows : shadow_counts) {
         settings.shadows = shadows;
+        // Modes that do not slice depth are measured once, with the first slicing.
         std::vector<std::string> to_measure = modes;
         for (const lighting::ZSlicing slicing : slicings) {
           settings.technique_options.z_slicing = slicing;
           for (const std::string& mode : modes) {
-            const bool measure = std::find(to_measure.begin(), to_measure.end(), mode) != to_measure.end();
-            if (measure) result.rows.push_back(measure_mode(world, mode, options.frames, options.warmup, reaching));
-            if (measure && !result.rows.back().sliced) std::erase(to_measure, mode);
-            if (progress) progress(++done, total);
+            if (std::find(to_measure.begin(), to_measure.end(), mode) == to_measure.end()) {
+              done += 1;
+              continue;
+            }
+            BenchRow row;
+            const std::string skipped = skip_reason(result.rows, mode, lights, shadows, options.frame_limit_ms);
+            if (skipped.empty()) {
+              row = measure_mode(world, mode, options.frames, options.warmup, reaching, options.frame_limit_ms);
+            } else {
+              row.mode = mode;
+              row.lights = lights;
+              row.view = view;
+              row.view_name = world.scene().views[static_cast<std::size_t>(view - 1)].name;
+              row.shadows = shadows;
+              row.z_slicing = slicing;
+              row.skipped = skipped;
+              row.median_ms = row.p5_ms = row.p95_ms = row.gpu_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+              row.reaching_per_pixel = reaching;
+            }
+            if (!row.sliced) std::erase(to_measure, mode);
+            result.rows.push_back(std::move(row));
+            if (progress) progress(++done, total, result.rows.back());
           }
         }
       }
     }
-    describe_renderer(result, world);
   }
+  describe_renderer(result, world);
   return result;
 }
 
@@ -203,12 +277,12 @@ std::string label(const BenchResult& result, const BenchRow& row) {
   return name;
 }
 
-// Median over views of each (lights, label) frame time; NaN where every view was refused.
+// Median over views of each (lights, label) frame time; NaN where every view was refused or skipped.
 std::map<std::pair<std::uint32_t, std::string>, double> median_over_views(const BenchResult& result) {
   std::map<std::pair<std::uint32_t, std::string>, std::vector<double>> times;
   for (const BenchRow& row : result.rows) {
     auto& values = times[{row.lights, label(result, row)}];
-    if (row.refused.empty()) values.push_back(row.median_ms);
+    if (!std::isnan(row.median_ms)) values.push_back(row.median_ms);
   }
   std::map<std::pair<std::uint32_t, std::string>, double> medians;
   for (const auto& [key, values] : times) medians[key] = values.empty() ? std::numeric_limits<double>::quiet_NaN() : percentile(values, 0.5);
@@ -222,16 +296,6 @@ std::vector<std::string> modes_in_order(const BenchResult& result) {
     if (std::find(modes.begin(), modes.end(), name) == modes.end()) modes.push_back(name);
   }
   return modes;
-}
-
-// NaN (a refused row, an uncountable value) prints as "-".
-std::string fixed(double value, int decimals) {
-  if (std::isnan(value)) return "-";
-  std::ostringstream out;
-  out.setf(std::ios::fixed);
-  out.precision(decimals);
-  out << value;
-  return out.str();
 }
 
 }  // namespace
@@ -263,7 +327,7 @@ std::string bench_markdown(const BenchResult& result) {
     md << "| " << lights << " |";
     for (const auto& mode : modes) {
       const double ms = medians.at({lights, mode});
-      md << " " << (std::isnan(ms) ? std::string("refused") : fixed(1000.0 / ms, 1) + " fps") << " |";
+      md << " " << (std::isnan(ms) ? std::string("-") : fixed(1000.0 / ms, 1) + " fps") << " |";
     }
     md << "\n";
   }
@@ -282,17 +346,22 @@ std::string bench_markdown(const BenchResult& result) {
       md << "\n";
     }
   }
-  md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image):\n\n"
-        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws |\n"
-        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|\n";
+  md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image; "
+        "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
+        "in one frame that could wait for the GPU):\n\n"
+        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits |\n"
+        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
     if (!row.refused.empty()) passes = "refused: " + row.refused;
+    if (!row.skipped.empty()) passes = "skipped: " + row.skipped;
+    if (!row.stopped.empty()) passes = "stopped: " + row.stopped + "; " + passes;
     md << "| " << label(result, row) << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
-       << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " |\n";
+       << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " | " << fixed(row.gpu_ms, 2) << " | "
+       << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " |\n";
   }
   return md.str();
 }
@@ -301,7 +370,7 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -316,7 +385,9 @@ std::string bench_csv(const BenchResult& result) {
         << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
         << row.draw_calls << ",\"" << cpu_passes << "\","
         << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
-        << row.shadows << "," << row.triangles_occluded << "\n";
+        << row.shadows << "," << row.triangles_occluded << "," << fixed(row.gpu_ms, 4) << ","
+        << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
+        << "\"\n";
   }
   return csv.str();
 }

@@ -39,6 +39,9 @@ struct BenchOptions {
   // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame
+  // --frame-limit: a run stops after a frame slower than this, and a mode is
+  // skipped at the larger light counts that would pass it (BenchRow::skipped).
+  double frame_limit_ms = 1000.0;
 };
 
 struct BenchRow {
@@ -52,6 +55,10 @@ struct BenchRow {
   int view = 1;
   std::string view_name;
   double median_ms = 0, p5_ms = 0, p95_ms = 0;
+  double gpu_ms = 0;  // median over frames of the passes' summed times (GPU time with timer queries)
+  // The most calls that could wait for the GPU in one measured frame
+  // (FrameStats::gpu_waits): 0 in a frame that never stalls the GPU.
+  std::uint32_t gpu_waits = 0;
   std::vector<gfx::PassTime> pass_medians;  // GPU and CPU (submission) medians per pass
   std::size_t triangles_drawn = 0;  // per geometry pass, after frustum and occlusion culling
   std::size_t triangles_occluded = 0;  // in view, but left out as hidden (occlusion culling)
@@ -61,6 +68,11 @@ struct BenchRow {
   // Why the driver refused this mode at this light count (gfx::ResourceLimitError),
   // or empty; a refused row has no times.
   std::string refused;
+  // Why this run was not measured (a smaller light count passed the frame
+  // limit), or empty; a skipped row has no times.
+  std::string skipped;
+  // Set when the run stopped after one frame over the limit (its times are that frame's).
+  std::string stopped;
   [[nodiscard]] double fps() const { return median_ms > 0 ? 1000.0 / median_ms : std::numeric_limits<double>::quiet_NaN(); }
   // 1.0: the mode evaluates only lights that reach; lower: wasted evaluations.
   // NaN where either count is unknown (a refused mode).
@@ -77,9 +89,11 @@ struct BenchResult {
   BenchOptions options;
 };
 
-// Needs a current GL context. Reports progress to `progress` (may be empty).
-[[nodiscard]] BenchResult run_bench(const BenchOptions& options,
-                                    const std::function<void(std::size_t done, std::size_t total)>& progress = {});
+// Called after each run with the runs done, the runs in all and the row just added.
+using BenchProgress = std::function<void(std::size_t done, std::size_t total, const BenchRow& row)>;
+
+// Needs a current GL context. Reports each run to `progress` (may be empty).
+[[nodiscard]] BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress = {});
 
 class World;
 // Every mode from the world's current camera, at its light count and size

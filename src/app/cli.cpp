@@ -9,7 +9,6 @@
 #include <vector>
 
 #include "app/info.hpp"
-#include "app/progress_bar.hpp"
 #include "app/world.hpp"
 #include "components/frame_resources.hpp"
 #include "assets/image.hpp"
@@ -38,8 +37,12 @@ int run_render(const CliOptions& options) {
   World world(world_options(options));
   world.frame(0.0);
   // The first frame sizes the light lists (and shows them as overflowed);
-  // the light-lists view is meant to show them as they settle.
-  if (options.debug_view == "light-lists") world.frame(0.0);
+  // the light-lists view is meant to show them as they settle, once the
+  // first frame's total has come back.
+  if (options.debug_view == "light-lists") {
+    world.renderer().settle();
+    world.frame(0.0);
+  }
   assets::write_png(out, world.renderer().read_output());
   const FrameStats& stats = world.renderer().stats();
   std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles drawn of %zu in %zu draws, %s)\n",
@@ -52,6 +55,7 @@ int run_render(const CliOptions& options) {
   if (options.debug_view == "fragments") {
     std::printf("fragments rasterised per pixel by the geometry passes: %.2f on average\n", stats.fragments_per_pixel);
   }
+  world.renderer().settle();
   if (world.renderer().timer().counts_fragments()) {
     // The frame's fragments per pass: overdraw and expensive cameras show here.
     std::string passes;
@@ -74,7 +78,7 @@ int run_render(const CliOptions& options) {
                 stats.shadows.atlas_size, stats.shadows.atlas_size);
   }
   if (stats.light_list_entries > 0) {
-    std::printf("light lists: %u entries, %u overflowed frames (the list grew and was filled again)\n",
+    std::printf("light lists: %u entries, %u overflowed frames (their overflowed bins shaded every light; the list grew)\n",
                 stats.light_list_entries, stats.light_list_overflows);
   }
   return kExitOk;
@@ -87,7 +91,8 @@ int run_info(const CliOptions& options) {
   WorldOptions loaded = world_options(options);
   loaded.size = {16, 16};  // info renders nothing worth a large target
   World world(loaded);
-  const SceneInfo info = gather_info(world, options.scene);
+  SceneInfo info = gather_info(world, options.scene);
+  info.gl = context->info();
   std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);
   return kExitOk;
 }
@@ -155,8 +160,18 @@ int run_bench_command(const CliOptions& options) {
   bench.frustum_culling = options.frustum_culling;
   bench.occlusion_culling = options.occlusion_culling;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
-  ProgressBar bar("bench");
-  const BenchResult result = run_bench(bench, [&](std::size_t done, std::size_t total) { bar.update("runs", done, total); });
+  // One line per run on stderr: a long sweep (a GPU kit run) shows where it is.
+  const BenchResult result = run_bench(bench, [](std::size_t done, std::size_t total, const BenchRow& row) {
+    std::string outcome = row.refused.empty() ? "" : "refused";
+    if (!row.skipped.empty()) outcome = "skipped: " + row.skipped;
+    if (outcome.empty()) {
+      char time[32];
+      std::snprintf(time, sizeof time, "%.2f ms", row.median_ms);
+      outcome = time + (", " + std::to_string(row.gpu_waits) + " GPU waits");
+      if (!row.stopped.empty()) outcome += " (stopped: " + row.stopped + ")";
+    }
+    std::fprintf(stderr, "bench %zu/%zu: %s, %u lights, view %d: %s\n", done, total, row.mode.c_str(), row.lights, row.view, outcome.c_str());
+  });
   const std::string md = bench_markdown(result);
   std::fputs(md.c_str(), stdout);
   if (!options.md.empty()) write_text(options.md, md);

@@ -14,6 +14,7 @@
 
 #include "app/bench.hpp"
 #include "app/world.hpp"
+#include "components/light.hpp"
 #include "systems/lighting/technique_options.hpp"
 
 namespace atrium {
@@ -21,7 +22,6 @@ namespace atrium {
 inline constexpr int kExitOk = 0;
 inline constexpr int kExitRuntimeFailure = 1;
 inline constexpr int kExitUsage = 2;
-inline constexpr std::uint32_t kMaxLights = 1'000'000;
 inline constexpr int kMaxImageSide = 16384;
 // `atrium compare` fails when any mode's image is further than this from forward's.
 inline constexpr double kMinimumPsnr = 40.0;

@@ -137,6 +137,10 @@ const std::vector<OptionSpec>& option_table() {
       {"--frames", "N", kWindow, "quit after N frames (for scripted runs)"},
       {"--frames", "N", kBench, "frames measured per run (default 30)"},
       {"--warmup", "N", kBench, "frames drawn before measuring each run (default 5)"},
+      {"--frame-limit", "MS", kBench,
+       "a run stops after a frame slower than MS milliseconds (10x MS for its first frame, which compiles programs), "
+       "and the mode is skipped at larger light counts that pass it, or that would pass 4x MS if its time grew with "
+       "the lights (default 1000, in whole milliseconds; the table says why)"},
       {"--modes", "all|LIST", kBench, "the modes to measure (default all)"},
       {"--views", "all|LIST", kBench, "the stored views to measure from (default all)"},
       {"--constant-density", "", kBench, "shrink the light radius as the light count grows, keeping lights per pixel level"},
@@ -313,6 +317,8 @@ bool apply_bench_option(std::string_view name, std::string_view value, CliOption
     bench.frames = parse_number<int>("--frames", value, 1, 100000);
   } else if (name == "--warmup") {
     bench.warmup = parse_number<int>("--warmup", value, 0, 100000);
+  } else if (name == "--frame-limit") {
+    bench.frame_limit_ms = parse_number<int>("--frame-limit", value, 1, 10000000);
   } else if (name == "--constant-density") {
     bench.constant_density = true;
   } else if (name == "--csv") {

@@ -77,14 +77,16 @@ std::string format_info_text(const SceneInfo& i) {
                 "lights       %zu: %zu point, %zu spot, %zu directional\n"
                 "bounds       %s\n"
                 "load time    parse %.3f s, decode %.3f s, upload %.3f s\n"
-                "warnings     %zu\n",
+                "warnings     %zu\n"
+                "gl           %s (%s), OpenGL %s, %s\n",
                 i.scene.c_str(), i.entities, i.mesh_instances, i.point_lights + i.spot_lights + i.directional_lights,
                 i.mesh_assets, i.meshes, i.primitives, i.vertices, i.triangles, i.meshlets, i.meshlet_primitives,
                 i.materials_opaque + i.materials_mask + i.materials_blend, i.materials_opaque, i.materials_mask,
                 i.materials_blend, i.textures, static_cast<double>(i.texture_bytes) / (1024.0 * 1024.0),
                 i.point_lights + i.spot_lights + i.directional_lights, i.point_lights, i.spot_lights, i.directional_lights,
                 bounds,
-                i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings);
+                i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings, i.gl.renderer.c_str(), i.gl.vendor.c_str(),
+                i.gl.version.c_str(), i.gl.platform.c_str());
   return buffer;
 }
 
@@ -109,7 +111,8 @@ std::string format_info_json(const SceneInfo& i) {
                            : nlohmann::json{{"min", {i.bounds_min.x, i.bounds_min.y, i.bounds_min.z}},
                                             {"max", {i.bounds_max.x, i.bounds_max.y, i.bounds_max.z}}}},
       {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
-      {"warnings", i.warnings}};
+      {"warnings", i.warnings},
+      {"gl", {{"renderer", i.gl.renderer}, {"vendor", i.gl.vendor}, {"version", i.gl.version}, {"platform", i.gl.platform}}}};
   return j.dump(2) + "\n";
 }
 

@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include "app/world.hpp"
+#include "gfx/context.hpp"
 
 namespace atrium {
 
@@ -22,6 +23,7 @@ struct SceneInfo {
   glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // meaningless when empty()
   double parse_seconds = 0, decode_seconds = 0, upload_seconds = 0;
   std::size_t warnings = 0;
+  gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
 
   // Nothing to draw: no instance, or instances without triangles.
   [[nodiscard]] bool empty() const { return triangles == 0; }

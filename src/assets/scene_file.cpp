@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/builtin_scene.hpp"
+#include "components/light.hpp"
 
 
 namespace atrium::assets {
@@ -145,7 +146,8 @@ SceneLight read_light(const Reader& r, const json& j, const std::string& p, cons
 LightGenerator read_generator(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
   r.only_keys(j, p, {"count", "seed", "box", "color", "intensity", "radius"});
   LightGenerator g;
-  g.count = static_cast<std::uint32_t>(r.number(r.member(j, p, "count"), p + "/count", 0, 1'000'000, "a whole number from 0 to 1000000"));
+  g.count = static_cast<std::uint32_t>(r.number(r.member(j, p, "count"), p + "/count", 0, kMaxLights,
+                                                  ("a whole number from 0 to " + std::to_string(kMaxLights)).c_str()));
   if (j.contains("seed")) g.seed = static_cast<std::uint32_t>(r.number(j["seed"], p + "/seed", 0, 4294967295.0, "a whole number"));
   if (!j.contains("box") || (j["box"].is_string() && j["box"] == "bounds")) {
     g.box_min = scene.bounds_min;

@@ -4,9 +4,15 @@
 // DirectionalLight component changes the kind.
 #pragma once
 
+#include <cstdint>
+
 #include <glm/glm.hpp>
 
 namespace atrium {
+
+// The most lights a world holds (command line, scene files, the window): 2^20,
+// the "million lights" that light-culling papers measure.
+inline constexpr std::uint32_t kMaxLights = 1u << 20;
 
 struct LightColor {
   glm::vec3 color{1.0f};  // linear RGB, brightest channel usually 1

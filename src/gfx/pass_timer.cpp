@@ -1,5 +1,6 @@
 #include "gfx/pass_timer.hpp"
 
+#include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 
 namespace atrium::gfx {
@@ -26,6 +27,7 @@ void PassTimer::begin_frame() {
     // Still not available after kFramesInFlight frames: wait rather than lose it.
     for (std::size_t i = 0; i < frame.used; ++i) {
       GLuint64 ignored = 0;
+      count_gpu_wait();
       glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &ignored);
     }
     collect();
@@ -80,6 +82,18 @@ void PassTimer::end_pass() {
   frame.passes[frame.used - 1].cpu_milliseconds = cpu_milliseconds;
   glEndQuery(GL_TIME_ELAPSED);
   if (counts_fragments_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
+}
+
+void PassTimer::wait_for_latest() {
+  if (method_ == TimingMethod::CpuFinish || frame_ == 0) return;
+  const FrameQueries& newest = frames_[(frame_ - 1) % kFramesInFlight];
+  if (!newest.pending) return;
+  // Queries finish in submission order: once the newest frame's last one has
+  // its result, every pending frame's queries have theirs.
+  count_gpu_wait();
+  GLuint64 ignored = 0;
+  glGetQueryObjectui64v(newest.passes[newest.used - 1].query.id(), GL_QUERY_RESULT, &ignored);
+  collect();
 }
 
 // Reads back the oldest pending frame whose queries are all available.

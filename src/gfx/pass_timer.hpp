@@ -50,6 +50,11 @@ class PassTimer {
   // frames old), in pass order; empty until one is.
   [[nodiscard]] const std::vector<PassTime>& latest() const { return latest_; }
 
+  // Waits until the latest frame's timings are complete and makes them
+  // latest(): for one-shot commands after their last frame (a counted GPU
+  // wait, outside any frame).
+  void wait_for_latest();
+
   // RAII helper: times a pass for the enclosing scope.
   class Scope {
    public:

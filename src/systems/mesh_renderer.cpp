@@ -7,6 +7,7 @@
 #include "components/frame_resources.hpp"
 #include "components/visibility.hpp"
 #include "gfx/depth.hpp"
+#include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 #include "render/contributors.hpp"
 #include "systems/light_buffer.hpp"
@@ -184,6 +185,7 @@ void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::Draw
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
+  const std::uint64_t waits_at_start = gfx::gpu_waits();
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
   const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
@@ -352,6 +354,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
   timer_.begin_frame();
   try {
     graph_.execute(&timer_);
+    const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
+    stats_.light_list_entries = lists.entries;
+    stats_.light_list_overflows = lists.overflowed_frames;
   } catch (const gfx::ResourceLimitError& e) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
                                   std::to_string(size.y) + ": " + e.what());
@@ -360,18 +365,26 @@ void MeshRenderer::render(ecs::Registry& registry) {
   stats_.draw_calls = draws.draw_calls();
   stats_.triangles = draws.triangles;
   stats_.triangles_drawn = draws.triangles_drawn;
-  stats_.light_list_entries = technique_->light_lists().entries;
-  stats_.light_list_overflows = technique_->light_lists().overflowed_frames;
   if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
   if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
+  stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void MeshRenderer::settle() {
+  gfx::finish();
+  timer_.wait_for_latest();
+  if (!technique_) return;
+  const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
+  stats_.light_list_entries = lists.entries;
+  stats_.light_list_overflows = lists.overflowed_frames;
 }
 
 assets::Image MeshRenderer::read_output() const {
   assets::Image image{size_.x, size_.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size_.x) * size_.y * 4)};
   if (image.rgba.empty()) return image;
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glGetTextureImage(output_color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
+  gfx::read_texture(output_color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
                     image.rgba.data());
   // GL's rows run bottom to top; images run top to bottom.
   const std::size_t row = static_cast<std::size_t>(size_.x) * 4;
@@ -401,7 +414,7 @@ std::vector<float> MeshRenderer::read_view_depth() const {
   const bool multisampled = technique_options_.msaa > 1;
   const gfx::Texture resolved = multisampled ? resolve(depth_stencil_.id(), gfx::kDepthStencilFormat, true) : gfx::Texture{};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(multisampled ? resolved.id() : depth_stencil_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
+  gfx::read_texture(multisampled ? resolved.id() : depth_stencil_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(count * sizeof(float)),
                     bottom_up.data());
   std::vector<float> top_down(count);
   for (int y = 0; y < size_.y; ++y) {
@@ -423,7 +436,7 @@ std::vector<glm::vec4> MeshRenderer::read_hdr(HdrTarget target) const {
   const bool multisampled = technique_options_.msaa > 1;
   const gfx::Texture resolved = multisampled ? resolve(texture, GL_RGBA16F, false) : gfx::Texture{};
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
-  glGetTextureImage(multisampled ? resolved.id() : texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
+  gfx::read_texture(multisampled ? resolved.id() : texture, 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
   return texels;
 }
 

@@ -40,8 +40,9 @@ struct FrameStats {
   double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
   double fragments_per_pixel = 0.0;          // rasterised by geometry passes, while the fragments view is shown
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
-  std::uint32_t light_list_overflows = 0;    // frames whose lists grew and were filled again
+  std::uint32_t light_list_overflows = 0;    // frames whose lists did not fit (counted as their totals arrive)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
+  std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
 };
 
 class MeshRenderer {
@@ -52,6 +53,11 @@ class MeshRenderer {
   // Renders one frame of the registry's world. Throws std::invalid_argument for
   // a mode that is not in the technique table.
   void render(ecs::Registry& registry);
+
+  // Waits for the GPU and takes in what it reports a frame or more late
+  // (light-list totals, pass timings) into stats() and timer(): for one-shot
+  // commands after a frame, never inside one (a counted GPU wait).
+  void settle();
 
   // The last frame's display image (sRGB, top row first).
   [[nodiscard]] assets::Image read_output() const;
@@ -77,6 +83,7 @@ class MeshRenderer {
   // Per-pass times of the latest frame whose timings are complete (each pass
   // of the frame graph is timed by it).
   [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
+  [[nodiscard]] gfx::PassTimer& timer() { return timer_; }
   // The last frame's graph: its passes, resources and render-target memory.
   [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
   // The shadow maps of the last frame (RendererSettings::shadows).

@@ -7,6 +7,7 @@
 #include "assets/asset_manager.hpp"
 #include "components/bounds.hpp"
 #include "components/visibility.hpp"
+#include "gfx/gpu_waits.hpp"
 
 namespace atrium {
 namespace {
@@ -165,7 +166,7 @@ DepthPyramid DepthReader::read(GLuint depth, glm::ivec2 size) {
   glDispatchCompute(static_cast<GLuint>(tiles.x), static_cast<GLuint>(tiles.y), 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> farthest(count);
-  glGetNamedBufferSubData(tiles_.id(), 0, static_cast<GLsizeiptr>(count * sizeof(float)), farthest.data());
+  gfx::read_buffer(tiles_.id(), 0, static_cast<GLsizeiptr>(count * sizeof(float)), farthest.data());
   glBindTextureUnit(kDepthTextureUnit, 0);
   glUseProgram(static_cast<GLuint>(program));
   return DepthPyramid(std::move(farthest), tiles, size);

@@ -11,6 +11,7 @@
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
+#include "components/light.hpp"
 #include "components/system_options.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/limits.hpp"
@@ -129,6 +130,8 @@ void Overlay::statistics(ecs::Registry& registry) {
     ImGui::Text("shadows: %u lights, %u maps drawn, %u reused (%d^2 atlas)", stats.shadows.lights, stats.shadows.maps_rendered,
                 stats.shadows.maps_reused, stats.shadows.atlas_size);
   }
+  // Each is a stall on a GPU: the queue drains while the CPU waits (gfx/gpu_waits.hpp).
+  ImGui::Text("GPU waits this frame: %u", stats.gpu_waits);
   ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
   const render::GraphMemory targets = renderer.graph().memory();
   ImGui::Text("render targets: %.1f MiB long-lived, %.1f MiB transient (%.1f unshared)", static_cast<double>(targets.imported_bytes) / (1024.0 * 1024.0),
@@ -195,7 +198,7 @@ void Overlay::controls(ecs::Registry& registry) {
   ImGui::SliderInt("shadowed lights", &settings.shadows, 0, 256, "%d", ImGuiSliderFlags_Logarithmic);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
   if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
-    requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, 1'000'000));
+    requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, static_cast<int>(kMaxLights)));
   }
   // One radius for every point and spot light, with the intensity that goes
   // with it, as --light-radius gives them.

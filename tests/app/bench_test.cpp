@@ -49,7 +49,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 24u);
+  ASSERT_EQ(header.size(), 27u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -59,6 +59,9 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[21], "z_slicing");
   EXPECT_EQ(header[22], "shadows");
   EXPECT_EQ(header[23], "triangles_occluded");
+  EXPECT_EQ(header[24], "gpu_ms");
+  EXPECT_EQ(header[25], "gpu_waits");
+  EXPECT_EQ(header[26], "skipped");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -79,6 +82,9 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_LE(std::stoul(f[19]), 10u);
     EXPECT_NE(f[20].find("tonemap="), std::string::npos) << "per-pass CPU medians";
     EXPECT_EQ(f[21], "") << "neither mode slices depth";
+    EXPECT_GT(std::stod(f[24]), 0.0) << "the passes' summed time";
+    EXPECT_LE(std::stod(f[24]), std::stod(f[7]) * 1.05) << "the passes fit in the frame";
+    EXPECT_EQ(f[26], "") << "nothing skipped";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
@@ -112,7 +118,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 24u) << line;
+    ASSERT_EQ(f.size(), 27u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     EXPECT_NE(f[11], "-") << "lights evaluated per pixel, counted under each scheme";
   }
@@ -124,6 +130,38 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
       << md;
   EXPECT_NE(md.find("| clustered-forward/plain-log | 40 | 1 "), std::string::npos) << md;
   EXPECT_GT(assets::read_png(folder / "z.png").width, 300);
+  fs::remove_all(folder);
+}
+
+// --frame-limit: a run stops after a frame over the limit and says so, and the
+// mode is skipped at the larger counts with the reason, so a sweep keeps to its time.
+TEST(BenchCommand, AModeOverTheFrameLimitStopsAndIsSkippedAtLargerCounts) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_limit_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string command = std::string(ATRIUM_BINARY) +
+                              " bench --modes forward --lights 8,4,16 --views 1 --size 32x18 --frames 5 --warmup 2 --frame-limit 1"
+                              " --csv " + (folder / "l.csv").string() + " > " + (folder / "stdout.txt").string() + " 2> " +
+                              (folder / "stderr.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stderr.txt");
+  std::istringstream csv(read_text(folder / "l.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 3u);
+  // Counts run smallest first; llvmpipe draws no frame of the built-in scene in 1 ms.
+  EXPECT_EQ(rows[0][1], "4");
+  EXPECT_GT(std::stod(rows[0][7]), 1.0);
+  EXPECT_NE(rows[0][26].find("one frame took"), std::string::npos) << rows[0][26];
+  EXPECT_NE(rows[0][26].find("over the 1 ms limit"), std::string::npos) << rows[0][26];
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_EQ(rows[i][7], "-") << "a skipped run has no time";
+    EXPECT_NE(rows[i][26].find("at 4 lights, over the 1 ms limit"), std::string::npos) << rows[i][26];
+  }
+  const std::string progress = read_text(folder / "stderr.txt");
+  EXPECT_NE(progress.find("bench 1/3: forward, 4 lights, view 1: "), std::string::npos) << progress;
+  EXPECT_NE(progress.find("bench 3/3: forward, 16 lights, view 1: skipped: "), std::string::npos) << progress;
+  EXPECT_NE(read_text(folder / "stdout.txt").find("skipped: a frame took"), std::string::npos);
   fs::remove_all(folder);
 }
 

@@ -55,8 +55,8 @@ TEST(Cli, BadArgumentsNameTheProblem) {
   EXPECT_EQ(usage_error({"render"}), "render needs --out FILE.png");
   EXPECT_EQ(usage_error({"--out", "x.png"}), "--out is for `atrium render`");
   EXPECT_EQ(usage_error({"--lights"}), "--lights needs a value");
-  EXPECT_EQ(usage_error({"--lights", "-1"}), "--lights expects a whole number from 0 to 1000000, got '-1'");
-  EXPECT_EQ(usage_error({"--lights", "12abc"}), "--lights expects a whole number from 0 to 1000000, got '12abc'");
+  EXPECT_EQ(usage_error({"--lights", "-1"}), "--lights expects a whole number from 0 to 1048576, got '-1'");
+  EXPECT_EQ(usage_error({"--lights", "12abc"}), "--lights expects a whole number from 0 to 1048576, got '12abc'");
   EXPECT_EQ(usage_error({"--view", "0"}), "--view expects a whole number from 1 to 1000, got '0'");
   EXPECT_EQ(usage_error({"--size", "640"}), "--size expects WIDTHxHEIGHT (e.g. 640x360), got '640'");
   EXPECT_EQ(usage_error({"--size", "0x10"}), "--size expects WIDTHxHEIGHT with each side from 1 to 16384, got '0x10'");
@@ -70,7 +70,7 @@ TEST(Cli, TakesTheGnuFormAndTheLastOfARepeatedOption) {
   EXPECT_EQ(*o.mode, "deferred");
   EXPECT_EQ(*o.lights, 7u);
   EXPECT_EQ(o.size, glm::ivec2(64, 36));
-  EXPECT_EQ(usage_error({"--lights=many"}), "--lights expects a whole number from 0 to 1000000, got 'many'");
+  EXPECT_EQ(usage_error({"--lights=many"}), "--lights expects a whole number from 0 to 1048576, got 'many'");
 }
 
 TEST(Cli, VersionAndPerCommandHelp) {
@@ -111,7 +111,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--debug-view", "depth"},    {"--lights", "5"},               {"--light-radius", "2"},
       {"--max-texture-size", "64"}, {"--view", "2"},                 {"--camera", "0,1,2,0,0"},
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},
-      {"--warmup", "1"},            {"--modes", "forward,deferred"}, {"--views", "1,2"},
+      {"--warmup", "1"},            {"--frame-limit", "250"},        {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
       {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench}) {
@@ -146,6 +146,8 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
 TEST(Cli, AcceptsTheExtremeLightCounts) {
   EXPECT_EQ(*parse({"--lights", "0"}).lights, 0u);
   EXPECT_EQ(*parse({"--lights", "1000000"}).lights, 1'000'000u);
+  EXPECT_EQ(*parse({"--lights", "1048576"}).lights, 1u << 20) << "2^20, the million lights of the papers";
+  EXPECT_EQ(usage_error({"--lights", "1048577"}), "--lights expects a whole number from 0 to 1048576, got '1048577'");
 }
 
 }  // namespace

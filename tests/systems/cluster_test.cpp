@@ -40,6 +40,14 @@ std::vector<std::vector<std::uint32_t>> expect_lists_equal_cpu(World& world) {
   return gpu;
 }
 
+// Draws until the lists are sized: the first frame's total comes back after
+// it (LightIndexList), so the second frame's lists hold every light.
+void draw_settled(World& world) {
+  world.frame(0.0);
+  world.renderer().settle();
+  world.frame(0.0);
+}
+
 constexpr std::array kSlicings{lighting::ZSlicing::Log, lighting::ZSlicing::Uniform, lighting::ZSlicing::PlainLog};
 
 std::string name_of(lighting::ZSlicing slicing) { return std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]); }
@@ -52,7 +60,7 @@ TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
     options.cluster_grid = {4, 3, 6};
     options.cluster_bounds = lighting::ClusterBounds::Grid;
     options.z_slicing = slicing;
-    world.frame(0.0);
+    draw_settled(world);
     const lighting::ClusterGrid& grid = grid_of(world);
     ASSERT_EQ(grid.dims(), glm::uvec3(4, 3, 6));
     ASSERT_EQ(grid.slicing(), slicing);
@@ -104,7 +112,7 @@ TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder
   World world({"atrium", kLights, "clustered-forward", 1, {96, 54}, "pbr", "", {}, 0.4f});
   world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
-  world.frame(0.0);
+  draw_settled(world);
   std::size_t from_last_chunk = 0;
   for (const auto& list : expect_lists_equal_cpu(world)) {
     EXPECT_TRUE(std::is_sorted(list.begin(), list.end())) << "a cluster lists its lights in order";
@@ -188,13 +196,17 @@ TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
   const assets::Image reference = world.renderer().read_output();
   world.set_mode("clustered-deferred");
   world.frame(0.0);
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << "no light was lost in the frame that overflowed";
+  // The first frame's total arrives in the second, which grows the list first.
+  world.frame(0.0);
   const lighting::ClusterGrid& grid = grid_of(world);
   EXPECT_GE(grid.list().overflow_frames(), 1u) << "1024 lights overfill the initial list";
   EXPECT_GE(grid.list().capacity(), grid.list().last_total());
-  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << "no light was lost";
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0);
   const std::uint32_t overflows = grid.list().overflow_frames();
   world.frame(0.0);
-  EXPECT_EQ(grid_of(world).list().overflow_frames(), overflows) << "the grown list fits the next frame";
+  world.frame(0.0);
+  EXPECT_EQ(grid_of(world).list().overflow_frames(), overflows) << "the grown list fits the next frames";
 }
 
 TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
@@ -217,11 +229,11 @@ TEST_F(ClusterGridTest, PixelBoundsKeepEveryLightThatReachesAPixelAndDropMostTha
     World world({"atrium", 1024u, "clustered-deferred", view, {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
     options.cluster_bounds = lighting::ClusterBounds::Grid;
-    world.frame(0.0);
+    draw_settled(world);
     const assets::Image grid_image = world.renderer().read_output();
     const auto grid_lists = grid_of(world).read_lists();
     options.cluster_bounds = lighting::ClusterBounds::Pixels;
-    world.frame(0.0);
+    draw_settled(world);
     EXPECT_GE(assets::psnr(grid_image, world.renderer().read_output()), 50.0) << "view " << view;
     const auto pixel_lists = grid_of(world).read_lists();
     ASSERT_EQ(pixel_lists.size(), grid_lists.size());

@@ -260,10 +260,9 @@ TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
     }
     return magenta;
   };
-  world.frame(0.0);  // the list starts small: this frame's lists overflow it and it grows
-  ASSERT_EQ(world.renderer().stats().light_list_overflows, 1u);
+  world.frame(0.0);  // the list starts small: this frame's lists overflow it
   EXPECT_GT(magenta_pixels(), 0);
-  world.frame(0.0);
+  world.frame(0.0);  // the first frame's total has arrived: the list grew before this one
   EXPECT_EQ(world.renderer().stats().light_list_overflows, 1u);
   EXPECT_EQ(magenta_pixels(), 0);
 }

@@ -136,6 +136,7 @@ void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t li
   if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, per_cluster);
   const GLuint groups = (cluster_count() + 63) / 64;
   list_.assign(
+      light_count,
       [&] {
         bind();
         programs.count.use();

@@ -72,6 +72,7 @@ class ClusterGrid {
   [[nodiscard]] std::uint32_t slice_of(float view_depth) const;
   [[nodiscard]] const std::vector<ClusterBox>& boxes() const { return boxes_; }
   [[nodiscard]] const LightIndexList& list() const { return list_; }
+  [[nodiscard]] LightIndexList& list() { return list_; }
   [[nodiscard]] std::uint32_t rebuilds() const { return rebuilds_; }
   [[nodiscard]] GLuint active_buffer() const { return active_.id(); }
   // Two uvec4 per cluster (least, then greatest view-space xyz as ordered integers).

@@ -22,12 +22,13 @@ class ClusteredTechnique final : public LightingTechnique {
   [[nodiscard]] const GBuffer* gbuffer() const override { return deferred_ ? &gbuffer_ : nullptr; }
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
-  [[nodiscard]] ListStats light_lists() const override {
+  [[nodiscard]] ListStats light_lists() override {
+    grid_.list().poll();
     return {grid_.list().last_total(), grid_.list().overflow_frames()};
   }
   [[nodiscard]] LightBins bind_light_bins() const override {
     grid_.bind();
-    return {Binning::Clusters, {}, 0, grid_.list().overflow_capacity()};
+    return {Binning::Clusters, {}, 0, grid_.list().capacity()};
   }
 
  private:

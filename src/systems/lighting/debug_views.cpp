@@ -3,6 +3,8 @@
 #include <numeric>
 #include <vector>
 
+#include "gfx/gpu_waits.hpp"
+
 namespace atrium::lighting {
 
 int debug_view_index(std::string_view name) {
@@ -179,7 +181,7 @@ double DebugViews::average_count() const {
   std::vector<GLuint> counts(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   if (counts.empty()) return 0.0;
   glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  glGetTextureImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(counts.size() * sizeof(GLuint)),
+  gfx::read_texture(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(counts.size() * sizeof(GLuint)),
                     counts.data());
   return static_cast<double>(std::accumulate(counts.begin(), counts.end(), std::uint64_t{0})) / static_cast<double>(counts.size());
 }
@@ -207,7 +209,7 @@ void DebugViews::draw_light_bins(int view, const LightingTechnique& technique, c
   if (view == kLightListView) {
     program.set("u_tiles", bins.tiles);
     program.set("u_tile_size", bins.tile_size);
-    program.set("u_overflow_capacity", bins.overflow_capacity);
+    program.set("u_list_capacity", bins.capacity);
     // A bin can hold every light: the map tops out there.
     program.set("u_scale_max", static_cast<float>(std::max<std::size_t>(frame.lights.size(), 1)));
   }

@@ -4,32 +4,32 @@
 #include <string>
 
 #include "base/format.hpp"
+#include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 
 namespace atrium::lighting {
-
-namespace {
-
-// The running total, a flag the pass sets when the total wrapped past 2^32,
-// and the longest list.
-struct ListTotal {
-  std::uint32_t entries = 0;
-  std::uint32_t wrapped = 0;
-  std::uint32_t longest = 0;  // lights in the fullest bin
-};
-static_assert(sizeof(ListTotal) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
-
-}  // namespace
 
 LightIndexList::LightIndexList(std::uint32_t bins)
     : bins_(bins),
       max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
       loop_limit_(gfx::shader_loop_limit()),
       ranges_(gfx::create_buffer()),
-      total_(gfx::create_buffer()) {
+      total_(gfx::create_buffer()),
+      ring_(gfx::create_buffer()) {
+  static_assert(sizeof(Total) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(bins, 1) * 2 * sizeof(std::uint32_t)), nullptr, 0);
-  glNamedBufferStorage(total_.id(), sizeof(ListTotal), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  constexpr GLbitfield kMapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+  glNamedBufferStorage(ring_.id(), sizeof(Total) * kRingSlots, nullptr, kMapping);
+  ring_data_ = static_cast<const Total*>(glMapNamedBufferRange(ring_.id(), 0, sizeof(Total) * kRingSlots, kMapping));
   resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
+}
+
+LightIndexList::~LightIndexList() {
+  for (Pending& pending : pending_) {
+    if (pending.fence) glDeleteSync(pending.fence);
+  }
+  if (ring_data_) glUnmapNamedBuffer(ring_.id());
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
@@ -38,37 +38,80 @@ void LightIndexList::resize(std::uint32_t capacity) {
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(capacity, 1) * sizeof(std::uint32_t)), nullptr, 0);
 }
 
-void LightIndexList::assign(const std::function<void()>& dispatch, const std::function<void(std::uint32_t)>& on_resize) {
-  overflow_capacity_ = 0;
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    const ListTotal zero;
+void LightIndexList::check(const Total& total) const {
+  if (total.wrapped || total.entries > max_entries_) {
+    const std::string entries = total.wrapped ? "more than 4,294,967,295" : with_commas(total.entries);
+    const std::string bytes = total.wrapped ? "over 16 GiB" : format_bytes(static_cast<double>(std::uint64_t{total.entries} * sizeof(std::uint32_t)));
+    throw gfx::ResourceLimitError("the light lists need " + entries + " entries (" + bytes + "), more than one storage buffer may hold here (" +
+                                  format_bytes(static_cast<double>(max_entries_ * sizeof(std::uint32_t))) +
+                                  ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights (--lights), smaller ones (--light-radius), "
+                                  "fewer clusters (--cluster-grid) or, for tiles, a smaller image (--size)");
+  }
+  if (loop_limit_ && total.longest > loop_limit_) {
+    throw gfx::ResourceLimitError("one tile or cluster holds " + with_commas(total.longest) + " lights, and this driver ends a shader's loops after " +
+                                  with_commas(loop_limit_) + " iterations (llvmpipe), so its pixels would leave lights out; use fewer "
+                                  "lights (--lights), smaller ones (--light-radius) or more bins (--cluster-grid, or a larger --size for tiles)");
+  }
+}
+
+void LightIndexList::grow_for(std::uint32_t entries, const std::function<void(std::uint32_t)>& on_resize) {
+  if (entries <= capacity_) return;
+  // Room to spare: lights that move change the total a little every frame.
+  resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{entries} + entries / 4 + 64, max_entries_)));
+  on_resize(capacity_);
+}
+
+void LightIndexList::poll() {
+  // Oldest first, so that last_total_ ends as the newest that arrived.
+  for (std::size_t age = kRingSlots; age > 0; --age) {
+    const std::size_t slot = (next_slot_ + kRingSlots - age) % kRingSlots;
+    Pending& pending = pending_[slot];
+    if (!pending.fence) continue;
+    // Timeout 0: asks, never waits (the flush lets a fence that was never
+    // submitted pass at all).
+    const GLenum status = glClientWaitSync(pending.fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+    if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) continue;
+    glDeleteSync(pending.fence);
+    pending.fence = nullptr;
+    const Total total = ring_data_[slot];
+    check(total);
+    last_total_ = total.entries;
+    if (total.entries > pending.capacity) ++overflow_frames_;
+    wanted_ = std::max(wanted_, total.entries);
+  }
+}
+
+void LightIndexList::assign(std::uint32_t light_count, const std::function<void()>& dispatch,
+                            const std::function<void(std::uint32_t)>& on_resize) {
+  poll();
+  grow_for(wanted_, on_resize);
+  wanted_ = 0;
+  const Total zero;
+  glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
+  bind();
+  dispatch();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (loop_limit_ && light_count > loop_limit_) {
+    // An overflowed bin's pixels would loop over more lights than the driver
+    // allows: size the list in this frame instead.
+    Total total;
+    gfx::read_buffer(total_.id(), 0, sizeof total, &total);
+    check(total);
+    last_total_ = total.entries;
+    if (total.entries <= capacity_) return;
+    ++overflow_frames_;
+    grow_for(total.entries, on_resize);
     glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
     bind();
     dispatch();
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    ListTotal total;
-    glGetNamedBufferSubData(total_.id(), 0, sizeof total, &total);
-    last_total_ = total.entries;
-    if (total.wrapped || total.entries > max_entries_) {
-      const std::string entries = total.wrapped ? "more than 4,294,967,295" : with_commas(total.entries);
-      const std::string bytes = total.wrapped ? "over 16 GiB" : format_bytes(static_cast<double>(std::uint64_t{total.entries} * sizeof(std::uint32_t)));
-      throw gfx::ResourceLimitError("the light lists need " + entries + " entries (" + bytes + "), more than one storage buffer may hold here (" +
-                                    format_bytes(static_cast<double>(max_entries_ * sizeof(std::uint32_t))) +
-                                    ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights (--lights), smaller ones (--light-radius), "
-                                    "fewer clusters (--cluster-grid) or, for tiles, a smaller image (--size)");
-    }
-    if (loop_limit_ && total.longest > loop_limit_) {
-      throw gfx::ResourceLimitError("one tile or cluster holds " + with_commas(total.longest) + " lights, and this driver ends a shader's loops after " +
-                                    with_commas(loop_limit_) + " iterations (llvmpipe), so its pixels would leave lights out; use fewer "
-                                    "lights (--lights), smaller ones (--light-radius) or more bins (--cluster-grid, or a larger --size for tiles)");
-    }
-    if (last_total_ <= capacity_) return;
-    // Too small for this frame: grow with room to spare and assign again.
-    ++overflow_frames_;
-    overflow_capacity_ = capacity_;
-    resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{last_total_} + last_total_ / 4 + 64, max_entries_)));
-    on_resize(capacity_);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    return;
   }
+  Pending& pending = pending_[next_slot_];
+  if (pending.fence) return;  // the GPU is kRingSlots frames behind: this total is not needed to grow
+  glCopyNamedBufferSubData(total_.id(), ring_.id(), 0, static_cast<GLintptr>(next_slot_ * sizeof(Total)), sizeof(Total));
+  pending = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), capacity_};
+  next_slot_ = (next_slot_ + 1) % kRingSlots;
 }
 
 void LightIndexList::bind() const {
@@ -85,8 +128,8 @@ render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const 
 std::vector<std::vector<std::uint32_t>> LightIndexList::read() const {
   std::vector<std::uint32_t> ranges(static_cast<std::size_t>(bins_) * 2), indices(capacity_);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  glGetNamedBufferSubData(ranges_.id(), 0, static_cast<GLsizeiptr>(ranges.size() * sizeof(std::uint32_t)), ranges.data());
-  glGetNamedBufferSubData(indices_.id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
+  gfx::read_buffer(ranges_.id(), 0, static_cast<GLsizeiptr>(ranges.size() * sizeof(std::uint32_t)), ranges.data());
+  gfx::read_buffer(indices_.id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
   std::vector<std::vector<std::uint32_t>> lists(bins_);
   for (std::uint32_t b = 0; b < bins_; ++b) {
     const std::uint32_t offset = ranges[b * 2], count = ranges[b * 2 + 1];

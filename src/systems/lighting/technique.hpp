@@ -82,13 +82,15 @@ class LightingTechnique {
   virtual void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) = 0;
   // Technique-specific controls for the overlay; most techniques have none.
   virtual void draw_ui() {}
-  // Techniques with light lists report their size and how often a frame's
-  // lists did not fit (the list then grew and was filled again).
+  // Techniques with light lists report their size and how many frames' lists
+  // did not fit (their overflowed bins shaded every light; the list grew), as
+  // far as the GPU has reported them: asking takes in what has arrived and
+  // never waits.
   struct ListStats {
     std::uint32_t entries = 0;
     std::uint32_t overflowed_frames = 0;
   };
-  [[nodiscard]] virtual ListStats light_lists() const { return {}; }
+  [[nodiscard]] virtual ListStats light_lists() { return {}; }
   // For the light-lists debug view: a technique whose lists are per screen
   // tile or per cluster binds them (and the cluster grid's uniform block) and
   // says how pixels map to its bins.
@@ -97,7 +99,7 @@ class LightingTechnique {
     Binning binning = Binning::None;
     glm::uvec2 tiles{0};                 // Tiles: tiles per row and column
     std::uint32_t tile_size = 0;         // Tiles: pixels per tile side
-    std::uint32_t overflow_capacity = 0; // LightIndexList::overflow_capacity()
+    std::uint32_t capacity = 0;          // LightIndexList::capacity(): bins ending past it overflowed
   };
   [[nodiscard]] virtual LightBins bind_light_bins() const { return {}; }
   // The G-buffer the technique filled this frame, in whatever layout, for the

@@ -39,9 +39,10 @@ void TiledTechnique::set_blended_capacity(std::uint32_t capacity) {
   blended_.set("u_list_capacity", capacity);
 }
 
-void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, const std::function<void(std::uint32_t)>& set_capacity) {
+void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
+                                   const std::function<void(std::uint32_t)>& set_capacity) {
   assign.use();
-  list.assign([&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
+  list.assign(light_count, [&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
 }
 
 void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
@@ -51,9 +52,9 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
     read_gbuffer(pass, gbuffer);
     pass.read(frame.light_buffer, render::Access::Storage);
     pass.write(lists, render::Access::Storage);
-  }, [this](const render::PassResources&) {
+  }, [this, &frame](const render::PassResources&) {
     gbuffer_.bind_textures();
-    assign_lights(*list_, assign_, [&](std::uint32_t capacity) { set_capacity(capacity); });
+    assign_lights(*list_, assign_, static_cast<std::uint32_t>(frame.lights.size()), [&](std::uint32_t capacity) { set_capacity(capacity); });
   });
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     read_gbuffer(pass, gbuffer);
@@ -90,12 +91,15 @@ void TiledTechnique::cull_for_blended(const FrameContext& frame, const FrameTarg
     draw_items(frame.draws.blended);
     glBindTextureUnit(0, targets.depth_stencil);
     glBindTextureUnit(1, front_depth_.id());
-    assign_lights(*blended_list_, assign_blended_, [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
+    assign_lights(*blended_list_, assign_blended_, static_cast<std::uint32_t>(frame.lights.size()),
+                  [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
   }
 }
 
-LightingTechnique::ListStats TiledTechnique::light_lists() const {
+LightingTechnique::ListStats TiledTechnique::light_lists() {
   if (!list_) return {};
+  list_->poll();
+  blended_list_->poll();
   const std::uint32_t blended = blended_listed_ ? blended_list_->last_total() : 0;
   return {list_->last_total() + blended, list_->overflow_frames() + blended_list_->overflow_frames()};
 }
@@ -103,7 +107,7 @@ LightingTechnique::ListStats TiledTechnique::light_lists() const {
 LightingTechnique::LightBins TiledTechnique::bind_light_bins() const {
   if (!list_) return {};
   list_->bind();
-  return {Binning::Tiles, tiles_, static_cast<std::uint32_t>(kTileSize), list_->overflow_capacity()};
+  return {Binning::Tiles, tiles_, static_cast<std::uint32_t>(kTileSize), list_->capacity()};
 }
 
 }  // namespace atrium::lighting

@@ -29,7 +29,7 @@ class TiledTechnique final : public LightingTechnique {
   // light_lists() counts both.
   [[nodiscard]] const LightIndexList& blended_list() const { return *blended_list_; }
   [[nodiscard]] glm::uvec2 tiles() const { return tiles_; }
-  [[nodiscard]] ListStats light_lists() const override;
+  [[nodiscard]] ListStats light_lists() override;
   [[nodiscard]] LightBins bind_light_bins() const override;
 
  private:
@@ -37,7 +37,8 @@ class TiledTechnique final : public LightingTechnique {
   void set_capacity(std::uint32_t capacity);
   void set_blended_capacity(std::uint32_t capacity);
   // `set_capacity` gives the programs that read the list its new capacity.
-  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, const std::function<void(std::uint32_t)>& set_capacity);
+  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
+                     const std::function<void(std::uint32_t)>& set_capacity);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
   // then their lists (their forward shading reads those lists).
   void cull_for_blended(const FrameContext& frame, const FrameTargets& targets);

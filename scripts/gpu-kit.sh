@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Packs one folder that gets every GPU figure in one command on a machine that
+# has nothing but Linux (glibc 2.36 or newer) and an NVIDIA driver: the Release
+# atrium, the shared libraries it needs that such a machine lacks (not libc,
+# libGL, libEGL or the driver), shaders, scene files, the real Sponza, and
+# run.sh (scripts/gpu-kit/run.sh; docs/benchmarks.md says how to run it).
+#   scripts/gpu-kit.sh DIR                 builds Release atrium in build/ and packs it
+#   scripts/gpu-kit.sh DIR --binary FILE   packs FILE instead (the kit test packs its build's)
+#   scripts/gpu-kit.sh DIR --sponza DIR    Sponza's glTF folder (default: assets/sponza/glTF,
+#                                          else ../shared/testdata/scenes/sponza-crytek)
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+readonly max_bytes=$((60 * 1024 * 1024))
+
+usage() {
+  echo "usage: scripts/gpu-kit.sh DIR [--binary FILE] [--sponza DIR]" >&2
+  exit 2
+}
+[ $# -ge 1 ] || usage
+kit=$1
+shift
+binary="" sponza=""
+while [ $# -gt 0 ]; do
+  case $1 in
+    --binary) [ $# -ge 2 ] || usage; binary=$2; shift 2 ;;
+    --sponza) [ $# -ge 2 ] || usage; sponza=$2; shift 2 ;;
+    *) usage ;;
+  esac
+done
+
+if [ -z "$binary" ]; then
+  cmake -S "$root" -B "$root/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+  cmake --build "$root/build" --target atrium -j"$(nproc)"
+  binary=$root/build/atrium
+fi
+[ -x "$binary" ] || { echo "gpu-kit: $binary is not an executable" >&2; exit 1; }
+if [ -z "$sponza" ]; then
+  for candidate in "$root/assets/sponza/glTF" "$root/../shared/testdata/scenes/sponza-crytek"; do
+    if [ -f "$candidate/Sponza.gltf" ]; then sponza=$candidate; break; fi
+  done
+fi
+[ -n "$sponza" ] && [ -f "$sponza/Sponza.gltf" ] ||
+  { echo "gpu-kit: no Sponza.gltf found; run scripts/fetch-scenes.sh sponza or pass --sponza DIR" >&2; exit 1; }
+
+rm -rf "$kit"
+mkdir -p "$kit/bin" "$kit/lib" "$kit/assets/sponza"
+strip --strip-unneeded -o "$kit/bin/atrium" "$binary"
+# What the dynamic linker resolves, less what every Linux with a GL driver has:
+# glibc's libraries and the GL loaders, which must be the machine's own.
+ldd "$binary" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }' | while read -r name path; do
+  case $name in
+    libc.so.* | libm.so.* | libdl.so.* | libpthread.so.* | librt.so.* | ld-linux* | libGL* | libEGL* | libOpenGL*) continue ;;
+  esac
+  cp -L "$path" "$kit/lib/$name"
+done
+cp -r "$root/shaders" "$kit/shaders"
+cp -r "$root/scenes" "$kit/scenes"
+cp -rL "$sponza" "$kit/assets/sponza/glTF"
+cp "$root/tools/plot_bench.py" "$kit/plot_bench.py"
+cp "$root/scripts/gpu-kit/run.sh" "$kit/run.sh"
+chmod +x "$kit/run.sh"
+{
+  echo "atrium $(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown), kit made $(date -u +%Y-%m-%dT%H:%MZ)"
+  echo "binary: $binary"
+} >"$kit/VERSION"
+
+bytes=$(du -sb "$kit" | cut -f1)
+if [ "$bytes" -gt "$max_bytes" ]; then
+  echo "gpu-kit: $kit holds $((bytes / 1024 / 1024)) MiB, more than the 60 MiB a device run may carry" >&2
+  exit 1
+fi
+echo "gpu-kit: $kit ($((bytes / 1024 / 1024)) MiB, $(ls "$kit/lib" | wc -l) libraries); run: $kit/run.sh OUT [--quick]"

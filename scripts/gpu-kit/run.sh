@@ -1,0 +1,149 @@
+#!/usr/bin/env bash
+# Atrium's GPU kit (made by scripts/gpu-kit.sh): every GPU figure in one
+# command, started with nothing but this folder.
+#   ./run.sh OUT           1920x1080, 128 to 1,048,576 lights, built-in scene and Sponza
+#                          (at most about 6 minutes: each step gets what is left of that)
+#   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
+# Writes into OUT: report.md (the GL context, PSNR of every mode against forward,
+# the bench tables), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
+# plot.png (where python3 has matplotlib), atrium.png, sponza.png and log.txt.
+# Exit 0 when every step ran and every mode is within 40 dB of forward.
+set -uo pipefail
+kit=$(cd "$(dirname "$0")" && pwd)
+usage() {
+  echo "usage: run.sh OUT [--quick]" >&2
+  exit 2
+}
+[ $# -ge 1 ] || usage
+quick=0
+case ${2:-} in
+  --quick) quick=1 ;;
+  "") ;;
+  *) usage ;;
+esac
+mkdir -p "$1" || exit 1
+out=$(cd "$1" && pwd)
+
+export LD_LIBRARY_PATH="$kit/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+export ATRIUM_SHADER_DIR="$kit/shaders" ATRIUM_TOOLS_DIR="$kit"
+# glvnd finds NVIDIA's EGL through this file; some driver-only machines keep it
+# where the loader does not look.
+if [ -z "${__EGL_VENDOR_LIBRARY_FILENAMES:-}" ] && [ "$quick" = 0 ]; then
+  for vendor in /usr/share/glvnd/egl_vendor.d/10_nvidia.json /etc/glvnd/egl_vendor.d/10_nvidia.json; do
+    if [ -f "$vendor" ]; then export __EGL_VENDOR_LIBRARY_FILENAMES=$vendor; break; fi
+  done
+fi
+
+# ATRIUM_KIT_LIGHTS (a --lights list) and ATRIUM_KIT_SECONDS (the time for
+# every step together) override the choices below, for a shorter window.
+atrium=$kit/bin/atrium
+sponza=$kit/scenes/sponza.json
+if [ "$quick" = 1 ]; then
+  size=160x90 lights=16,64 frames=2 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 budget=240
+else
+  size=1920x1080 lights=128,1024,16384,131072,1048576 frames=5 warmup=2 shadow_lights=1024 shadowed=256 picture_lights=131072 \
+    picture_radius=0.8 budget=345
+fi
+lights=${ATRIUM_KIT_LIGHTS:-$lights}
+budget=${ATRIUM_KIT_SECONDS:-$budget}
+log=$out/log.txt
+report=$out/report.md
+: >"$log"
+deadline=$(($(date +%s) + budget))
+failed=()
+
+# step NAME LIMIT_SECONDS OUTPUT COMMAND...: runs COMMAND with its stdout in
+# OUTPUT and its stderr in the log, for at most LIMIT seconds or what is left.
+step() {
+  local name=$1 limit=$2 output=$3
+  shift 3
+  local left=$((deadline - $(date +%s)))
+  [ "$left" -lt "$limit" ] && limit=$left
+  if [ "$limit" -le 0 ]; then
+    echo "== $name: not run, the time is spent" | tee -a "$log" >&2
+    failed+=("$name (no time left)")
+    return 1
+  fi
+  echo "== $name (at most ${limit} s): $*" | tee -a "$log" >&2
+  local start rc
+  start=$(date +%s)
+  timeout "$limit" "$@" >"$output" 2>>"$log"
+  rc=$?
+  echo "== $name: exit $rc after $(($(date +%s) - start)) s" | tee -a "$log" >&2
+  if [ "$rc" -ne 0 ]; then
+    failed+=("$name (exit $rc$([ "$rc" = 124 ] && echo ', out of time'))")
+  fi
+  return "$rc"
+}
+
+info=$out/.info.txt
+if ! step "GL context" 60 "$info" "$atrium" info --lights 0; then
+  echo "run.sh: atrium could not start (log: $log)" >&2
+  tail -n 5 "$log" >&2
+  exit 1
+fi
+gl=$(sed -n 's/^gl  *//p' "$info")
+echo "GL context: $gl" >&2
+if [ "$quick" = 0 ] && echo "$gl" | grep -qiE 'llvmpipe|softpipe|swiftshader|software'; then
+  echo "run.sh: EGL gave a software renderer ($gl), not a GPU: unpack the GL loader packages and point" \
+    "__EGL_VENDOR_LIBRARY_FILENAMES at the driver's EGL vendor file (docs/benchmarks.md)" >&2
+  exit 1
+fi
+
+# Constant density: radii shrink as lights grow (4 m at 1,024 lights, 0.4 m at
+# 2^20), so each pixel is reached by about as many lights at every count.
+bench=("$atrium" bench --modes all --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density)
+step "compare, built-in scene" 90 "$out/.compare-atrium.txt" "$atrium" compare --size "$size"
+step "compare, Sponza" 90 "$out/.compare-sponza.txt" "$atrium" compare "$sponza" --size "$size"
+step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights "$lights" --csv "$out/bench-atrium.csv"
+step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
+step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
+  --shadows "$shadowed" --csv "$out/bench-shadows.csv"
+step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
+  --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
+step "picture, built-in scene" 30 "$out/.render-atrium.txt" "$atrium" render --mode tiled-deferred --lights 1024 --size "$size" \
+  --out "$out/atrium.png"
+plot_note="no plot: python3 with matplotlib is not on this machine"
+for python in /usr/bin/python3 python3; do
+  command -v "$python" >/dev/null && "$python" -c "import matplotlib" 2>/dev/null || continue
+  plot_note=""
+  [ -f "$out/bench-sponza.csv" ] && { "$python" "$kit/plot_bench.py" "$out/bench-sponza.csv" "$out/plot.png" \
+    "Sponza, $size, $(echo "$gl" | cut -d'(' -f1)" >>"$log" 2>&1 || plot_note="the plot failed (log.txt)"; }
+  break
+done
+
+section() {  # section TITLE FILE: a file's text under a heading, as a code block unless it is markdown
+  echo
+  echo "## $1"
+  echo
+  if [ ! -s "$2" ]; then
+    echo "(no output: see log.txt)"
+  elif [[ $2 == *.md ]]; then
+    cat "$2"
+  else
+    echo '```'
+    cat "$2"
+    echo '```'
+  fi
+}
+{
+  echo "# Atrium GPU kit run"
+  echo
+  echo "- $(cat "$kit/VERSION" | head -n 1)"
+  echo "- run $(date -u +%Y-%m-%dT%H:%MZ) on $(uname -n), $(nproc) CPU cores"
+  echo "- GL: $gl"
+  echo "- size $size; light counts $lights at constant density; $frames frames after $warmup warm-up per run, view 1;" \
+    "a run stops after a frame over 1 s"
+  echo "- steps that failed: ${failed[*]:-none}"
+  [ -n "$plot_note" ] && echo "- $plot_note"
+  section "Every mode against forward, built-in scene (PSNR)" "$out/.compare-atrium.txt"
+  section "Every mode against forward, Sponza (PSNR)" "$out/.compare-sponza.txt"
+  section "Bench, built-in scene" "$out/.bench-atrium.md"
+  section "Bench, Sponza" "$out/.bench-sponza.md"
+  section "Bench, Sponza, $shadowed shadowed lights" "$out/.bench-shadows.md"
+  section "Pictures" "$out/.render-sponza.txt"
+  cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
+} >"$report"
+rm -f "$out"/.*.txt "$out"/.*.md
+echo "run.sh: wrote $report; steps that failed: ${failed[*]:-none}" >&2
+[ ${#failed[@]} -eq 0 ]

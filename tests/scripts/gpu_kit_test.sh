@@ -1,0 +1,54 @@
+#!/usr/bin/env bash
+# scripts/gpu-kit.sh packs this build's atrium into a kit, and the kit's
+# run.sh --quick runs from that folder alone (an environment emptied of
+# everything but PATH, so the libraries come from the kit): every step passes,
+# every mode agrees with forward on both scenes, and OUT holds the files the
+# kit promises, no more than 8.
+#   gpu_kit_test.sh ATRIUM_BINARY WORK_DIR
+set -euo pipefail
+binary=$1 work=$2
+root=$(cd "$(dirname "$0")/../.." && pwd)
+fail() {
+  echo "FAIL: $*" >&2
+  exit 1
+}
+rm -rf "$work"
+mkdir -p "$work"
+"$root/scripts/gpu-kit.sh" "$work/kit" --binary "$binary"
+
+# Every library the kit's atrium loads comes from the kit, except those the
+# kit leaves to the machine: glibc's and the GL loaders.
+env -i PATH=/usr/bin:/bin LD_LIBRARY_PATH="$work/kit/lib" ldd "$work/kit/bin/atrium" >"$work/ldd.txt"
+while read -r name arrow path _; do
+  [ "$arrow" = "=>" ] || continue
+  case $name in
+    libc.so.* | libm.so.* | libdl.so.* | libpthread.so.* | librt.so.* | libGL* | libEGL* | libOpenGL*) continue ;;
+  esac
+  [[ $path == "$work/kit/lib/"* ]] || fail "$name loads from $path, not from the kit"
+done <"$work/ldd.txt"
+[ ! -e "$work/kit/lib/libc.so.6" ] || fail "the kit carries libc"
+
+env -i PATH=/usr/bin:/bin HOME="$work" "$work/kit/run.sh" "$work/out" --quick 2>"$work/run.log" ||
+  fail "run.sh --quick failed: $(tail -n 20 "$work/run.log")"
+
+report=$work/out/report.md
+[ "$(grep -c "every mode is within 40 dB PSNR of forward" "$report")" = 2 ] || fail "both scenes' PSNR tables: $(cat "$report")"
+grep -q "steps that failed: none" "$report" || fail "a step failed: $(cat "$report")"
+grep -q "^| lights | forward | deferred |" "$report" || fail "no bench table in the report"
+for scene in atrium sponza shadows; do
+  csv=$work/out/bench-$scene.csv
+  [ -s "$csv" ] || fail "$csv is missing"
+  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped$" || fail "$csv has no gpu_waits column"
+  # Every mode in the technique table has a row.
+  for mode in forward deferred deferred-radius light-volumes tiled-deferred clustered-forward clustered-deferred \
+    light-volumes-instanced light-prepass; do
+    grep -q "^$mode," "$csv" || fail "$csv has no row for $mode"
+  done
+done
+for png in sponza.png atrium.png; do
+  [ "$(head -c 4 "$work/out/$png" | tail -c 3)" = PNG ] || fail "$png is not a PNG"
+done
+files=$(find "$work/out" -type f | wc -l)
+[ "$files" -le 8 ] || fail "OUT holds $files files, more than 8: $(ls -a "$work/out")"
+echo "gpu kit: $(du -sh "$work/kit" | cut -f1), --quick wrote $files files"
+rm -rf "$work"
