@@ -1,12 +1,14 @@
 // The `atrium` command line, parsed by CLI11. One table names every option,
-// the commands that take it and what it means; the parser, the overview
-// (`atrium --help`) and each command's help (`atrium render --help`) are all
-// built from it, so an option is added in one place.
+// the commands that take it, what it means and, in each row, the code that
+// reads its value; the parser, the overview (`atrium --help`) and each
+// command's help (`atrium render --help`) are all built from it, so an option
+// is added in one place.
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -51,11 +53,15 @@ const CommandSpec& command_spec(Command command) {
   return *std::find_if(kCommands.begin(), kCommands.end(), [&](const CommandSpec& c) { return c.command == command; });
 }
 
+// Each row reads its own value into CliOptions.
+using ApplyOption = std::function<void(std::string_view value, CliOptions& options)>;
+
 struct OptionSpec {
   std::string name;   // "--lights"
   std::string value;  // "N"; empty for a flag
   unsigned commands;  // which commands take it
   std::string help;
+  ApplyOption apply;
 };
 
 // Options of optional systems (components/system_options.hpp): each row is
@@ -77,145 +83,6 @@ constexpr std::array kSystemOptions{
 std::string gbuffer_size(lighting::GBufferLayout layout) {
   return std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) +
          " B/px";
-}
-
-// Every option. One name may appear twice when its value means something else
-// in `atrium bench` (a list there).
-const std::vector<OptionSpec>& option_table() {
-  static const std::vector<OptionSpec> table{
-      {"--mode", "M", kWindow | kRender,
-       "lighting technique (default: the scene's, 'forward'): " + lighting::technique_names()},
-      {"--shading", "S", kDrawing, "shading model: pbr (default), blinn-phong or phong"},
-      {"--cluster-grid", "XxYxZ", kDrawing, "clustered modes: clusters per axis (default 16x9x32)"},
-      {"--cluster-bounds", "B", kDrawing,
-       "clustered modes: test lights against each cluster's box of the pixels it holds (pixels, default) or its "
-       "whole frustum slice (grid)"},
-      {"--active-clusters", "", kDrawing, "clustered modes, grid bounds: only clusters holding visible pixels get lights"},
-      {"--z-slicing", "S", kWindow | kRender | kCompare,
-       "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
-       "plain-log (logarithmic from the near plane) or uniform"},
-      {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)"},
-      {"--gbuffer", "L", kDrawing,
-       "deferred modes: G-buffer layout, full (" + gbuffer_size(lighting::GBufferLayout::Full) + ", default) or compact (" +
-           gbuffer_size(lighting::GBufferLayout::Compact) + "; position from depth, octahedral normal)"},
-      {"--split-lighting", "", kDrawing,
-       "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
-       "diffuse-light and specular-light views turn this on while shown)"},
-      {"--msaa", "N", kDrawing,
-       "multisample anti-aliasing with N = 1 (off, the default), 2, 4 or 8 samples per pixel, up to what the driver "
-       "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges)"},
-      {"--shadows", "K", kWindow | kRender | kCompare,
-       "shadow maps for the K lights that matter most this frame (0, the default, is off; at most " +
-           std::to_string(shadows::kMaxShadowedLights) + "): cube maps for point lights, one map per spot light, cascades for a "
-           "directional light, in one atlas; every mode samples them (debug view shadow-atlas)"},
-      {"--shadows", "LIST", kBench, "measure with each of these shadowed-light counts (e.g. 0,16,64)"},
-      {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)"},
-      {"--debug-view", "V", kWindow | kRender,
-       "show position, normal, albedo, metallic-roughness, emissive, depth, light-volumes (outlines), heatmap (lights "
-       "evaluated per pixel in the current mode), light-lists (lights in each pixel's tile or cluster list), "
-       "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
-       "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
-       "light-buffer (light-prepass: light summed before materials), msaa-edges (with --msaa: the pixels the deferred "
-       "modes shade per sample, in red), shadow-atlas (with --shadows: the shadow maps' depths)"},
-      {"--lights", "N", kWindow | kRender | kInfo | kCompare,
-       "number of lights, 0.." + std::to_string(kMaxLights) +
-           " (built-in default: 160); for a scene its listed lights come first, then generated ones; for a glTF "
-           "model, N generated lights are added to the model's own"},
-      {"--lights", "LIST", kBench, "comma-separated light counts to measure (default 10,50,110,1024)"},
-      {"--light-radius", "R", kDrawing,
-       "every point and spot light reaches R metres (its intensity scaled to match); bench --constant-density "
-       "shrinks R as lights grow"},
-      {"--max-texture-size", "N", kDrawing | kInfo,
-       "textures wider or taller than N pixels are downscaled (default: what the GL context allows, "
-       "GL_MAX_TEXTURE_SIZE)"},
-      {"--view", "K", kWindow | kRender, "stored view 1..5 (default 1)"},
-      {"--camera", "X,Y,Z,YAW,PITCH", kDrawing,
-       "look from here instead of the stored views (metres; degrees, yaw 0 looks along -Z, 90 along +X; pitch up > "
-       "0). The window's c key prints the camera."},
-      {"--size", "WxH", kDrawing, "image or window size in pixels (default 1280x720; compare and bench: 320x180)"},
-      {"--out", "FILE.png", kRender, "where to write the image"},
-      {"--frames", "N", kWindow, "quit after N frames (for scripted runs)"},
-      {"--frames", "N", kBench, "frames measured per run (default 30)"},
-      {"--warmup", "N", kBench, "frames drawn before measuring each run (default 5)"},
-      {"--frame-limit", "MS", kBench,
-       "a run stops after a frame slower than MS milliseconds (10x MS for its first frame, which compiles programs), "
-       "and the mode is skipped at larger light counts that pass it, or that would pass 4x MS if its time grew with "
-       "the lights (default 1000, in whole milliseconds; the table says why)"},
-      {"--modes", "all|LIST", kBench, "the modes to measure (default all)"},
-      {"--views", "all|LIST", kBench, "the stored views to measure from (default all)"},
-      {"--constant-density", "", kBench, "shrink the light radius as the light count grows, keeping lights per pixel level"},
-      {"--csv", "FILE", kBench, "write the results as CSV"},
-      {"--md", "FILE", kBench, "write the results as a Markdown table"},
-      {"--plot", "FILE.png", kBench, "plot frame time against light count (python3 with matplotlib)"},
-      {"--gl-debug", "", kWindow, "report GL errors through KHR_debug and print their count on exit (always on in debug builds)"},
-      {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum, back-facing meshlet and occlusion culling are on by default)"},
-      {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)"},
-      {"--json", "", kInfo, "print JSON"},
-  };
-  static const std::vector<OptionSpec> with_systems = [] {
-    std::vector<OptionSpec> rows = table;
-    for (const SystemOptionSpec& s : kSystemOptions) rows.push_back({std::string(s.name), std::string(s.value), kWindow | kRender | kCompare, std::string(s.help)});
-    return rows;
-  }();
-  return with_systems;
-}
-
-// "the window and `atrium render`": the commands in `commands`, for messages and help.
-std::string command_list(unsigned commands) {
-  std::vector<std::string> names;
-  for (const CommandSpec& c : kCommands) {
-    if (commands & on(c.command)) names.push_back(c.name.empty() ? "the window" : "`atrium " + std::string(c.name) + "`");
-  }
-  std::string text;
-  for (std::size_t i = 0; i < names.size(); ++i) {
-    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
-  }
-  return text;
-}
-
-// `text` wrapped to kWidth columns, its first line starting at column `first`
-// and the others at `indent`.
-std::string wrap(std::string_view text, std::size_t first, std::size_t indent) {
-  constexpr std::size_t kWidth = 92;
-  std::string out;
-  std::size_t column = first;
-  bool line_start = true;
-  for (std::size_t start = 0; start < text.size();) {
-    std::size_t end = text.find(' ', start);
-    if (end == std::string_view::npos) end = text.size();
-    const std::string_view word = text.substr(start, end - start);
-    if (!line_start && column + 1 + word.size() > kWidth) {
-      out += "\n" + std::string(indent, ' ');
-      column = indent;
-      line_start = true;
-    }
-    if (!line_start) {
-      out += ' ';
-      ++column;
-    }
-    out += word;
-    column += word.size();
-    line_start = false;
-    start = end + 1;
-  }
-  return out + "\n";
-}
-
-// "  --view K        stored view 1..5": the help column starts at kColumn, or two
-// spaces after a long option.
-std::string option_help(const OptionSpec& option, bool tag_commands) {
-  constexpr std::size_t kColumn = 18;
-  std::string head = "  " + option.name + (option.value.empty() ? "" : " " + option.value);
-  head += std::string(head.size() + 2 <= kColumn ? kColumn - head.size() : 2, ' ');
-  std::string help = option.help;
-  if (tag_commands && (option.commands & kDrawing) != kDrawing) {
-    std::string names;
-    for (const CommandSpec& c : kCommands) {
-      if (option.commands & on(c.command)) names += (names.empty() ? "" : ", ") + std::string(c.name.empty() ? "window" : c.name);
-    }
-    help = "[" + names + "] " + help;
-  }
-  return head + wrap(help, head.size(), kColumn);
 }
 
 // The enumerator whose name is `text`; `what` and `plural` word the refusal:
@@ -280,145 +147,264 @@ std::vector<T> parse_list(std::string_view name, std::string_view value, std::st
   return items;
 }
 
-// The options only `atrium bench` has, or whose meaning differs there
-// (--lights takes a list). Returns false for an option that is not one.
-bool apply_bench_option(std::string_view name, std::string_view value, CliOptions& options) {
-  BenchOptions& bench = options.bench;
-  if (name == "--modes") {
-    bench.modes.clear();
-    if (value != "all") {
-      bench.modes = parse_list<std::string>(name, value, "modes (or all)", [](const std::string& mode) {
-        if (!lighting::find_technique(mode)) {
-          throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
-        }
-        return mode;
-      });
+// A flag's row: sets `field` of CliOptions (or of a member of it) to true.
+template <typename Field>
+ApplyOption set_flag(Field field) {
+  return [field](std::string_view, CliOptions& options) { field(options) = true; };
+}
+
+// Every option, each with the code that reads it. One name may appear twice
+// when its value means something else in `atrium bench` (a list there).
+const std::vector<OptionSpec>& option_table() {
+  static const std::vector<OptionSpec> table{
+      {"--mode", "M", kWindow | kRender,
+       "lighting technique (default: the scene's, 'forward'): " + lighting::technique_names(),
+       [](std::string_view value, CliOptions& o) { o.mode = std::string(value); }},
+      {"--shading", "S", kDrawing, "shading model: pbr (default), blinn-phong or phong",
+       [](std::string_view value, CliOptions& o) {
+         o.shading = std::string(value);
+         if (lighting::shading_model_index(o.shading) < 0) {
+           throw UsageError("unknown shading model '" + o.shading + "' (models: " + lighting::shading_model_names() + ")");
+         }
+       }},
+      {"--cluster-grid", "XxYxZ", kDrawing, "clustered modes: clusters per axis (default 16x9x32)",
+       [](std::string_view value, CliOptions& o) {
+         const std::string text(value);
+         const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
+         if (x1 == std::string::npos || x2 == std::string::npos) {
+           throw UsageError("--cluster-grid expects XxYxZ (e.g. 16x9x24), got '" + text + "'");
+         }
+         o.technique_options.cluster_grid = {parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
+                                             parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
+                                             parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)};
+       }},
+      {"--cluster-bounds", "B", kDrawing,
+       "clustered modes: test lights against each cluster's box of the pixels it holds (pixels, default) or its "
+       "whole frustum slice (grid)",
+       [](std::string_view value, CliOptions& o) {
+         o.technique_options.cluster_bounds =
+             parse_choice<lighting::ClusterBounds>(value, lighting::kClusterBoundsNames, "cluster bounds", "bounds");
+       }},
+      {"--active-clusters", "", kDrawing, "clustered modes, grid bounds: only clusters holding visible pixels get lights",
+       set_flag([](CliOptions& o) -> bool& { return o.technique_options.active_clusters; })},
+      {"--z-slicing", "S", kWindow | kRender | kCompare,
+       "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
+       "plain-log (logarithmic from the near plane) or uniform",
+       [](std::string_view value, CliOptions& o) {
+         o.technique_options.z_slicing = parse_choice<lighting::ZSlicing>(value, lighting::kZSlicingNames, "depth slicing", "slicings");
+       }},
+      {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)",
+       [](std::string_view value, CliOptions& o) {
+         o.bench.z_slicings = parse_list<lighting::ZSlicing>("--z-slicing", value, "slicings", [](const std::string& item) {
+           return parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
+         });
+       }},
+      {"--gbuffer", "L", kDrawing,
+       "deferred modes: G-buffer layout, full (" + gbuffer_size(lighting::GBufferLayout::Full) + ", default) or compact (" +
+           gbuffer_size(lighting::GBufferLayout::Compact) + "; position from depth, octahedral normal)",
+       [](std::string_view value, CliOptions& o) {
+         o.technique_options.gbuffer_layout =
+             parse_choice<lighting::GBufferLayout>(value, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
+       }},
+      {"--split-lighting", "", kDrawing,
+       "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
+       "diffuse-light and specular-light views turn this on while shown)",
+       set_flag([](CliOptions& o) -> bool& { return o.technique_options.split_lighting; })},
+      {"--msaa", "N", kDrawing,
+       "multisample anti-aliasing with N = 1 (off, the default), 2, 4 or 8 samples per pixel, up to what the driver "
+       "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges)",
+       [](std::string_view value, CliOptions& o) {
+         const int samples = parse_number<int>("--msaa", value, 1, 8);
+         if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
+         o.technique_options.msaa = samples;
+       }},
+      {"--shadows", "K", kWindow | kRender | kCompare,
+       "shadow maps for the K lights that matter most this frame (0, the default, is off; at most " +
+           std::to_string(shadows::kMaxShadowedLights) + "): cube maps for point lights, one map per spot light, cascades for a "
+           "directional light, in one atlas; every mode samples them (debug view shadow-atlas)",
+       [](std::string_view value, CliOptions& o) { o.shadows = parse_number<int>("--shadows", value, 0, shadows::kMaxShadowedLights); }},
+      {"--shadows", "LIST", kBench, "measure with each of these shadowed-light counts (e.g. 0,16,64)",
+       [](std::string_view value, CliOptions& o) {
+         o.bench.shadow_counts = parse_list<int>("--shadows", value, "shadowed-light counts", [](const std::string& item) {
+           return parse_number<int>("--shadows", item, 0, shadows::kMaxShadowedLights);
+         });
+       }},
+      {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)",
+       set_flag([](CliOptions& o) -> bool& { return o.bench.shadow_redraw; })},
+      {"--debug-view", "V", kWindow | kRender,
+       "show position, normal, albedo, metallic-roughness, emissive, depth, light-volumes (outlines), heatmap (lights "
+       "evaluated per pixel in the current mode), light-lists (lights in each pixel's tile or cluster list), "
+       "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
+       "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
+       "light-buffer (light-prepass: light summed before materials), msaa-edges (with --msaa: the pixels the deferred "
+       "modes shade per sample, in red), shadow-atlas (with --shadows: the shadow maps' depths)",
+       [](std::string_view value, CliOptions& o) {
+         o.debug_view = std::string(value);
+         if (lighting::debug_view_index(o.debug_view) < 0) {
+           throw UsageError("unknown debug view '" + o.debug_view + "' (views: " + lighting::debug_view_names() + ")");
+         }
+       }},
+      {"--lights", "N", kWindow | kRender | kInfo | kCompare,
+       "number of lights, 0.." + std::to_string(kMaxLights) +
+           " (built-in default: 160); for a scene its listed lights come first, then generated ones; for a glTF "
+           "model, N generated lights are added to the model's own",
+       [](std::string_view value, CliOptions& o) { o.lights = parse_number<std::uint32_t>("--lights", value, 0, kMaxLights); }},
+      {"--lights", "LIST", kBench, "comma-separated light counts to measure (default 10,50,110,1024)",
+       [](std::string_view value, CliOptions& o) {
+         o.bench.light_counts = parse_list<std::uint32_t>("--lights", value, "light counts", [](const std::string& count) {
+           return parse_number<std::uint32_t>("--lights", count, 0, kMaxLights);
+         });
+       }},
+      {"--light-radius", "R", kDrawing,
+       "every point and spot light reaches R metres (its intensity scaled to match); bench --constant-density "
+       "shrinks R as lights grow",
+       [](std::string_view value, CliOptions& o) {
+         const std::string text(value);
+         char* end = nullptr;
+         const float radius = std::strtof(text.c_str(), &end);
+         if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
+           throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
+         }
+         o.light_radius = radius;
+       }},
+      {"--max-texture-size", "N", kDrawing | kInfo,
+       "textures wider or taller than N pixels are downscaled (default: what the GL context allows, "
+       "GL_MAX_TEXTURE_SIZE)",
+       [](std::string_view value, CliOptions& o) { o.max_texture_size = parse_number<int>("--max-texture-size", value, 1, 65536); }},
+      {"--view", "K", kWindow | kRender, "stored view 1..5 (default 1)",
+       [](std::string_view value, CliOptions& o) { o.view = parse_number<int>("--view", value, 1, 1000); }},
+      {"--camera", "X,Y,Z,YAW,PITCH", kDrawing,
+       "look from here instead of the stored views (metres; degrees, yaw 0 looks along -Z, 90 along +X; pitch up > "
+       "0). The window's c key prints the camera.",
+       [](std::string_view value, CliOptions& o) {
+         o.camera = assets::parse_camera_argument(value);
+         if (!o.camera) {
+           throw UsageError("--camera expects X,Y,Z,YAW,PITCH (metres, then degrees; pitch from -90 to 90), got '" +
+                            std::string(value) + "'");
+         }
+       }},
+      {"--size", "WxH", kDrawing, "image or window size in pixels (default 1280x720; compare and bench: 320x180)",
+       [](std::string_view value, CliOptions& o) { o.size = parse_size(value); }},
+      {"--out", "FILE.png", kRender, "where to write the image", [](std::string_view value, CliOptions& o) { o.out = std::string(value); }},
+      {"--frames", "N", kWindow, "quit after N frames (for scripted runs)",
+       [](std::string_view value, CliOptions& o) { o.frames = parse_number<std::uint64_t>("--frames", value, 1, 1'000'000'000); }},
+      {"--frames", "N", kBench, "frames measured per run (default 30)",
+       [](std::string_view value, CliOptions& o) { o.bench.frames = parse_number<int>("--frames", value, 1, 100000); }},
+      {"--warmup", "N", kBench, "frames drawn before measuring each run (default 5)",
+       [](std::string_view value, CliOptions& o) { o.bench.warmup = parse_number<int>("--warmup", value, 0, 100000); }},
+      {"--frame-limit", "MS", kBench,
+       "a run stops after a frame slower than MS milliseconds (10x MS for its first frame, which compiles programs), "
+       "and the mode is skipped at larger light counts that pass it, or that would pass 4x MS if its time grew with "
+       "the lights (default 1000, in whole milliseconds; the table says why)",
+       [](std::string_view value, CliOptions& o) { o.bench.frame_limit_ms = parse_number<int>("--frame-limit", value, 1, 10000000); }},
+      {"--modes", "all|LIST", kBench, "the modes to measure (default all)",
+       [](std::string_view value, CliOptions& o) {
+         o.bench.modes.clear();
+         if (value == "all") return;
+         o.bench.modes = parse_list<std::string>("--modes", value, "modes (or all)", [](const std::string& mode) {
+           if (!lighting::find_technique(mode)) {
+             throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
+           }
+           return mode;
+         });
+       }},
+      {"--views", "all|LIST", kBench, "the stored views to measure from (default all)",
+       [](std::string_view value, CliOptions& o) {
+         o.bench.views.clear();
+         if (value == "all") return;
+         for (const std::string& view : split_list(value)) o.bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
+       }},
+      {"--constant-density", "", kBench, "shrink the light radius as the light count grows, keeping lights per pixel level",
+       set_flag([](CliOptions& o) -> bool& { return o.bench.constant_density; })},
+      {"--csv", "FILE", kBench, "write the results as CSV", [](std::string_view value, CliOptions& o) { o.csv = std::string(value); }},
+      {"--md", "FILE", kBench, "write the results as a Markdown table", [](std::string_view value, CliOptions& o) { o.md = std::string(value); }},
+      {"--plot", "FILE.png", kBench, "plot frame time against light count (python3 with matplotlib)",
+       [](std::string_view value, CliOptions& o) { o.plot = std::string(value); }},
+      {"--gl-debug", "", kWindow, "report GL errors through KHR_debug and print their count on exit (always on in debug builds)",
+       set_flag([](CliOptions& o) -> bool& { return o.gl_debug; })},
+      {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum, back-facing meshlet and occlusion culling are on by default)",
+       [](std::string_view, CliOptions& o) { o.frustum_culling = false; }},
+      {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)",
+       [](std::string_view, CliOptions& o) { o.occlusion_culling = false; }},
+      {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
+  };
+  static const std::vector<OptionSpec> with_systems = [] {
+    std::vector<OptionSpec> rows = table;
+    for (const SystemOptionSpec& s : kSystemOptions) {
+      rows.push_back({std::string(s.name), std::string(s.value), kWindow | kRender | kCompare, std::string(s.help),
+                      [s](std::string_view value, CliOptions& o) {
+                        o.system_options[std::string(s.name.substr(2))] = parse_number<int>(s.name, value, s.min, s.max);
+                      }});
     }
-  } else if (name == "--lights") {
-    bench.light_counts = parse_list<std::uint32_t>(name, value, "light counts", [](const std::string& count) {
-      return parse_number<std::uint32_t>("--lights", count, 0, kMaxLights);
-    });
-  } else if (name == "--views") {
-    bench.views.clear();
-    if (value != "all") {
-      for (const std::string& view : split_list(value)) bench.views.push_back(parse_number<int>("--views", view, 1, 1000));
-    }
-  } else if (name == "--z-slicing") {
-    bench.z_slicings = parse_list<lighting::ZSlicing>(name, value, "slicings", [](const std::string& item) {
-      return parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
-    });
-  } else if (name == "--shadows") {
-    bench.shadow_counts = parse_list<int>(name, value, "shadowed-light counts", [](const std::string& item) {
-      return parse_number<int>("--shadows", item, 0, shadows::kMaxShadowedLights);
-    });
-  } else if (name == "--shadow-redraw") {
-    bench.shadow_redraw = true;
-  } else if (name == "--frames") {
-    bench.frames = parse_number<int>("--frames", value, 1, 100000);
-  } else if (name == "--warmup") {
-    bench.warmup = parse_number<int>("--warmup", value, 0, 100000);
-  } else if (name == "--frame-limit") {
-    bench.frame_limit_ms = parse_number<int>("--frame-limit", value, 1, 10000000);
-  } else if (name == "--constant-density") {
-    bench.constant_density = true;
-  } else if (name == "--csv") {
-    options.csv = std::string(value);
-  } else if (name == "--md") {
-    options.md = std::string(value);
-  } else if (name == "--plot") {
-    options.plot = std::string(value);
-  } else {
-    return false;
+    return rows;
+  }();
+  return with_systems;
+}
+
+// "the window and `atrium render`": the commands in `commands`, for messages and help.
+std::string command_list(unsigned commands) {
+  std::vector<std::string> names;
+  for (const CommandSpec& c : kCommands) {
+    if (commands & on(c.command)) names.push_back(c.name.empty() ? "the window" : "`atrium " + std::string(c.name) + "`");
   }
-  return true;
+  std::string text;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+  }
+  return text;
+}
+
+// `text` wrapped to kWidth columns, its first line starting at column `first`
+// and the others at `indent`.
+std::string wrap(std::string_view text, std::size_t first, std::size_t indent) {
+  constexpr std::size_t kWidth = 92;
+  std::string out;
+  std::size_t column = first;
+  bool line_start = true;
+  for (std::size_t start = 0; start < text.size();) {
+    std::size_t end = text.find(' ', start);
+    if (end == std::string_view::npos) end = text.size();
+    const std::string_view word = text.substr(start, end - start);
+    if (!line_start && column + 1 + word.size() > kWidth) {
+      out += "\n" + std::string(indent, ' ');
+      column = indent;
+      line_start = true;
+    }
+    if (!line_start) {
+      out += ' ';
+      ++column;
+    }
+    out += word;
+    column += word.size();
+    line_start = false;
+    start = end + 1;
+  }
+  return out + "\n";
+}
+
+// "  --view K        stored view 1..5": the help column starts at kColumn, or two
+// spaces after a long option.
+std::string option_help(const OptionSpec& option, bool tag_commands) {
+  constexpr std::size_t kColumn = 18;
+  std::string head = "  " + option.name + (option.value.empty() ? "" : " " + option.value);
+  head += std::string(head.size() + 2 <= kColumn ? kColumn - head.size() : 2, ' ');
+  std::string help = option.help;
+  if (tag_commands && (option.commands & kDrawing) != kDrawing) {
+    std::string names;
+    for (const CommandSpec& c : kCommands) {
+      if (option.commands & on(c.command)) names += (names.empty() ? "" : ", ") + std::string(c.name.empty() ? "window" : c.name);
+    }
+    help = "[" + names + "] " + help;
+  }
+  return head + wrap(help, head.size(), kColumn);
 }
 
 // One option given on the command line, already known to belong to the command.
 void apply_option(std::string_view name, std::string_view value, CliOptions& options) {
-  if (options.command == Command::Bench && apply_bench_option(name, value, options)) return;
-  for (const SystemOptionSpec& s : kSystemOptions) {
-    if (s.name != name) continue;
-    options.system_options[std::string(name.substr(2))] = parse_number<int>(name, value, s.min, s.max);
-    return;
+  for (const OptionSpec& option : option_table()) {
+    if (option.name == name && (option.commands & on(options.command))) return option.apply(value, options);
   }
-  if (name == "--mode") {
-    options.mode = std::string(value);
-  } else if (name == "--cluster-grid") {
-    const std::string text(value);
-    const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
-    if (x1 == std::string::npos || x2 == std::string::npos) {
-      throw UsageError("--cluster-grid expects XxYxZ (e.g. 16x9x24), got '" + text + "'");
-    }
-    options.technique_options.cluster_grid = {
-        parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
-        parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
-        parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)};
-  } else if (name == "--active-clusters") {
-    options.technique_options.active_clusters = true;
-  } else if (name == "--cluster-bounds") {
-    options.technique_options.cluster_bounds =
-        parse_choice<lighting::ClusterBounds>(value, lighting::kClusterBoundsNames, "cluster bounds", "bounds");
-  } else if (name == "--z-slicing") {
-    options.technique_options.z_slicing =
-        parse_choice<lighting::ZSlicing>(value, lighting::kZSlicingNames, "depth slicing", "slicings");
-  } else if (name == "--split-lighting") {
-    options.technique_options.split_lighting = true;
-  } else if (name == "--gbuffer") {
-    options.technique_options.gbuffer_layout =
-        parse_choice<lighting::GBufferLayout>(value, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
-  } else if (name == "--msaa") {
-    const int samples = parse_number<int>("--msaa", value, 1, 8);
-    if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
-    options.technique_options.msaa = samples;
-  } else if (name == "--shadows") {
-    options.shadows = parse_number<int>("--shadows", value, 0, shadows::kMaxShadowedLights);
-  } else if (name == "--debug-view") {
-    options.debug_view = std::string(value);
-    if (lighting::debug_view_index(options.debug_view) < 0) {
-      throw UsageError("unknown debug view '" + options.debug_view + "' (views: " + lighting::debug_view_names() + ")");
-    }
-  } else if (name == "--shading") {
-    options.shading = std::string(value);
-    if (lighting::shading_model_index(options.shading) < 0) {
-      throw UsageError("unknown shading model '" + options.shading + "' (models: " + lighting::shading_model_names() + ")");
-    }
-  } else if (name == "--lights") {
-    options.lights = parse_number<std::uint32_t>("--lights", value, 0, kMaxLights);
-  } else if (name == "--light-radius") {
-    const std::string text(value);
-    char* end = nullptr;
-    const float radius = std::strtof(text.c_str(), &end);
-    if (end == text.c_str() || *end != '\0' || !(radius > 0.0f) || !std::isfinite(radius)) {
-      throw UsageError("--light-radius expects a positive number of metres, got '" + text + "'");
-    }
-    options.light_radius = radius;
-  } else if (name == "--max-texture-size") {
-    options.max_texture_size = parse_number<int>("--max-texture-size", value, 1, 65536);
-  } else if (name == "--view") {
-    options.view = parse_number<int>("--view", value, 1, 1000);
-  } else if (name == "--camera") {
-    options.camera = assets::parse_camera_argument(value);
-    if (!options.camera) {
-      throw UsageError("--camera expects X,Y,Z,YAW,PITCH (metres, then degrees; pitch from -90 to 90), got '" +
-                       std::string(value) + "'");
-    }
-  } else if (name == "--size") {
-    options.size = parse_size(value);
-  } else if (name == "--out") {
-    options.out = std::string(value);
-  } else if (name == "--json") {
-    options.json = true;
-  } else if (name == "--frames") {
-    options.frames = parse_number<std::uint64_t>("--frames", value, 1, 1'000'000'000);
-  } else if (name == "--no-culling") {
-    options.frustum_culling = false;
-  } else if (name == "--no-occlusion-culling") {
-    options.occlusion_culling = false;
-  } else if (name == "--gl-debug") {
-    options.gl_debug = true;
-  } else {
-    throw std::logic_error("the option table names " + std::string(name) + " but nothing reads it");
-  }
+  throw std::logic_error("no option row reads " + std::string(name));
 }
 
 // Edit distance with adjacent transpositions: how far a misspelt option is from a real one.
