@@ -15,6 +15,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli.hpp"
+#include "assets/model_import.hpp"
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
@@ -475,9 +476,8 @@ std::string help_text(Command command) {
     text += "  atrium --version                          print the version\n"
             "  atrium [COMMAND] --help                   this text, or one command's options\n"
             "\n"
-            "SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json,\n"
-            "see docs/scene-format.md) or a model file: glTF (.gltf, .glb), OBJ, FBX and the other\n"
-            "formats libassimp reads (.dae, .3ds, .ply, .stl, .x, .lwo, .ase, .off).\n"
+            + wrap("SCENE is the built-in scene 'atrium' (the default), a scene file (scenes/*.json, see "
+                   "docs/scene-format.md) or a model file: " + assets::model_formats_text() + ".", 0, 0) +
             "Options take their value as `--opt value` or `--opt=value`; the last one given wins.\n"
             "\n"
             "Options ([render, bench]: only for those commands; the others are for every command that draws):\n";

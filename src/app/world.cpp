@@ -64,7 +64,7 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
     throw InputError(e.what());
   }
   throw InputError(options.scene + ": unknown scene (expected the built-in scene '" + std::string(assets::kBuiltinSceneName) +
-                   "', a scene file .json, or a model: .gltf, .glb, .obj, .fbx, ...)");
+                   "', a scene file .json, or a model: " + assets::model_formats_text() + ")");
 }
 
 void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene, std::optional<float> radius) {

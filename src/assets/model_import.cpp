@@ -15,11 +15,37 @@ std::string extension_of(const std::filesystem::path& path) {
   return extension;
 }
 
-// The formats Atrium offers (assimp reads more; these are the ones tested or
-// common among the scenes users bring).
-constexpr std::array kAssimpExtensions{".obj", ".fbx", ".dae", ".3ds", ".ply", ".stl", ".x", ".lwo", ".ase", ".off"};
+const ModelFormat* format_of(const std::filesystem::path& path) {
+  const std::string extension = extension_of(path);
+  for (const ModelFormat& format : model_formats()) {
+    if (std::find(format.extensions.begin(), format.extensions.end(), extension) != format.extensions.end()) return &format;
+  }
+  return nullptr;
+}
 
 }  // namespace
+
+std::span<const ModelFormat> model_formats() {
+  // libassimp reads more than its row lists: these are the ones tested or
+  // common among the scenes users bring.
+  static const std::array<ModelFormat, 2> formats{
+      ModelFormat{"glTF", {".gltf", ".glb"}, import_gltf},
+      ModelFormat{"OBJ, FBX and the other formats libassimp reads",
+                  {".obj", ".fbx", ".dae", ".3ds", ".ply", ".stl", ".x", ".lwo", ".ase", ".off"},
+                  import_assimp},
+  };
+  return formats;
+}
+
+std::string model_formats_text() {
+  std::string text;
+  for (const ModelFormat& format : model_formats()) {
+    std::string extensions;
+    for (const std::string_view extension : format.extensions) extensions += (extensions.empty() ? "" : ", ") + std::string(extension);
+    text += (text.empty() ? "" : "; ") + std::string(format.name) + " (" + extensions + ")";
+  }
+  return text;
+}
 
 std::optional<MaterialConvention> material_convention(std::string_view name) {
   if (name == "gltf") return MaterialConvention::Gltf;
@@ -28,16 +54,12 @@ std::optional<MaterialConvention> material_convention(std::string_view name) {
   return std::nullopt;
 }
 
-bool is_model_file(const std::filesystem::path& path) {
-  const std::string extension = extension_of(path);
-  return extension == ".gltf" || extension == ".glb" ||
-         std::find(kAssimpExtensions.begin(), kAssimpExtensions.end(), extension) != kAssimpExtensions.end();
-}
+bool is_model_file(const std::filesystem::path& path) { return format_of(path) != nullptr; }
 
 ModelImport import_model(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options) {
-  const std::string extension = extension_of(path);
-  if (extension == ".gltf" || extension == ".glb") return import_gltf(path, assets, options);
-  return import_assimp(path, assets, options);
+  const ModelFormat* format = format_of(path);
+  if (!format) throw ImportError(path.string() + ": not a model file Atrium reads (" + model_formats_text() + ")");
+  return format->import(path, assets, options);
 }
 
 }  // namespace atrium::assets

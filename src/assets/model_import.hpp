@@ -1,12 +1,14 @@
 // What importing a model file gives, whatever its format: a MeshAsset in the
 // AssetManager plus instances and lights for a scene, and what loading cost.
-// import_model picks the importer by extension: glTF (.gltf, .glb) through
-// gltf_import.hpp, everything else Debian's libassimp reads (.obj with .mtl,
-// .fbx, ...) through assimp_import.hpp.
+// import_model picks the importer by extension from one table, model_formats():
+// glTF (.gltf, .glb) through gltf_import.hpp, what Debian's libassimp reads
+// (.obj with .mtl, .fbx, ...) through assimp_import.hpp. A new format is its
+// importer's file pair and one row; help and messages are built from the table.
 #pragma once
 
 #include <filesystem>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -68,7 +70,18 @@ struct ImportOptions {
 // "gltf", "bistro", "phong"; nullopt for another name.
 [[nodiscard]] std::optional<MaterialConvention> material_convention(std::string_view name);
 
-// The file formats import_model reads, by extension (lower case, with the dot).
+// A file format import_model reads: its name, its extensions (lower case,
+// with the dot) and its importer (which throws ImportError naming the file).
+struct ModelFormat {
+  std::string_view name;
+  std::vector<std::string_view> extensions;
+  ModelImport (*import)(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options);
+};
+[[nodiscard]] std::span<const ModelFormat> model_formats();
+// "glTF (.gltf, .glb); OBJ, FBX and the other formats libassimp reads (.obj, ...)".
+[[nodiscard]] std::string model_formats_text();
+
+// Whether the extension (in any letter case) is one of model_formats()'.
 [[nodiscard]] bool is_model_file(const std::filesystem::path& path);
 
 // Throws ImportError("<path>: <problem>") when the file cannot be used.

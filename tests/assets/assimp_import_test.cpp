@@ -9,6 +9,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "assets/assimp_import.hpp"
@@ -282,6 +284,37 @@ TEST(ModelImport, ConventionsAndFormatsHaveOneNameEach) {
   EXPECT_FALSE(material_convention("unreal"));
   for (const char* file : {"a.gltf", "a.GLB", "b.obj", "c.FBX", "d.dae", "e.3ds", "f.ply"}) EXPECT_TRUE(is_model_file(file)) << file;
   for (const char* file : {"a.json", "b.png", "c", "d.mtl"}) EXPECT_FALSE(is_model_file(file)) << file;
+}
+
+// The format table routes each extension to its importer: a file each row
+// claims is read by that row's importer (the same file under each extension
+// of the row fails the same way), and a file no row claims is refused naming
+// every format.
+TEST(ModelImport, TheFormatTableRoutesEveryExtensionAndNamesThemWhenNoneFits) {
+  const std::filesystem::path folder = std::filesystem::temp_directory_path() / ("atrium_formats_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  for (const ModelFormat& format : model_formats()) {
+    for (const std::string_view extension : format.extensions) {
+      const std::filesystem::path file = folder / ("empty" + std::string(extension));
+      std::ofstream(file) << "";
+      AssetManager assets;
+      try {
+        (void)import_model(file, assets);
+        ADD_FAILURE() << file << " imported from an empty file";
+      } catch (const ImportError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(file.string() + ": ", 0), 0u) << format.name << ": " << e.what();
+      }
+    }
+  }
+  AssetManager assets;
+  try {
+    (void)import_model(folder / "model.blend", assets);
+    ADD_FAILURE() << ".blend imported";
+  } catch (const ImportError& e) {
+    EXPECT_EQ(std::string(e.what()), (folder / "model.blend").string() + ": not a model file Atrium reads (" + model_formats_text() + ")");
+  }
+  EXPECT_NE(model_formats_text().find("glTF (.gltf, .glb)"), std::string::npos);
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
