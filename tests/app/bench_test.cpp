@@ -183,7 +183,7 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   scene.lights.push_back({glm::vec3(2, 2, 0), glm::vec3(1.0f), 1.0f, 100.0f});
   for (int i = 0; i < 4; ++i) scene.lights.push_back({glm::vec3(static_cast<float>(i), 60.0f, 0.0f), glm::vec3(1.0f), 1.0f, 5.0f});
   scene.views.push_back({"down", glm::vec3(0, 10, 0), 0.0f, -89.9f});
-  World world(std::move(manager), std::move(scene), {"", std::nullopt, "forward", 1, {64, 36}});
+  World world(std::move(manager), std::move(scene), {.scene = "", .mode = "forward", .size = {64, 36}});
   auto& settings = world.registry().resource<RendererSettings>();
   settings.debug_view = "heatmap";
   auto evaluated = [&](const char* mode) {

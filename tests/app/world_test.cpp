@@ -24,7 +24,7 @@ std::vector<glm::vec3> light_positions(World& world) {
 }
 
 TEST_F(WorldControls, DoublingAndHalvingTheLightsKeepsTheLightsThatStay) {
-  World world({"atrium", 40u, "deferred", 1, {64, 36}});
+  World world({.scene = "atrium", .lights = 40u, .mode = "deferred", .size = {64, 36}});
   const auto forty = light_positions(world);
   world.set_light_count(80);
   world.frame(0.0);
@@ -68,7 +68,7 @@ TEST_F(WorldControls, ShaderReloadKeepsTheOldProgramWhenTheNewOneFails) {
 }
 
 TEST_F(WorldControls, ReloadingTheEngineShadersKeepsThePicture) {
-  World world({"atrium", 24u, "clustered-deferred", 1, {96, 54}});
+  World world({.scene = "atrium", .lights = 24u, .mode = "clustered-deferred", .size = {96, 54}});
   world.frame(0.0);
   const assets::Image before = world.renderer().read_output();
   EXPECT_TRUE(world.reload_shaders().empty());

@@ -58,7 +58,7 @@ TEST_F(GlObjects, MovingTransfersOwnershipWithoutDoubleDelete) {
 TEST_F(GlObjects, AWholeWorldReleasesEverythingItCreated) {
   const std::int64_t before = live_gl_objects();
   for (int cycle = 0; cycle < 2; ++cycle) {
-    World world({"atrium", 16u, std::nullopt, 1, {64, 36}});
+    World world({.scene = "atrium", .lights = 16u, .mode = std::nullopt, .size = {64, 36}});
     world.frame(0.0);
     EXPECT_GT(live_gl_objects(), before);
   }

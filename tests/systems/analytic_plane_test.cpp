@@ -46,7 +46,7 @@ std::unique_ptr<World> plane_world(const Case& c, const char* mode) {
   scene.views.push_back({"above", glm::vec3(0.0f, 4.0f, 4.5f), 0.0f, -50.0f});
   scene.ambient = glm::vec3(0.03f);
   scene.exposure = 1.3f;
-  return std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize});
+  return std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{.scene = "", .mode = mode, .size = kSize});
 }
 
 // Where the ray through pixel centre (x, y_up) (GL's rows, bottom-up) meets the

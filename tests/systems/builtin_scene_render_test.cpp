@@ -26,7 +26,7 @@ struct ViewFrame {
 class BuiltinSceneRender : public testing::GlTest {
  protected:
   static void SetUpTestSuite() {
-    World world({"atrium", std::nullopt, "forward", 1, kSize});
+    World world({.scene = "atrium", .mode = "forward", .size = kSize});
     frames_ = new std::vector<ViewFrame>();
     for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) {
       world.set_view(v);

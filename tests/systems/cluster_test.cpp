@@ -55,7 +55,7 @@ std::string name_of(lighting::ZSlicing slicing) { return std::string(lighting::k
 TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
   for (const lighting::ZSlicing slicing : kSlicings) {
     SCOPED_TRACE(name_of(slicing));
-    World world({"atrium", 300u, "clustered-deferred", 3, {160, 90}});
+    World world({.scene = "atrium", .lights = 300u, .mode = "clustered-deferred", .view = 3, .size = {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
     options.cluster_grid = {4, 3, 6};
     options.cluster_bounds = lighting::ClusterBounds::Grid;
@@ -109,7 +109,7 @@ TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder
   // More lights than one assignment invocation tests (kAssignLightChunk), small
   // enough to keep the lists short: the chunks' ranges must join up in order.
   constexpr std::uint32_t kLights = 2 * lighting::kAssignLightChunk + 5000;
-  World world({"atrium", kLights, "clustered-forward", 1, {96, 54}, "pbr", "", {}, 0.4f});
+  World world({.scene = "atrium", .lights = kLights, .mode = "clustered-forward", .size = {96, 54}, .light_radius = 0.4f});
   world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   draw_settled(world);
@@ -123,7 +123,7 @@ TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder
 }
 
 TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
-  World world({"atrium", 16u, "clustered-forward", 1, {64, 36}});
+  World world({.scene = "atrium", .lights = 16u, .mode = "clustered-forward", .size = {64, 36}});
   world.frame(0.0);
   for (int step = 0; step < 20; ++step) {
     // Walking through the court keeps the depth planes, and so the projection.
@@ -141,7 +141,7 @@ TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
 TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
   for (const lighting::ZSlicing slicing : kSlicings) {
     SCOPED_TRACE(name_of(slicing));
-    World world({"atrium", 4u, "clustered-deferred", 1, {64, 36}});
+    World world({.scene = "atrium", .lights = 4u, .mode = "clustered-deferred", .size = {64, 36}});
     world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
     world.frame(0.0);
     const lighting::ClusterGrid& grid = grid_of(world);
@@ -171,7 +171,7 @@ TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
 // Slicing moves lights between lists, never out of the picture: both clustered
 // modes under each scheme, with grid and pixel bounds, draw forward's image.
 TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
-  World world({"atrium", 400u, "forward", 2, {160, 90}});
+  World world({.scene = "atrium", .lights = 400u, .mode = "forward", .view = 2, .size = {160, 90}});
   world.frame(0.0);
   const assets::Image reference = world.renderer().read_output();
   auto& options = world.registry().resource<RendererSettings>().technique_options;
@@ -191,7 +191,7 @@ TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
 
 TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
   constexpr glm::ivec2 kSize{96, 54};
-  World world({"atrium", 1024u, "forward", 1, kSize});
+  World world({.scene = "atrium", .lights = 1024u, .mode = "forward", .size = kSize});
   world.frame(0.0);
   const assets::Image reference = world.renderer().read_output();
   world.set_mode("clustered-deferred");
@@ -210,7 +210,7 @@ TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
 }
 
 TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
-  World world({"atrium", 200u, "clustered-deferred", 2, {96, 54}});
+  World world({.scene = "atrium", .lights = 200u, .mode = "clustered-deferred", .view = 2, .size = {96, 54}});
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   world.frame(0.0);
   const assets::Image all = world.renderer().read_output();
@@ -226,7 +226,7 @@ TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
 // evaluated per pixel.
 TEST_F(ClusterGridTest, PixelBoundsKeepEveryLightThatReachesAPixelAndDropMostThatDoNot) {
   for (const int view : {1, 3, 5}) {
-    World world({"atrium", 1024u, "clustered-deferred", view, {160, 90}});
+    World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .view = view, .size = {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
     options.cluster_bounds = lighting::ClusterBounds::Grid;
     draw_settled(world);
@@ -261,7 +261,7 @@ double evaluated_per_pixel(World& world, const std::string& mode) {
 TEST_F(ClusterGridTest, PixelBoundsEvaluateAtLeastSevenOfTenLightsThatReachOnTheBuiltinSceneAt1024Lights) {
   double evaluated = 0.0, reaching = 0.0;
   for (int view = 1; view <= 5; ++view) {
-    World world({"atrium", 1024u, "clustered-deferred", view, {320, 180}});
+    World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .view = view, .size = {320, 180}});
     reaching += evaluated_per_pixel(world, "deferred-radius");
     evaluated += evaluated_per_pixel(world, "clustered-deferred");
   }

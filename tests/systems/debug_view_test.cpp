@@ -25,7 +25,7 @@ using DebugViewRender = testing::GlTest;
 TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
   // Clustered deferred has a G-buffer and light lists, and with shadows on an
   // atlas: every view has something to show.
-  World world({"atrium", 48u, "clustered-deferred", 1, kSize});
+  World world({.scene = "atrium", .lights = 48u, .mode = "clustered-deferred", .size = kSize});
   world.registry().resource<RendererSettings>().shadows = 8;
   std::vector<assets::Image> images;
   for (const auto name : lighting::kDebugViews) {
@@ -84,7 +84,7 @@ World stacked_quads(const std::string& mode) {
   scene.instances.push_back({manager.add_mesh_asset(std::move(asset)), 0, Transform{}});
   scene.lights.push_back({glm::vec3(0, 0, 2), glm::vec3(1.0f), 1.0f, 50.0f});
   scene.views.push_back({"front", glm::vec3(0.0f, 0.0f, 3.0f), 0.0f, 0.0f});
-  return World(std::move(manager), std::move(scene), {"", std::nullopt, mode, 1, kSize});
+  return World(std::move(manager), std::move(scene), {.scene = "", .mode = mode, .size = kSize});
 }
 
 TEST_F(DebugViewRender, FragmentsViewCountsWhatEachGeometryPassRasterises) {
@@ -113,7 +113,7 @@ TEST_F(DebugViewRender, FragmentsViewCountsWhatEachGeometryPassRasterises) {
 
 TEST_F(DebugViewRender, HeatmapCountsWhatEachModeEvaluates) {
   constexpr std::uint32_t kLights = 40;
-  World world({"atrium", kLights, "deferred", 1, kSize});
+  World world({.scene = "atrium", .lights = kLights, .mode = "deferred", .size = kSize});
   world.registry().resource<RendererSettings>().debug_view = "heatmap";
   const double deferred = evaluations(world, "deferred");
   // Deferred evaluates every light once for every covered pixel, exactly.
@@ -202,7 +202,7 @@ Majority<Key> majority_colours(const std::map<Key, std::map<Rgb, int>>& colours)
 class LightListView : public testing::GlTest, public ::testing::WithParamInterface<std::string> {};
 
 TEST_P(LightListView, ColoursEachPixelByItsBinsLightCount) {
-  World world({"atrium", 256u, GetParam(), 1, kSize});
+  World world({.scene = "atrium", .lights = 256u, .mode = GetParam(), .size = kSize});
   world.registry().resource<RendererSettings>().debug_view = "light-lists";
   world.frame(0.0);
   world.frame(0.0);
@@ -250,7 +250,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, LightListView, ::testing::Values("tiled-deferred
                          });
 
 TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
-  World world({"atrium", 1024u, "clustered-deferred", 1, kSize});
+  World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .size = kSize});
   world.registry().resource<RendererSettings>().debug_view = "light-lists";
   auto magenta_pixels = [&] {
     const assets::Image image = world.renderer().read_output();
@@ -268,7 +268,7 @@ TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
 }
 
 TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
-  World world({"atrium", 16u, "deferred", 1, kSize});
+  World world({.scene = "atrium", .lights = 16u, .mode = "deferred", .size = kSize});
   world.registry().resource<RendererSettings>().debug_view = "light-lists";
   world.frame(0.0);
   const assets::Image image = world.renderer().read_output();
@@ -279,7 +279,7 @@ TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
 // The light-sum views and thumbnails: grey until a deferred mode writes the sums
 // apart (forward modes never do), the sums once it does.
 TEST_F(DebugViewRender, LightSumViewsAndThumbnailsShowTheSplitOfDeferredModesOnly) {
-  World world({"atrium", 48u, "forward", 1, kSize});
+  World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = kSize});
   auto& settings = world.registry().resource<RendererSettings>();
   for (const char* view : {"diffuse-light", "specular-light"}) {
     settings.debug_view = view;
@@ -326,7 +326,7 @@ TEST_F(DebugViewRender, LightSumViewsAndThumbnailsShowTheSplitOfDeferredModesOnl
 // The light pre-pass shows its own thin G-buffer (what it does not store is
 // grey) and its light buffer; modes without a light buffer show grey there.
 TEST_F(DebugViewRender, LightPrepassShowsItsThinGBufferAndLightBuffer) {
-  World world({"atrium", 48u, "deferred", 1, kSize});
+  World world({.scene = "atrium", .lights = 48u, .mode = "deferred", .size = kSize});
   auto& settings = world.registry().resource<RendererSettings>();
   auto colours_of = [](const assets::Image& image) {
     std::set<Rgb> colours;
@@ -367,7 +367,7 @@ TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyModeAndScheme) {
     for (std::size_t scheme = 0; scheme < lighting::kZSlicingNames.size(); ++scheme) {
       const auto slicing = static_cast<lighting::ZSlicing>(scheme);
       const std::string label = std::string(mode) + "/" + std::string(lighting::kZSlicingNames[scheme]);
-      World world({"atrium", 16u, mode, 1, kSize});
+      World world({.scene = "atrium", .lights = 16u, .mode = mode, .size = kSize});
       world.registry().resource<RendererSettings>().debug_view = "depth-slices";
       world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
       world.frame(0.0);

@@ -60,7 +60,7 @@ auto state_of(const DrawBatch& b) { return std::tuple(b.vertex_array, b.textures
 
 TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIsVisible) {
   for (int view = 1; view <= 5; ++view) {
-    World world({"atrium", 8u, "deferred", view, {160, 90}});
+    World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .view = view, .size = {160, 90}});
     world.frame(0.0);
     auto& registry = world.registry();
     const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
@@ -123,7 +123,7 @@ TEST_F(DrawListTest, BlendedDrawsComeFarthestFirstAndNeighboursOfOneStateShareAD
     scene.instances.push_back({handle, 0, transform});
   }
   scene.views.push_back({"eye", glm::vec3(0.0f, 0.0f, 4.0f), 0.0f, 0.0f});
-  World world(std::move(manager), std::move(scene), WorldOptions{"", 0u, "forward", 1, {64, 36}});
+  World world(std::move(manager), std::move(scene), WorldOptions{.scene = "", .lights = 0u, .mode = "forward", .size = {64, 36}});
   world.frame(0.0);
   auto& registry = world.registry();
   const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),

@@ -53,7 +53,7 @@ using FrustumCulling = testing::GlTest;
 constexpr glm::ivec2 kSize{160, 90};
 
 TEST_F(FrustumCulling, ChangesNoPixelOfAnyViewOrModeAndDropsWhatIsOutOfView) {
-  WorldOptions culled_options{"atrium", 48u, "forward", 1, kSize};
+  WorldOptions culled_options{.scene = "atrium", .lights = 48u, .mode = "forward", .size = kSize};
   WorldOptions whole_options = culled_options;
   whole_options.frustum_culling = false;
   World culled(culled_options);
@@ -95,7 +95,7 @@ std::unique_ptr<World> spheres(bool culling) {
   scene.instances.push_back({handle, 0, Transform{glm::vec3(2.5f, 0.0f, 0.0f), turn, glm::vec3(0.6f, 1.6f, 1.0f)}});
   scene.lights.push_back({glm::vec3(0.0f, 2.0f, 4.0f), glm::vec3(1.0f), 8.0f, 20.0f});
   scene.views.push_back({"front", glm::vec3(0.0f, 0.0f, 6.0f), 0.0f, 0.0f});
-  WorldOptions options{"", std::nullopt, "forward", 1, kSize};
+  WorldOptions options{.scene = "", .mode = "forward", .size = kSize};
   options.frustum_culling = culling;
   return std::make_unique<World>(std::move(manager), std::move(scene), options);
 }
@@ -128,7 +128,7 @@ TEST_F(FrustumCulling, MeshletsFacingAwayAreDroppedWithoutChangingAPixelOfMirror
 }
 
 TEST_F(FrustumCulling, ACameraLookingAwayFromTheSceneDrawsNothingButTheBackground) {
-  WorldOptions options{"atrium", 16u, "clustered-deferred", 1, kSize};
+  WorldOptions options{.scene = "atrium", .lights = 16u, .mode = "clustered-deferred", .size = kSize};
   options.camera = assets::NamedView{"away", glm::vec3(0.0f, 5.0f, 60.0f), 180.0f, 0.0f};  // yaw 180 looks along +Z
   World world(options);
   world.frame(0.0);
@@ -144,7 +144,7 @@ TEST_F(FrustumCulling, ACameraLookingAwayFromTheSceneDrawsNothingButTheBackgroun
 }
 
 TEST_F(FrustumCulling, AnEntityMovedOutOfViewLeavesTheDrawAndItsBoxFollowsIt) {
-  World world({"atrium", 8u, "forward", 4, kSize});  // the overview sees every entity
+  World world({.scene = "atrium", .lights = 8u, .mode = "forward", .view = 4, .size = kSize});  // the overview sees every entity
   world.frame(0.0);
   auto& registry = world.registry();
   ecs::Entity moved{};
@@ -169,9 +169,9 @@ TEST_F(FrustumCulling, AnEntityMovedOutOfViewLeavesTheDrawAndItsBoxFollowsIt) {
 const std::string kGrid = std::string(ATRIUM_SOURCE_DIR) + "/scenes/courtyard-grid.json";
 
 TEST_F(FrustumCulling, TheGridSceneIsBistroScaleAndDrawsWithTheDrawCallsOfOneCourtyard) {
-  World single({"atrium", 0u, "deferred", 4, kSize});
+  World single({.scene = "atrium", .lights = 0u, .mode = "deferred", .view = 4, .size = kSize});
   single.frame(0.0);
-  World grid({kGrid, std::nullopt, "deferred", 1, kSize});
+  World grid({.scene = kGrid, .mode = "deferred", .size = kSize});
   grid.frame(0.0);
   const FrameStats& stats = grid.renderer().stats();
   EXPECT_GE(stats.triangles, 2'500'000u);
@@ -187,7 +187,7 @@ TEST_F(FrustumCulling, TheGridSceneIsBistroScaleAndDrawsWithTheDrawCallsOfOneCou
 }
 
 TEST_F(FrustumCulling, TheGridSceneDrawsTheForwardPictureInClusteredModes) {
-  World grid({kGrid, std::nullopt, "forward", 3, kSize});
+  World grid({.scene = kGrid, .mode = "forward", .view = 3, .size = kSize});
   grid.frame(0.0);
   const assets::Image reference = grid.renderer().read_output();
   assets::write_png("grid_view_3_forward.png", reference);

@@ -107,8 +107,8 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
 }
 
 TEST_F(CompactGBuffer, DrawsWhatTheFullLayoutDrawsInEveryDeferredMode) {
-  World full({"atrium", std::nullopt, "deferred", 1, {160, 90}, "pbr", "", testing::with_layout(lighting::GBufferLayout::Full)});
-  World compact({"atrium", std::nullopt, "deferred", 1, {160, 90}, "pbr", "", testing::with_layout(lighting::GBufferLayout::Compact)});
+  World full({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Full)});
+  World compact({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Compact)});
   for (const std::string& mode : testing::non_forward_modes()) {
     if (mode == "clustered-forward") continue;  // no G-buffer
     double worst = 1e9;

@@ -25,7 +25,7 @@ Snapshot snapshot() { return {gfx::live_gl_objects(), gfx::estimated_gpu_memory_
 std::ostream& operator<<(std::ostream& out, const Snapshot& s) { return out << s.objects << " objects, " << s.bytes << " bytes"; }
 
 TEST_F(Leaks, AThousandModeSwitchesAndAHundredResizesLeaveNothingBehind) {
-  World world({kTeapot, 48u, "forward", 1, {48, 27}});
+  World world({.scene = kTeapot, .lights = 48u, .mode = "forward", .size = {48, 27}});
   auto& settings = world.registry().resource<RendererSettings>();
   settings.gbuffer_thumbnails = true;
   const auto modes = lighting::technique_table();
@@ -74,7 +74,7 @@ TEST_F(Leaks, AThousandModeSwitchesAndAHundredResizesLeaveNothingBehind) {
 // Shadows: the atlas is made when K turns from 0 and given back at 0; between
 // mode switches and K changes its objects and memory stay where they were.
 TEST_F(Leaks, AThousandModeSwitchesAndShadowCountChangesLeaveTheAtlasAsItWas) {
-  World world({kTeapot, 24u, "forward", 1, {48, 27}});
+  World world({.scene = kTeapot, .lights = 24u, .mode = "forward", .size = {48, 27}});
   auto& settings = world.registry().resource<RendererSettings>();
   const auto modes = lighting::technique_table();
   const int counts[] = {4, 0, 16, 1, 8};
@@ -103,7 +103,7 @@ TEST_F(Leaks, AThousandModeSwitchesAndShadowCountChangesLeaveTheAtlasAsItWas) {
 TEST_F(Leaks, TenSceneReloadsGiveEveryObjectBack) {
   const Snapshot before = snapshot();
   for (int i = 0; i < 10; ++i) {
-    World world({kTeapot, 16u, i % 2 ? "tiled-deferred" : "clustered-forward", 1, {48, 27}});
+    World world({.scene = kTeapot, .lights = 16u, .mode = i % 2 ? "tiled-deferred" : "clustered-forward", .size = {48, 27}});
     world.frame(0.0);
     EXPECT_GT(snapshot().bytes, before.bytes);
   }

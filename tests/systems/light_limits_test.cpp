@@ -47,7 +47,7 @@ std::string refusal(World& world) {
 
 TEST_F(LightLimits, AMillionSmallLightsRenderAlikeInTiledAndClusteredModes) {
   // 10 cm lights: a million of them scatter specks over the courtyard.
-  World world({"atrium", kMillion, "tiled-deferred", 1, {160, 90}, "pbr", "", {}, 0.1f});
+  World world({.scene = "atrium", .lights = kMillion, .mode = "tiled-deferred", .size = {160, 90}, .light_radius = 0.1f});
   world.frame(0.0);
   const assets::Image tiled = world.renderer().read_output();
   EXPECT_EQ(world.renderer().stats().lights, kMillion);
@@ -65,7 +65,7 @@ TEST_F(LightLimits, AMillionSmallLightsRenderAlikeInTiledAndClusteredModes) {
 
 TEST_F(LightLimits, AMillionLightsWhoseListsCannotFitAreRefusedNamingTheMemory) {
   // With their own radii (metres each) the lists would need hundreds of MiB.
-  World world({"atrium", kMillion, "clustered-deferred", 1, {64, 36}});
+  World world({.scene = "atrium", .lights = kMillion, .mode = "clustered-deferred", .size = {64, 36}});
   // The whole frustum slice per cluster (pixel bounds keep these lists small enough).
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   const std::string message = refusal(world);
@@ -80,7 +80,7 @@ TEST_F(LightLimits, AMillionLightsWhoseListsCannotFitAreRefusedNamingTheMemory) 
 TEST_F(LightLimits, ModesThatLoopOverEveryLightRefuseWhatTheDriverCannotLoop) {
   const std::uint32_t limit = gfx::shader_loop_limit();
   if (!limit) GTEST_SKIP() << "this driver has no loop limit";
-  World world({"atrium", limit + 1, "forward", 1, {32, 18}});
+  World world({.scene = "atrium", .lights = limit + 1, .mode = "forward", .size = {32, 18}});
   for (const char* mode : {"forward", "deferred", "deferred-radius"}) {
     world.set_mode(mode);
     EXPECT_THAT(refusal(world), HasSubstr(std::string(mode) + " with " + std::to_string(limit + 1) +
@@ -97,7 +97,7 @@ TEST_F(LightLimits, GlassUnderMoreLightsThanTheDriverCanLoopRendersAlikeInTiledA
   const std::uint32_t limit = gfx::shader_loop_limit();
   if (!limit) GTEST_SKIP() << "this driver has no loop limit";
   const std::string glass = std::string(ATRIUM_SOURCE_DIR) + "/tests/data/gltf-tools/blender-glass.glb";
-  WorldOptions options{glass, limit + 1, "clustered-deferred", 1, {160, 90}};
+  WorldOptions options{.scene = glass, .lights = limit + 1, .mode = "clustered-deferred", .size = {160, 90}};
   options.light_radius = 0.4f;
   World world(options);
   world.frame(0.0);

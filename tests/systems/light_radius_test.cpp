@@ -25,10 +25,10 @@ assets::Image render(World& world) {
 TEST_F(LightRadiusTest, SettingARadiusLiveDrawsWhatSpawningWithItDraws) {
   std::vector<assets::Image> live_images;
   for (const float radius : {2.0f, 8.0f}) {
-    WorldOptions spawned_options{"atrium", 64u, "clustered-deferred", 1, kSize};
+    WorldOptions spawned_options{.scene = "atrium", .lights = 64u, .mode = "clustered-deferred", .size = kSize};
     spawned_options.light_radius = radius;
     World spawned(spawned_options);
-    World live({"atrium", 64u, "clustered-deferred", 1, kSize});
+    World live({.scene = "atrium", .lights = 64u, .mode = "clustered-deferred", .size = kSize});
     set_every_light_radius(live.registry(), radius);
     const assets::Image expected = render(spawned);
     live_images.push_back(render(live));
@@ -38,7 +38,7 @@ TEST_F(LightRadiusTest, SettingARadiusLiveDrawsWhatSpawningWithItDraws) {
 }
 
 TEST_F(LightRadiusTest, DirectionalLightsKeepTheirIntensityAndHaveNoRadius) {
-  World world({"atrium", 8u, "forward", 1, kSize});
+  World world({.scene = "atrium", .lights = 8u, .mode = "forward", .size = kSize});
   auto& registry = world.registry();
   const ecs::Entity sun = registry.create();
   registry.add<LightColor>(sun, glm::vec3(1.0f), 0.7f);

@@ -68,7 +68,7 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
   }
   scene.lights = c.lights;
   scene.views.push_back({"eye", c.eye, 0.0f, c.pitch_degrees});
-  auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{"", std::nullopt, mode, 1, kSize, "pbr", "", testing::with_layout(layout)});
+  auto world = std::make_unique<World>(std::move(manager), std::move(scene), WorldOptions{.scene = "", .mode = mode, .size = kSize, .technique_options = testing::with_layout(layout)});
   world->registry().view<Camera>().each([&](Camera& camera) {
     camera.near_plane = c.near_plane;
     camera.far_plane = c.far_plane;

@@ -33,7 +33,7 @@ class MsaaMatchesForward : public testing::GlTest,
 
 TEST_P(MsaaMatchesForward, FromEveryView) {
   const auto& [mode, layout] = GetParam();
-  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", with_msaa(kSamples, layout)});
+  World world({.scene = "atrium", .mode = "forward", .size = kSize, .technique_options = with_msaa(kSamples, layout)});
   // A few edge pixels may differ more: per-sample depth decides which surface
   // a sample shows, and the passes differ in how they test it.
   testing::expect_forward_picture_from_every_view(world, mode, "msaa_" + testing::test_name(mode, layout), 0.002);
@@ -56,7 +56,7 @@ using Msaa = testing::GlTest;
 TEST_F(Msaa, SilhouettesOfABlenderExportMatchForwardPixelForPixel) {
   const std::string model = std::string(ATRIUM_SOURCE_DIR) + "/tests/data/gltf-tools/blender-colors.glb";
   for (const auto layout : testing::gbuffer_layouts()) {
-    World world({model, 16, "forward", 1, {320, 180}, "pbr", "", with_msaa(kSamples, layout)});
+    World world({.scene = model, .lights = 16, .mode = "forward", .size = {320, 180}, .technique_options = with_msaa(kSamples, layout)});
     testing::compare_every_mode_with_forward(world, [&](const std::string& mode, int view, const assets::Image& reference,
                                                         const assets::Image& image) {
       const std::string name = testing::test_name(mode, layout) + " view " + std::to_string(view);
@@ -74,14 +74,14 @@ TEST_F(Msaa, SilhouettesOfABlenderExportMatchForwardPixelForPixel) {
 // edge pixels shaded once, their samples would all get one surface's colour.
 TEST_F(Msaa, BringsEveryModeCloserToASupersampledPicture) {
   for (const int view : {1, 3}) {
-    World big({"atrium", std::nullopt, "forward", view, kSize * 4});
+    World big({.scene = "atrium", .mode = "forward", .view = view, .size = kSize * 4});
     big.frame(0.0);
     const assets::Image supersampled = testing::box_downsample(big.renderer().read_output(), 4, true);
     for (const auto& info : lighting::technique_table()) {
       const std::string mode(info.name);
-      World plain({"atrium", std::nullopt, mode, view, kSize});
+      World plain({.scene = "atrium", .mode = mode, .view = view, .size = kSize});
       plain.frame(0.0);
-      World smoothed({"atrium", std::nullopt, mode, view, kSize, "pbr", "", with_msaa(kSamples)});
+      World smoothed({.scene = "atrium", .mode = mode, .view = view, .size = kSize, .technique_options = with_msaa(kSamples)});
       smoothed.frame(0.0);
       const double without = assets::psnr(supersampled, plain.renderer().read_output());
       const double with = assets::psnr(supersampled, smoothed.renderer().read_output());
@@ -98,7 +98,7 @@ std::size_t red_pixels(const assets::Image& image) {
 
 TEST_F(Msaa, EdgesViewMarksSilhouettesAndNothingWithoutMsaa) {
   for (const char* mode : {"deferred", "light-prepass", "forward"}) {
-    World world({"atrium", std::nullopt, mode, 1, kSize, "pbr", "msaa-edges", with_msaa(kSamples)});
+    World world({.scene = "atrium", .mode = mode, .size = kSize, .debug_view = "msaa-edges", .technique_options = with_msaa(kSamples)});
     world.frame(0.0);
     const assets::Image edges = world.renderer().read_output();
     assets::write_png(std::string("msaa_edges_") + mode + ".png", edges);
@@ -107,7 +107,7 @@ TEST_F(Msaa, EdgesViewMarksSilhouettesAndNothingWithoutMsaa) {
     EXPECT_GT(share, 0.02) << mode;
     EXPECT_LT(share, 0.4) << mode;
   }
-  World plain({"atrium", std::nullopt, "deferred", 1, kSize, "pbr", "msaa-edges"});
+  World plain({.scene = "atrium", .mode = "deferred", .size = kSize, .debug_view = "msaa-edges"});
   plain.frame(0.0);
   EXPECT_EQ(red_pixels(plain.renderer().read_output()), 0u);
 }
@@ -115,7 +115,7 @@ TEST_F(Msaa, EdgesViewMarksSilhouettesAndNothingWithoutMsaa) {
 TEST_F(Msaa, MoreSamplesThanTheDriverAllowsAreRefusedNamingTheLimit) {
   const int too_many = gfx::max_msaa_samples() * 2;
   try {
-    World world({"atrium", std::nullopt, "deferred", 1, kSize, "pbr", "", with_msaa(too_many)});
+    World world({.scene = "atrium", .mode = "deferred", .size = kSize, .technique_options = with_msaa(too_many)});
     world.frame(0.0);
     FAIL() << "no error";
   } catch (const gfx::ResourceLimitError& e) {

@@ -90,7 +90,7 @@ Frame draw(World& world) {
 }
 
 TEST_F(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTriangles) {
-  World world({kGrid, 256u, "clustered-deferred", 1, kSize});
+  World world({.scene = kGrid, .lights = 256u, .mode = "clustered-deferred", .size = kSize});
   for (int view = 1; view <= 5; ++view) {
     world.set_view(view);
     set_occlusion_culling(world, false);
@@ -111,8 +111,8 @@ TEST_F(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTrian
 }
 
 TEST_F(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHid) {
-  World world({kGrid, 256u, "clustered-forward", 4, kSize});
-  World reference({kGrid, 256u, "clustered-forward", 4, kSize});
+  World world({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
+  World reference({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
   set_occlusion_culling(reference, false);
   draw(world);
   draw(world);
@@ -128,7 +128,7 @@ TEST_F(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHi
 
 TEST_F(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
   for (const int samples : {1, 4}) {
-    WorldOptions options{kGrid, 256u, "forward", 5, kSize};
+    WorldOptions options{.scene = kGrid, .lights = 256u, .mode = "forward", .view = 5, .size = kSize};
     options.technique_options.msaa = samples;
     World world(options);
     for (const std::string& mode : lighting::mode_names()) {

@@ -172,7 +172,7 @@ TEST_F(SponzaScene, NoCameraCostsMuchMoreThanTheStoredViews) {
 using BuiltinScene = testing::GlTest;
 
 TEST_F(BuiltinScene, NoCameraCostsMuchMoreThanTheStoredViews) {
-  World world({"atrium", std::nullopt, "deferred", 1, kSize});
+  World world({.scene = "atrium", .mode = "deferred", .size = kSize});
   expect_no_camera_costs_much_more(world,
                                    {{"against the west wall", glm::vec3(-16.98f, 1.7f, 0.0f), -90.0f, 0.0f},
                                     {"inside a column", glm::vec3(-15.0f, 2.0f, 10.0f), 90.0f, 0.0f},

@@ -17,7 +17,7 @@ namespace {
 using RenderSize = testing::GlTest;
 
 TEST_F(RenderSize, OnePixelRendersInEveryModeAsForwardDoes) {
-  World world({"atrium", 24u, "forward", 1, {1, 1}});
+  World world({.scene = "atrium", .lights = 24u, .mode = "forward", .size = {1, 1}});
   testing::compare_every_mode_with_forward(world, [](const std::string& mode, int view, const assets::Image& reference,
                                                       const assets::Image& image) {
     EXPECT_LE(assets::max_channel_difference(reference, image), 2) << mode << " view " << view;
@@ -41,7 +41,7 @@ TEST_F(RenderSize, An8192SquareImageShowsWhatASmallOneShowsInForwardAndDeferred)
 }
 
 TEST_F(RenderSize, ASizeBeyondWhatTheContextRendersIsRefusedNamingTheLimit) {
-  World world({"atrium", 4u, "deferred", 1, {32, 18}});
+  World world({.scene = "atrium", .lights = 4u, .mode = "deferred", .size = {32, 18}});
   const glm::ivec2 limit = gfx::max_render_size();
   world.set_size({limit.x + 1, 8});
   try {

@@ -23,7 +23,7 @@ class TechniqueMatchesForward : public testing::GlTest,
 
 TEST_P(TechniqueMatchesForward, FromEveryView) {
   const auto& [mode, layout] = GetParam();
-  World world({"atrium", std::nullopt, "forward", 1, kSize, "pbr", "", testing::with_layout(layout)});
+  World world({.scene = "atrium", .mode = "forward", .size = kSize, .technique_options = testing::with_layout(layout)});
   testing::expect_forward_picture_from_every_view(world, mode, testing::test_name(mode, layout));
 }
 
@@ -40,7 +40,7 @@ class TechniqueMatchesForwardShaded : public testing::GlTest,
 
 TEST_P(TechniqueMatchesForwardShaded, FromEveryView) {
   const auto& [mode, model] = GetParam();
-  World world({"atrium", std::nullopt, "forward", 1, kSize, model});
+  World world({.scene = "atrium", .mode = "forward", .size = kSize, .shading = model});
   testing::expect_forward_picture_from_every_view(world, mode, mode + "_" + model);
 }
 
@@ -55,7 +55,7 @@ INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForwardShaded,
 using ShadingModels = testing::GlTest;
 
 TEST_F(ShadingModels, GiveDifferentPicturesAndSwitchAtRunTime) {
-  World world({"atrium", std::nullopt, "deferred", 3, kSize});
+  World world({.scene = "atrium", .mode = "deferred", .view = 3, .size = kSize});
   std::vector<assets::Image> images;
   for (const char* model : {"pbr", "blinn-phong", "phong", "pbr"}) {
     world.registry().resource<RendererSettings>().shading = model;
@@ -74,7 +74,7 @@ TEST_F(ShadingModels, GiveDifferentPicturesAndSwitchAtRunTime) {
 using ModeSwitching = testing::GlTest;
 
 TEST_F(ModeSwitching, AHundredSwitchesLeaveTheLiveGlObjectsUnchanged) {
-  World world({"atrium", 32u, "forward", 1, {64, 36}});
+  World world({.scene = "atrium", .lights = 32u, .mode = "forward", .size = {64, 36}});
   const auto modes = lighting::technique_table();
   // One full round first: every technique's programs are compiled and cached.
   for (const auto& info : modes) {

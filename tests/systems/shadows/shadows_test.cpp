@@ -78,7 +78,7 @@ std::unique_ptr<World> wall_world(const assets::SceneLight& light, const char* m
   scene.views.push_back({"above", glm::vec3(9.0f, 9.0f, 0.0f), -90.0f, -55.0f});
   scene.ambient = glm::vec3(kAmbient);
   scene.exposure = kExposure;
-  WorldOptions options{"", std::nullopt, mode, 1, kSize};
+  WorldOptions options{.scene = "", .mode = mode, .size = kSize};
   options.shadows = shadows;
   return std::make_unique<World>(std::move(manager), std::move(scene), options);
 }
@@ -238,7 +238,7 @@ TEST_F(Shadows, AGlowingBoxAroundALightDoesNotShadowIt) {
 }
 
 TEST_F(Shadows, EveryModeDrawsTheForwardPictureWithShadowsOn) {
-  World world({"atrium", 48u, "forward", 1, {160, 90}});
+  World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = {160, 90}});
   world.registry().resource<RendererSettings>().shadows = 12;
   for (const auto& info : lighting::technique_table()) {
     if (info.name == "forward") continue;
@@ -256,7 +256,7 @@ TEST_F(Shadows, EveryModeDrawsTheForwardPictureWithShadowsOn) {
 }
 
 TEST_F(Shadows, ShadowsChangeThePictureOnlyWhereLightIsBlocked) {
-  World world({"atrium", 48u, "forward", 1, {160, 90}});
+  World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = {160, 90}});
   world.frame(0.0);
   const assets::Image unshadowed = world.renderer().read_output();
   world.registry().resource<RendererSettings>().shadows = 48;
@@ -274,7 +274,7 @@ TEST_F(Shadows, ShadowsChangeThePictureOnlyWhereLightIsBlocked) {
 }
 
 TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
-  World world({"atrium", 48u, "forward", 1, {160, 90}});
+  World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = {160, 90}});
   world.registry().resource<RendererSettings>().shadows = 8;
   world.frame(0.0);
   const auto& stats = world.renderer().stats().shadows;
@@ -298,7 +298,7 @@ TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
 }
 
 TEST_F(Shadows, MovingGeometryRedrawsTheMapsItReaches) {
-  World world({"atrium", 48u, "forward", 1, {160, 90}});
+  World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = {160, 90}});
   world.registry().resource<RendererSettings>().shadows = 8;
   world.frame(0.0);
   world.frame(0.0);
@@ -312,7 +312,7 @@ TEST_F(Shadows, MovingGeometryRedrawsTheMapsItReaches) {
 }
 
 TEST_F(Shadows, OffGivesTheAtlasBack) {
-  World world({"atrium", 16u, "deferred", 1, {64, 36}});
+  World world({.scene = "atrium", .lights = 16u, .mode = "deferred", .size = {64, 36}});
   auto& settings = world.registry().resource<RendererSettings>();
   settings.shadows = 4;
   world.frame(0.0);
