@@ -1,8 +1,9 @@
 #version 450 core
 // Debug views of the G-buffer and depth: reads one target and writes it as a
-// displayable colour straight to the output (no tone mapping). DEBUG_VIEW picks
-// the target: 0 position, 1 normal, 2 albedo, 3 metallic-roughness, 4 emissive,
-// 5 depth; in the light pre-pass's thin layout albedo and emissive are grey.
+// displayable colour straight to the output (no tone mapping). One of
+// SHOW_POSITION, SHOW_NORMAL, SHOW_ALBEDO, SHOW_METALLIC_ROUGHNESS, SHOW_EMISSIVE
+// and SHOW_DEPTH picks the target (the debug view table's rows); in the light
+// pre-pass's thin layout albedo and emissive are grey.
 // The overlay's thumbnails draw it into a smaller viewport: output
 // pixels map to G-buffer pixels through the thumbnail origin and scale. With
 // MSAA they show sample 0.
@@ -24,23 +25,23 @@ void main() {
   Surface s;
   bool covered = read_gbuffer(pixel, s);
   vec3 color = vec3(0.0);
-#if DEBUG_VIEW == 5
+#ifdef SHOW_DEPTH
   // Linear view depth, near white, far black, on a log scale.
   float d = fetch_sample(u_depth, pixel, 0).r;
   color = vec3(d > kDepthFar ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
 #else
   if (covered) {
-#if DEBUG_VIEW == 0
+#if defined(SHOW_POSITION)
     color = clamp((s.position - u_bounds_min) / max(u_bounds_max - u_bounds_min, vec3(1e-6)), 0.0, 1.0);
-#elif DEBUG_VIEW == 1
+#elif defined(SHOW_NORMAL)
     color = s.normal * 0.5 + 0.5;
-#elif DEBUG_VIEW == 3
+#elif defined(SHOW_METALLIC_ROUGHNESS)
     color = vec3(s.metallic, s.roughness, 0.0);  // the thin layout stores no metallic: red stays 0
 #elif defined(THIN_GBUFFER)
     color = vec3(0.15);  // albedo and emission are not in the thin layout: grey says so
-#elif DEBUG_VIEW == 2
+#elif defined(SHOW_ALBEDO)
     color = linear_to_srgb(s.albedo);
-#elif DEBUG_VIEW == 4
+#elif defined(SHOW_EMISSIVE)
     color = linear_to_srgb(tonemap_aces(s.emissive));
 #endif
   }

@@ -15,20 +15,50 @@
 #include "assets/load_budget.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
+#include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/technique.hpp"
 
 namespace atrium {
 
 WorldOptions world_options(const CliOptions& options) {
-  return {options.scene, options.lights,     options.mode,       options.view,
-          options.size,  options.shading,    options.debug_view, options.technique_options,
-          options.light_radius, options.max_texture_size, options.camera, options.frustum_culling, options.shadows,
-          options.occlusion_culling, options.system_options};
+  return {.scene = options.scene,
+          .lights = options.lights,
+          .mode = options.mode,
+          .view = options.view,
+          .size = options.size,
+          .shading = options.shading,
+          .debug_view = options.debug_view,
+          .technique_options = options.technique_options,
+          .light_radius = options.light_radius,
+          .max_texture_size = options.max_texture_size,
+          .camera = options.camera,
+          .frustum_culling = options.frustum_culling,
+          .shadows = options.shadows,
+          .occlusion_culling = options.occlusion_culling,
+          .system_options = options.system_options};
 }
 
 namespace {
 
+// `render --debug-view list`: the views the mode (with these options) offers,
+// one per line with what each shows.
+int list_debug_views(const CliOptions& options) {
+  const auto context = gfx::HeadlessContext::create();
+  WorldOptions listed = world_options(options);
+  listed.debug_view.clear();
+  listed.size = {16, 16};  // one frame makes the technique; its picture is not needed
+  World world(listed);
+  world.frame(0.0);
+  const auto& settings = world.registry().resource<RendererSettings>();
+  for (const lighting::DebugView& view : lighting::debug_view_table()) {
+    if (!view.offered(*world.renderer().technique(), settings.technique_options, settings.shadows)) continue;
+    std::printf("%-20s %s\n", std::string(view.name).c_str(), std::string(view.help).c_str());
+  }
+  return kExitOk;
+}
+
 int run_render(const CliOptions& options) {
+  if (options.debug_view == "list") return list_debug_views(options);
   const std::filesystem::path out(options.out);
   if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path())) {
     throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");

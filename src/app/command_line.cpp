@@ -238,10 +238,11 @@ const std::vector<OptionSpec>& option_table() {
        "depth-slices (cluster slices), fragments (fragments the mode's geometry passes rasterise per pixel: "
        "overdraw, a camera in foliage), diffuse-light or specular-light (deferred modes: the two light sums apart), "
        "light-buffer (light-prepass: light summed before materials), msaa-edges (with --msaa: the pixels the deferred "
-       "modes shade per sample, in red), shadow-atlas (with --shadows: the shadow maps' depths)",
+       "modes shade per sample, in red), shadow-atlas (with --shadows: the shadow maps' depths); `render --debug-view "
+       "list` prints the views the mode offers",
        [](std::string_view value, CliOptions& o) {
          o.debug_view = std::string(value);
-         if (lighting::debug_view_index(o.debug_view) < 0) {
+         if (o.debug_view != "list" && !lighting::find_debug_view(o.debug_view)) {
            throw UsageError("unknown debug view '" + o.debug_view + "' (views: " + lighting::debug_view_names() + ")");
          }
        }},
@@ -574,7 +575,12 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
     }
   }
 
-  if (options.command == Command::Render && options.out.empty()) throw UsageError("render needs --out FILE.png");
+  if (options.debug_view == "list" && options.command != Command::Render) {
+    throw UsageError("--debug-view list is for `atrium render` (atrium render --mode M --debug-view list)");
+  }
+  if (options.command == Command::Render && options.out.empty() && options.debug_view != "list") {
+    throw UsageError("render needs --out FILE.png");
+  }
   if (options.camera && options.view != 1) throw UsageError("--camera replaces the scene's views; --view does not apply");
   if (options.camera && options.command == Command::Bench && options.bench.views.size() > 0) {
     throw UsageError("--camera replaces the scene's views; --views does not apply");

@@ -78,7 +78,7 @@ void handle_keys(World& world, gfx::WindowContext& context) {
         break;
       case GLFW_KEY_G: {
         std::vector<std::string> views{""};
-        for (const auto name : lighting::kDebugViews) views.emplace_back(name);
+        for (const lighting::DebugView& view : lighting::debug_view_table()) views.emplace_back(view.name);
         set_debug_view(world, step_name(views, registry.resource<RendererSettings>().debug_view, shift ? -1 : 1));
         break;
       }

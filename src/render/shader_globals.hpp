@@ -16,7 +16,8 @@ namespace atrium::render {
 
 struct GlobalDefineInputs {
   const RendererSettings& settings;
-  int debug_view;       // index into lighting::kDebugViews, -1: none
+  bool count_lights;     // the shown debug view counts lights evaluated per pixel
+  bool count_fragments;  // ... or fragments rasterised per pixel
   bool split_lighting;  // the diffuse and specular sums are written this frame
 };
 

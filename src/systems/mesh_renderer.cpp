@@ -188,15 +188,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const std::uint64_t waits_at_start = gfx::gpu_waits();
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
-  const int debug_view = settings.debug_view.empty() ? -1 : lighting::debug_view_index(settings.debug_view);
-  if (!settings.debug_view.empty() && debug_view < 0) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
-  const bool counting_lights = debug_view == lighting::kHeatmapView;
-  const bool counting_fragments = debug_view == lighting::kFragmentView;
+  const lighting::DebugView* debug_view = settings.debug_view.empty() ? nullptr : lighting::find_debug_view(settings.debug_view);
+  if (!settings.debug_view.empty() && !debug_view) throw std::invalid_argument("unknown debug view '" + settings.debug_view + "'");
+  const lighting::DebugViewNeeds needs = debug_view ? debug_view->needs : lighting::DebugViewNeeds{};
+  const bool counting_lights = needs.count_lights;
+  const bool counting_fragments = needs.count_fragments;
   const bool counting = counting_lights || counting_fragments;
-  const bool split_lighting = settings.technique_options.split_lighting || debug_view == lighting::kDiffuseLightView ||
-                              debug_view == lighting::kSpecularLightView;
+  const bool split_lighting = settings.technique_options.split_lighting || needs.split_lighting;
   std::vector<gfx::ShaderDefine> globals;
-  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, debug_view, split_lighting}, globals);
+  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, counting_lights, counting_fragments, split_lighting}, globals);
   if (globals != globals_ || settings.technique_options != technique_options_) {
     gpu_.shaders().set_global_defines(globals);
     globals_ = std::move(globals);
@@ -297,7 +297,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
       pass.keep();  // the debug views' counters live outside the graph
       for (const render::ResourceId sum : light_sums) pass.write(sum, render::Access::Transfer);
     }, [&](const render::PassResources&) {
-      if (counting) debug_views().begin_counting(debug_view);
+      if (counting) debug_views().begin_counting(needs);
       if (split_lighting_) {
         // Forward modes leave the sums untouched: they show as no light, not a stale frame.
         const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
@@ -328,18 +328,15 @@ void MeshRenderer::render(ecs::Registry& registry) {
     glBindVertexArray(0);
   });
 
+  const lighting::DebugViewFrame view_frame{*technique_, frame, frame_targets, scene.bounds_min, scene.bounds_max, shadows_.texture()};
   thumbnails_drawn_ = settings.gbuffer_thumbnails && technique_->gbuffer();
   if (thumbnails_drawn_) {
-    graph_.add_pass("thumbnails", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
-      debug_views().draw_thumbnails(*technique_->gbuffer(), frame_targets, scene.bounds_min, scene.bounds_max);
-    }, false);
+    graph_.add_pass("thumbnails", [](render::PassBuilder& pass) { pass.keep(); },
+                    [&](const render::PassResources&) { debug_views().draw_thumbnails(view_frame); }, false);
   }
-  if (debug_view >= 0) {
+  if (debug_view) {
     graph_.add_pass("debug view", [&](render::PassBuilder& pass) { pass.write(output, render::Access::Attachment); },
-                    [&](const render::PassResources&) {
-                      debug_views().draw(debug_view, *technique_, frame, frame_targets, output_framebuffer_.id(), scene.bounds_min,
-                                         scene.bounds_max, shadows_.texture());
-                    });
+                    [&](const render::PassResources&) { debug_views().draw(*debug_view, view_frame, output_framebuffer_.id()); });
   }
   if (settings.present_to_window) {
     graph_.add_pass("present", [&](render::PassBuilder& pass) {

@@ -170,7 +170,7 @@ void Overlay::controls(ecs::Registry& registry) {
   const std::vector<std::string> modes = lighting::mode_names();
   std::vector<std::string> models, views{"(none)"};
   for (const auto name : lighting::kShadingModels) models.emplace_back(name);
-  for (const auto name : lighting::kDebugViews) views.emplace_back(name);
+  for (const lighting::DebugView& view : lighting::debug_view_table()) views.emplace_back(view.name);
   ImGui::PushItemWidth(220);
   std::string chosen;
   if (combo("mode", settings.mode, modes, chosen)) requests.mode = chosen;
@@ -240,8 +240,7 @@ void Overlay::thumbnails(const MeshRenderer& renderer) {
     const ImVec2 uv1(static_cast<float>(column + 1) / DebugViews::kThumbnailColumns, static_cast<float>(row) / kRows);
     ImGui::BeginGroup();
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, uv0, uv1);
-    const int shown = DebugViews::kThumbnailViews[static_cast<std::size_t>(view)];
-    ImGui::TextUnformatted(std::string(lighting::kDebugViews[static_cast<std::size_t>(shown)]).c_str());
+    ImGui::TextUnformatted(std::string(DebugViews::kThumbnailViews[static_cast<std::size_t>(view)]).c_str());
     ImGui::EndGroup();
     if (column + 1 < DebugViews::kThumbnailColumns) ImGui::SameLine();
   }

@@ -28,7 +28,10 @@ TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
   World world({.scene = "atrium", .lights = 48u, .mode = "clustered-deferred", .size = kSize});
   world.registry().resource<RendererSettings>().shadows = 8;
   std::vector<assets::Image> images;
-  for (const auto name : lighting::kDebugViews) {
+  std::vector<std::string_view> names;
+  for (const lighting::DebugView& row : lighting::debug_view_table()) {
+    const std::string_view name = row.name;
+    names.push_back(name);
     world.registry().resource<RendererSettings>().debug_view = std::string(name);
     world.frame(0.0);
     world.frame(0.0);  // past the first frame's list growth
@@ -45,7 +48,7 @@ TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
   }
   for (std::size_t a = 0; a < images.size(); ++a) {
     for (std::size_t b = a + 1; b < images.size(); ++b) {
-      EXPECT_LT(assets::psnr(images[a], images[b]), 30.0) << lighting::kDebugViews[a] << " vs " << lighting::kDebugViews[b];
+      EXPECT_LT(assets::psnr(images[a], images[b]), 30.0) << names[a] << " vs " << names[b];
     }
   }
   world.registry().resource<RendererSettings>().debug_view.clear();
@@ -274,6 +277,42 @@ TEST_F(DebugViewRender, LightListViewIsFlatGreyInModesWithoutLists) {
   const assets::Image image = world.renderer().read_output();
   EXPECT_EQ(pixel(image, 0, 0), pixel(image, kSize.x / 2, kSize.y / 2));
   EXPECT_EQ(pixel(image, 0, 0), (Rgb{38, 38, 38}));
+}
+
+// What `render --debug-view list` offers is what draws: in every mode (with
+// shadows on), each view the table offers shows more than flat grey, and the
+// views it does not offer show flat grey (the G-buffer views fill a G-buffer
+// of their own, so every mode offers them; msaa-edges is tested with MSAA in
+// msaa_test.cpp).
+TEST_F(DebugViewRender, EveryViewAModeOffersShowsSomethingAndTheOthersShowNothingOfTheirOwn) {
+  constexpr glm::ivec2 kSmall{48, 27};
+  auto flat_grey = [&](const assets::Image& image) {
+    for (int y = 0; y < kSmall.y; ++y) {
+      for (int x = 0; x < kSmall.x; ++x) {
+        if (pixel(image, x, y) != (Rgb{38, 38, 38})) return false;
+      }
+    }
+    return true;
+  };
+  int offered_somewhere = 0;
+  for (const std::string& mode : lighting::mode_names()) {
+    World world({.scene = "atrium", .lights = 32u, .mode = mode, .size = kSmall, .shadows = 2});
+    world.frame(0.0);
+    auto& settings = world.registry().resource<RendererSettings>();
+    for (const lighting::DebugView& view : lighting::debug_view_table()) {
+      const bool offered = view.offered(*world.renderer().technique(), settings.technique_options, settings.shadows);
+      offered_somewhere += offered;
+      settings.debug_view = std::string(view.name);
+      world.frame(0.0);
+      const bool grey = flat_grey(world.renderer().read_output());
+      if (offered) EXPECT_FALSE(grey) << mode << " offers " << view.name << " but draws flat grey";
+      if (!offered && (view.name == "light-lists" || view.name == "light-buffer" || view.name == "diffuse-light" ||
+                       view.name == "specular-light" || view.name == "shadow-atlas")) {
+        EXPECT_TRUE(grey) << mode << " does not offer " << view.name << " but draws something for it";
+      }
+    }
+  }
+  EXPECT_GT(offered_somewhere, 9 * 10) << "most views in most modes";
 }
 
 // The light-sum views and thumbnails: grey until a deferred mode writes the sums

@@ -12,10 +12,13 @@
 // whatever the mode; the heatmap and the fragments view count what the mode's
 // own shaders do (compiled with COUNT_LIGHTS or COUNT_FRAGMENTS while shown);
 // the light-lists view draws the lists the tiled and clustered modes built.
+// Every view is one row of debug_view_table() carrying its own code; `atrium
+// render --mode M --debug-view list` prints the rows mode M offers.
 #pragma once
 
 #include <array>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -28,16 +31,42 @@
 
 namespace atrium::lighting {
 
-inline constexpr std::array<std::string_view, 16> kDebugViews{
-    "position",     "normal",      "albedo",       "metallic-roughness", "emissive",      "depth",
-    "light-volumes", "heatmap",    "light-lists",  "depth-slices",       "fragments",     "diffuse-light",
-    "specular-light", "light-buffer", "msaa-edges", "shadow-atlas"};
-inline constexpr int kDepthView = 5, kOutlineView = 6, kHeatmapView = 7, kLightListView = 8, kDepthSliceView = 9,
-                     kFragmentView = 10, kDiffuseLightView = 11, kSpecularLightView = 12, kLightBufferView = 13,
-                     kMsaaEdgeView = 14, kShadowAtlasView = 15;
+class DebugViews;
 
-// The index of a debug view name in kDebugViews, or -1.
-[[nodiscard]] int debug_view_index(std::string_view name);
+// What a shown view asks of the frame before the technique draws it.
+struct DebugViewNeeds {
+  bool gbuffer = false;          // a G-buffer (a forward mode's frame fills one for the view)
+  bool count_lights = false;     // the technique's shaders count lights evaluated (COUNT_LIGHTS)
+  bool count_fragments = false;  // the geometry passes count fragments (COUNT_FRAGMENTS)
+  bool split_lighting = false;   // the diffuse and specular sums apart (SPLIT_LIGHTING)
+};
+
+// What a view draws from: the frame the technique drew.
+struct DebugViewFrame {
+  const LightingTechnique& technique;
+  const FrameContext& frame;
+  const FrameTargets& targets;
+  glm::vec3 bounds_min, bounds_max;  // the scene's, for the position view's colours
+  GLuint shadow_atlas;               // 0 while shadows are off
+};
+
+// One debug view: its name (--debug-view, `g`, the overlay), what it shows,
+// what it needs, whether a mode offers it, and the code that draws it into
+// the bound framebuffer's viewport (origin and scale map the viewport to a
+// thumbnail cell; (0, 0) and (1, 1) for the whole output). A view that a mode
+// does not offer still draws, flat grey where it has nothing to show.
+struct DebugView {
+  std::string_view name;
+  std::string_view help;
+  DebugViewNeeds needs;
+  bool (*offered)(const LightingTechnique& technique, const TechniqueOptions& options, int shadows);
+  void (*draw)(DebugViews& views, const DebugViewFrame& frame, glm::vec2 origin, glm::vec2 scale);
+};
+
+// Every debug view, in the order `g` cycles them.
+[[nodiscard]] std::span<const DebugView> debug_view_table();
+// The row named `name`, or nullptr.
+[[nodiscard]] const DebugView* find_debug_view(std::string_view name);
 [[nodiscard]] std::string debug_view_names();
 
 class DebugViews {
@@ -48,18 +77,16 @@ class DebugViews {
   // Heatmap and fragments views: zeroes the per-pixel counters and binds them
   // to the image unit the technique's counting shaders write (0 for lights, 1
   // for fragments).
-  void begin_counting(int view);
+  void begin_counting(const DebugViewNeeds& needs);
   // The COUNT_LIGHTS and COUNT_FRAGMENTS rows of the shader globals
   // (render/shader_globals.hpp): the heatmap and fragments views' counters.
   static void counting_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
-    if (inputs.debug_view == kHeatmapView) defines.push_back({"COUNT_LIGHTS"});
-    if (inputs.debug_view == kFragmentView) defines.push_back({"COUNT_FRAGMENTS"});
+    if (inputs.count_lights) defines.push_back({"COUNT_LIGHTS"});
+    if (inputs.count_fragments) defines.push_back({"COUNT_FRAGMENTS"});
   }
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
-  // image) after `technique` has drawn the frame; `shadow_atlas` is the
-  // frame's shadow atlas texture (0 while shadows are off).
-  void draw(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets,
-            GLuint output_framebuffer, glm::vec3 bounds_min, glm::vec3 bounds_max, GLuint shadow_atlas);
+  // image) after the technique has drawn the frame.
+  void draw(const DebugView& view, const DebugViewFrame& frame, GLuint output_framebuffer);
   // Heatmap and fragments views: the count per pixel, averaged over the image.
   [[nodiscard]] double average_count() const;
 
@@ -70,21 +97,33 @@ class DebugViews {
   // of kThumbnailWidth pixels across (rows bottom-up, as GL stores them).
   static constexpr int kThumbnailWidth = 192, kThumbnailColumns = 4, kThumbnailCount = 8;
   // The debug view each thumbnail shows, in order.
-  static constexpr std::array<int, kThumbnailCount> kThumbnailViews{0, 1, 2, 3, 4, kDepthView, kDiffuseLightView, kSpecularLightView};
-  void draw_thumbnails(const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min, glm::vec3 bounds_max);
+  static constexpr std::array<std::string_view, kThumbnailCount> kThumbnailViews{
+      "position", "normal", "albedo", "metallic-roughness", "emissive", "depth", "diffuse-light", "specular-light"};
+  void draw_thumbnails(const DebugViewFrame& frame);
   [[nodiscard]] GLuint thumbnails() const { return thumbnails_.id(); }
   [[nodiscard]] glm::ivec2 thumbnail_size() const { return thumbnail_size_; }
 
- private:
-  void draw_light_bins(int view, const LightingTechnique& technique, const FrameContext& frame, const FrameTargets& targets);
-  // A G-buffer view (position .. depth) of `gbuffer`, decoded in its layout,
-  // into the bound framebuffer's viewport (with the thumbnail mapping).
-  void show_gbuffer(int view, const GBuffer& gbuffer, const FrameTargets& targets, glm::vec3 bounds_min, glm::vec3 bounds_max,
-                    glm::vec2 origin, glm::vec2 scale);
+  // What the table's rows draw with, each into the bound framebuffer's viewport.
+  // One G-buffer target (`target`: the show.frag define SHOW_<TARGET>), decoded
+  // in the layout of the frame's G-buffer (the technique's, else the views' own).
+  void show_gbuffer(std::string_view target, const DebugViewFrame& frame, glm::vec2 origin, glm::vec2 scale);
+  // The per-pixel counters as a heatmap topping out at `scale_max`.
+  void show_counts(float scale_max);
+  // Each pixel's tile or cluster list length (or, with `depth_slices`, its
+  // cluster depth slice in any mode); flat grey in a mode without lists.
+  void show_light_bins(bool depth_slices, const DebugViewFrame& frame);
   // A light sum (the diffuse or specular light target, the light buffer),
-  // tone-mapped, into the bound framebuffer's viewport (with the thumbnail
-  // mapping); flat grey for 0, a sum this frame did not make.
-  void draw_light_sum(GLuint sum, glm::vec2 origin, glm::vec2 scale);
+  // tone-mapped (with the thumbnail mapping); flat grey for 0, a sum this
+  // frame did not make.
+  void show_light_sum(GLuint sum, glm::vec2 origin, glm::vec2 scale);
+  // The shadow atlas's depths; flat grey without one.
+  void show_shadow_atlas(GLuint atlas);
+  // A full-screen debug shader over the frame's G-buffer (outlines, MSAA
+  // edges), blended over the image when `blend`.
+  void show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, bool blend);
+
+ private:
+  [[nodiscard]] const GBuffer& gbuffer_of(const DebugViewFrame& frame) const { return frame.technique.gbuffer() ? *frame.technique.gbuffer() : gbuffer_; }
 
   assets::GpuAssets& gpu_;
   GBuffer gbuffer_;
