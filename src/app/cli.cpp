@@ -123,6 +123,16 @@ int run_info(const CliOptions& options) {
   World world(loaded);
   SceneInfo info = gather_info(world, options.scene);
   info.gl = context->info();
+  if (options.memory) {
+    world.set_size(options.size);
+    info.memory_size = options.size;
+    for (const std::string& mode : lighting::mode_names()) {
+      world.set_mode(mode);
+      world.frame(0.0);
+      const render::GraphMemory memory = world.renderer().graph().memory();
+      info.memory.push_back({mode, memory.imported_bytes, memory.transient_bytes, memory.aliased_bytes});
+    }
+  }
   std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);
   return kExitOk;
 }

@@ -50,6 +50,7 @@ struct CliOptions {
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
   bool json = false;                    // info: print JSON
+  bool memory = false;                  // info: every mode's render-target memory at --size
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling
   int shadows = 0;                      // --shadows K: lights with shadow maps

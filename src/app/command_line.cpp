@@ -285,7 +285,7 @@ const std::vector<OptionSpec>& option_table() {
                             std::string(value) + "'");
          }
        }},
-      {"--size", "WxH", kDrawing, "image or window size in pixels (default 1280x720; compare and bench: 320x180)",
+      {"--size", "WxH", kDrawing | kInfo, "image or window size in pixels (default 1280x720; compare and bench: 320x180; info: for --memory)",
        [](std::string_view value, CliOptions& o) { o.size = parse_size(value); }},
       {"--out", "FILE.png", kRender, "where to write the image", [](std::string_view value, CliOptions& o) { o.out = std::string(value); }},
       {"--frames", "N", kWindow, "quit after N frames (for scripted runs)",
@@ -329,6 +329,10 @@ const std::vector<OptionSpec>& option_table() {
       {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)",
        [](std::string_view, CliOptions& o) { o.occlusion_culling = false; }},
       {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
+      {"--memory", "", kInfo,
+       "draw one frame of every mode at --size and report its render-target memory: long-lived targets, and transient "
+       "ones with and without sharing GL objects where their lifetimes do not overlap",
+       set_flag([](CliOptions& o) -> bool& { return o.memory; })},
   };
   static const std::vector<OptionSpec> with_systems = [] {
     std::vector<OptionSpec> rows = table;

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/format.hpp"
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
 
@@ -87,11 +88,23 @@ std::string format_info_text(const SceneInfo& i) {
                 bounds,
                 i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings, i.gl.renderer.c_str(), i.gl.vendor.c_str(),
                 i.gl.version.c_str(), i.gl.platform.c_str());
-  return buffer;
+  std::string text = buffer;
+  if (!i.memory.empty()) {
+    char line[256];
+    std::snprintf(line, sizeof line, "render targets at %dx%d (long-lived; transient as allocated, unshared):\n", i.memory_size.x,
+                  i.memory_size.y);
+    text += line;
+    for (const SceneInfo::ModeMemory& m : i.memory) {
+      std::snprintf(line, sizeof line, "  %-24s %10s; %s (%s)\n", m.mode.c_str(), format_bytes(static_cast<double>(m.imported_bytes)).c_str(),
+                    format_bytes(static_cast<double>(m.aliased_bytes)).c_str(), format_bytes(static_cast<double>(m.transient_bytes)).c_str());
+      text += line;
+    }
+  }
+  return text;
 }
 
 std::string format_info_json(const SceneInfo& i) {
-  const nlohmann::json j = {
+  nlohmann::json j = {
       {"scene", i.scene},
       {"entities", i.entities},
       {"mesh_instances", i.mesh_instances},
@@ -113,6 +126,14 @@ std::string format_info_json(const SceneInfo& i) {
       {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
       {"warnings", i.warnings},
       {"gl", {{"renderer", i.gl.renderer}, {"vendor", i.gl.vendor}, {"version", i.gl.version}, {"platform", i.gl.platform}}}};
+  if (!i.memory.empty()) {
+    nlohmann::json modes = nlohmann::json::array();
+    for (const SceneInfo::ModeMemory& m : i.memory) {
+      modes.push_back({{"mode", m.mode}, {"imported_bytes", m.imported_bytes}, {"transient_bytes", m.transient_bytes},
+                       {"aliased_bytes", m.aliased_bytes}});
+    }
+    j["render_targets"] = {{"size", {i.memory_size.x, i.memory_size.y}}, {"modes", modes}};
+  }
   return j.dump(2) + "\n";
 }
 

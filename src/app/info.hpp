@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <glm/glm.hpp>
 
@@ -24,6 +25,13 @@ struct SceneInfo {
   double parse_seconds = 0, decode_seconds = 0, upload_seconds = 0;
   std::size_t warnings = 0;
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
+  // --memory: per mode, the frame graph's render-target memory at `memory_size`.
+  struct ModeMemory {
+    std::string mode;
+    std::size_t imported_bytes = 0, transient_bytes = 0, aliased_bytes = 0;
+  };
+  std::vector<ModeMemory> memory;
+  glm::ivec2 memory_size{0};
 
   // Nothing to draw: no instance, or instances without triangles.
   [[nodiscard]] bool empty() const { return triangles == 0; }
