@@ -246,7 +246,7 @@ class AssimpImporter {
   // --- nodes -----------------------------------------------------------------
 
   void place_nodes(const MeshAsset& asset, const aiNode& root, const glm::mat4& file_to_world) {
-    Bounds bounds;
+    Box bounds;
     std::size_t skipped = 0;
     std::vector<std::pair<const aiNode*, glm::mat4>> stack{{&root, file_to_world}};
     while (!stack.empty()) {

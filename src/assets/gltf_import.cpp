@@ -731,7 +731,7 @@ class Importer {
   std::optional<std::uint32_t> default_material_;
   Skipped non_finite_, zero_area_, skipped_instances_;
   std::size_t triangles_read_ = 0;
-  Bounds bounds_;
+  Box bounds_;
   ModelImport result_;
 };
 

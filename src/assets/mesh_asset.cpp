@@ -10,19 +10,6 @@ std::size_t MeshAsset::vertex_count() const {
   return count;
 }
 
-void Bounds::add(glm::vec3 point) {
-  min = empty ? point : glm::min(min, point);
-  max = empty ? point : glm::max(max, point);
-  empty = false;
-}
-
-void Bounds::add_box(const glm::mat4& transform, glm::vec3 lo, glm::vec3 hi) {
-  for (int corner = 0; corner < 8; ++corner) {
-    const glm::vec3 local((corner & 1) ? hi.x : lo.x, (corner & 2) ? hi.y : lo.y, (corner & 4) ? hi.z : lo.z);
-    add(glm::vec3(transform * glm::vec4(local, 1.0f)));
-  }
-}
-
 Primitive add_geometry(MeshAsset& asset, Geometry geometry, std::uint32_t material) {
   Primitive p;
   p.vertex_buffer = static_cast<std::uint32_t>(asset.vertex_buffers.size());

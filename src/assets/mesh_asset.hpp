@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "assets/handles.hpp"
+#include "base/box.hpp"
 
 namespace atrium::assets {
 
@@ -124,17 +125,6 @@ struct MeshAsset {
 
   [[nodiscard]] const std::vector<Vertex>& vertices(const Primitive& p) const { return vertex_buffers.at(p.vertex_buffer); }
   [[nodiscard]] std::size_t vertex_count() const;
-};
-
-// An axis-aligned box that starts empty and grows to hold what is added.
-struct Bounds {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-  bool empty = true;
-
-  void add(glm::vec3 point);
-  // The eight corners of the box [lo, hi] placed by `transform`.
-  void add_box(const glm::mat4& transform, glm::vec3 lo, glm::vec3 hi);
 };
 
 // Vertices and indices with no asset yet, as shape builders make them.

@@ -205,7 +205,7 @@ void add_model(SceneDescription& scene, const ModelImport& model, const glm::mat
     scene.lights.push_back(light);
   }
   if (!model.empty) {
-    Bounds placed;
+    Box placed;
     placed.add_box(placement, model.bounds_min, model.bounds_max);
     grow_bounds(scene, placed.min, placed.max, any_bounds);
   }

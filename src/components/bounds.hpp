@@ -10,14 +10,9 @@
 #include <glm/glm.hpp>
 
 #include "assets/handles.hpp"
+#include "base/box.hpp"
 
 namespace atrium {
-
-struct Box {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-  bool empty = true;  // holds no triangle
-};
 
 // A meshlet (assets/meshlets.hpp) in world space.
 struct MeshletBounds {
@@ -28,10 +23,8 @@ struct MeshletBounds {
   float cone_cutoff = 2.0f;  // > 1: never culled as facing away
 };
 
-struct WorldBounds {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-  bool empty = true;  // the instance draws no triangle
+// The instance's box (empty: it draws no triangle) and its parts'.
+struct WorldBounds : Box {
   // One box per primitive of the instance's mesh, in the mesh's order.
   std::vector<Box> primitives;
   // Every primitive's meshlets in order; primitive p's are
@@ -47,10 +40,7 @@ struct WorldBounds {
   std::uint32_t mesh = 0;
 };
 
-struct SceneBounds {
-  glm::vec3 min{0.0f};
-  glm::vec3 max{0.0f};
-  bool empty = true;  // nothing in the scene draws a triangle
-};
+// Every instance's box together (empty: nothing in the scene draws a triangle).
+struct SceneBounds : Box {};
 
 }  // namespace atrium

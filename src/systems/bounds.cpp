@@ -27,7 +27,7 @@ void compute_boxes(const assets::AssetManager& assets, const MeshInstance& insta
   bounds.primitives.clear();
   bounds.meshlets.clear();
   bounds.meshlet_offsets.assign(1, 0);
-  assets::Bounds whole;
+  Box whole;
   const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
   const glm::mat3 linear(model);
   const float scale = std::max({glm::length(linear[0]), glm::length(linear[1]), glm::length(linear[2])});
@@ -46,17 +46,13 @@ void compute_boxes(const assets::AssetManager& assets, const MeshInstance& insta
         bounds.meshlets.push_back(world);
       }
       bounds.meshlet_offsets.push_back(static_cast<std::uint32_t>(bounds.meshlets.size()));
-      assets::Bounds box;
+      Box box;
       if (!p.indices.empty()) box.add_box(model, p.bounds_min, p.bounds_max);
-      bounds.primitives.push_back({box.min, box.max, box.empty});
-      if (box.empty) continue;
-      whole.add(box.min);
-      whole.add(box.max);
+      bounds.primitives.push_back(box);
+      whole.add(box);
     }
   }
-  bounds.min = whole.min;
-  bounds.max = whole.max;
-  bounds.empty = whole.empty;
+  static_cast<Box&>(bounds) = whole;
 }
 
 }  // namespace
@@ -64,7 +60,7 @@ void compute_boxes(const assets::AssetManager& assets, const MeshInstance& insta
 void update_bounds(ecs::Registry& registry) {
   const auto& assets = registry.resource<assets::AssetManager>();
   if (!registry.try_resource<SceneBounds>()) registry.set_resource<SceneBounds>();
-  assets::Bounds scene;
+  Box scene;
   std::vector<ecs::Entity> missing;
   registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform&, const MeshInstance&) {
     if (!registry.has<WorldBounds>(entity)) missing.push_back(entity);
@@ -76,11 +72,9 @@ void update_bounds(ecs::Registry& registry) {
     if (model != bounds.model || instance.asset != bounds.asset || instance.mesh != bounds.mesh) {
       compute_boxes(assets, instance, model, bounds);
     }
-    if (bounds.empty) return;
-    scene.add(bounds.min);
-    scene.add(bounds.max);
+    scene.add(bounds);
   });
-  registry.resource<SceneBounds>() = {scene.min, scene.max, scene.empty};
+  registry.resource<SceneBounds>() = SceneBounds{scene};
 }
 
 void register_bounds(ecs::Scheduler& scheduler) { scheduler.add(ecs::Phase::PostUpdate, "bounds", update_bounds); }

@@ -20,7 +20,6 @@ bool box_meets_sphere(const Box& box, glm::vec3 centre, float radius) {
   return glm::dot(d, d) <= radius * radius;
 }
 
-bool same_box(const Box& a, const Box& b) { return a.empty == b.empty && a.min == b.min && a.max == b.max; }
 
 // What a map depends on besides geometry: position, reach, direction, cone, kind.
 bool same_light(const GpuLight& a, const GpuLight& b) {
@@ -132,12 +131,12 @@ void ShadowAtlas::collect_changed_geometry(ecs::Registry& registry) {
   changed_.clear();
   ++frame_;
   registry.view<WorldBounds>().each([&](ecs::Entity entity, const WorldBounds& bounds) {
-    const Box box{bounds.min, bounds.max, bounds.empty};
+    const Box& box = bounds;
     auto [it, added] = boxes_.try_emplace(entity, Seen{box, frame_});
     if (added) {
       if (!box.empty) changed_.push_back(box);
     } else {
-      if (!same_box(it->second.box, box)) {
+      if (it->second.box != box) {
         if (!it->second.box.empty) changed_.push_back(it->second.box);
         if (!box.empty) changed_.push_back(box);
         it->second.box = box;
