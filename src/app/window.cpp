@@ -205,7 +205,7 @@ int run_window(const CliOptions& options) {
   register_input(world.scheduler(), world.registry(), window);
   register_fly_camera(world.scheduler());
   register_light_animation(world.scheduler());
-  register_overlay(world.scheduler(), world.registry(), window);
+  register_overlay(world.registry(), window);
   say("renderer: " + context->info().renderer);
   say("mode: " + world.mode());
   say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);

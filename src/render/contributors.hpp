@@ -22,6 +22,10 @@ struct RenderContributors {
   // Called in order, after the technique's passes: they draw into the lit HDR
   // image (FrameContext::scene_color) with the scene's depth.
   std::vector<RenderContributor> after_lighting;
+  // Called in order after the frame is presented to the window
+  // (RendererSettings::present_to_window): their passes bind the window's
+  // framebuffer (0) and draw over it, such as the overlay.
+  std::vector<RenderContributor> on_window;
 };
 
 }  // namespace atrium

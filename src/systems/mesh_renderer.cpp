@@ -179,7 +179,7 @@ void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::Draw
     upload_draws(draws_);
     depth = depth_reader_.read(depth_stencil_.id(), size_);
   }
-  stats_.triangles_occluded = remember_shown(registry, depth, view).triangles_hidden;
+  frame_stats_.triangles_occluded = remember_shown(registry, depth, view).triangles_hidden;
 }
 
 void MeshRenderer::render(ecs::Registry& registry) {
@@ -225,11 +225,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   draws_ = lighting::build_draw_list(registry, assets, gpu, view.view,
                                      occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame : lighting::DrawSelection::InView);
   const lighting::DrawList& draws = draws_;
-  stats_ = {};
-  stats_.lights = lights.count;
+  frame_stats_ = {};
+  frame_stats_.lights = lights.count;
   if (const auto* culling = registry.try_resource<CullingStats>()) {
-    stats_.objects = culling->objects;
-    stats_.objects_drawn = culling->objects_visible;
+    frame_stats_.objects = culling->objects;
+    frame_stats_.objects_drawn = culling->objects_visible;
   }
 
   lighting::FrameUniforms uniforms{};
@@ -252,7 +252,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   // Chooses the shadowed lights and moves them to the front of the light
   // buffer, before anything reads it; their maps are drawn by the graph.
   const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
-  stats_.shadows = shadows_.stats();
+  frame_stats_.shadows = shadows_.stats();
   upload_draws(draws);
   refuse_unbounded_loops(draws, lights.count);
 
@@ -285,7 +285,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const lighting::FrameTargets frame_targets = targets();
 
   if (draw_shadows) {
-    const render::ResourceId atlas = graph_.import_texture("shadow-atlas", shadows_.texture(), {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(stats_.shadows.atlas_size), 1});
+    const render::ResourceId atlas = graph_.import_texture("shadow-atlas", shadows_.texture(), {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(frame_stats_.shadows.atlas_size), 1});
     graph_.add_pass("shadows", [&](render::PassBuilder& pass) { pass.write(atlas, render::Access::Attachment); },
                     [&](const render::PassResources&) {
                       shadows_.draw_pending(registry);
@@ -345,6 +345,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
     }, [&](const render::PassResources&) {
       glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }, false);
+    if (const auto* contributors = registry.try_resource<RenderContributors>()) {
+      for (const RenderContributor& contributor : contributors->on_window) contributor(graph_, registry, frame, frame_targets);
+    }
   }
 
   graph_.compile();
@@ -352,19 +355,20 @@ void MeshRenderer::render(ecs::Registry& registry) {
   try {
     graph_.execute(&timer_);
     const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
-    stats_.light_list_entries = lists.entries;
-    stats_.light_list_overflows = lists.overflowed_frames;
+    frame_stats_.light_list_entries = lists.entries;
+    frame_stats_.light_list_overflows = lists.overflowed_frames;
   } catch (const gfx::ResourceLimitError& e) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
                                   std::to_string(size.y) + ": " + e.what());
   }
   timer_.end_frame();
-  stats_.draw_calls = draws.draw_calls();
-  stats_.triangles = draws.triangles;
-  stats_.triangles_drawn = draws.triangles_drawn;
-  if (counting_lights) stats_.light_evaluations_per_pixel = debug_views_->average_count();
-  if (counting_fragments) stats_.fragments_per_pixel = debug_views_->average_count();
-  stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
+  frame_stats_.draw_calls = draws.draw_calls();
+  frame_stats_.triangles = draws.triangles;
+  frame_stats_.triangles_drawn = draws.triangles_drawn;
+  if (counting_lights) frame_stats_.light_evaluations_per_pixel = debug_views_->average_count();
+  if (counting_fragments) frame_stats_.fragments_per_pixel = debug_views_->average_count();
+  frame_stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
+  stats_ = frame_stats_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -143,7 +143,8 @@ class MeshRenderer {
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
-  FrameStats stats_;
+  FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
+  FrameStats frame_stats_;  // the frame being drawn
   gfx::PassTimer timer_;
   render::FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once

@@ -11,7 +11,6 @@
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
-#include "components/light.hpp"
 #include "components/system_options.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/limits.hpp"
@@ -19,6 +18,7 @@
 #include "systems/lighting/debug_views.hpp"
 #include "systems/lighting/shading_model.hpp"
 #include "systems/lighting/technique.hpp"
+#include "render/contributors.hpp"
 #include "systems/mesh_renderer.hpp"
 
 namespace atrium {
@@ -283,11 +283,21 @@ void Overlay::draw(ecs::Registry& registry) {
 
 }  // namespace
 
-void register_overlay(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwindow* window) {
+void register_overlay(ecs::Registry& registry, GLFWwindow* window) {
   registry.set_resource<DemoRequests>();
   registry.set_resource<OverlayState>();
   registry.set_resource<Overlay>(window);
-  scheduler.add(ecs::Phase::Render, "overlay", [](ecs::Registry& r) { r.resource<Overlay>().draw(r); });
+  // A pass over the window's framebuffer after presenting: the frame graph
+  // times it with the others.
+  if (!registry.try_resource<RenderContributors>()) registry.set_resource<RenderContributors>();
+  registry.resource<RenderContributors>().on_window.push_back(
+      [](render::FrameGraph& graph, ecs::Registry& r, const lighting::FrameContext&, const lighting::FrameTargets&) {
+        graph.add_pass("overlay", [](render::PassBuilder& pass) { pass.keep(); },
+                       [&r](const render::PassResources&) {
+                         glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the window's, not the renderer's output
+                         r.resource<Overlay>().draw(r);
+                       });
+      });
 }
 
 }  // namespace atrium

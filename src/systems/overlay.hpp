@@ -1,5 +1,6 @@
-// The overlay system (Render, after the MeshRenderer): a Dear ImGui panel over
-// the window with frame rate and time, the last frame's pass timings, the mode,
+// The overlay: a pass of the frame graph after the frame is presented to the
+// window (RenderContributors::on_window), timed with the others: a Dear ImGui
+// panel over the window with frame rate and time, the last frame's pass timings, the mode,
 // shading model, light count, triangles, draw calls, light-list overflow,
 // estimated GPU memory and G-buffer thumbnails; and controls for mode, light
 // count, light radius, shading model and debug view. F1 hides it.
@@ -7,7 +8,7 @@
 
 #include <string>
 
-#include "ecs/scheduler.hpp"
+#include "ecs/registry.hpp"
 
 struct GLFWwindow;
 
@@ -17,8 +18,8 @@ namespace atrium {
 [[nodiscard]] const std::string& key_help();
 
 // Sets up Dear ImGui on `window` (after register_input: ImGui's GLFW backend
-// chains to the input system's callbacks) and adds the system. The ImGui
+// chains to the input system's callbacks) and adds its pass. The ImGui
 // context lives as long as the registry's Overlay resource.
-void register_overlay(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwindow* window);
+void register_overlay(ecs::Registry& registry, GLFWwindow* window);
 
 }  // namespace atrium
