@@ -34,7 +34,7 @@ class Scheduler {
   void run_frame(Registry& registry, double delta_seconds);
   void run_phase(Phase phase, Registry& registry);
 
-  // "Phase/name" of every system in execution order, for tests and --help-systems.
+  // "Phase/name" of every system in execution order, for tests and the docs.
   [[nodiscard]] std::vector<std::string> execution_order() const;
 
  private:

@@ -21,6 +21,22 @@ inline std::vector<lighting::GBufferLayout> gbuffer_layouts() {
   return {lighting::GBufferLayout::Full, lighting::GBufferLayout::Compact};
 }
 
+// Each non-forward mode with every --gbuffer layout where the layout changes
+// its G-buffer (GBufferUse::Chosen), and once elsewhere: a second run of a mode
+// the layout does not touch would only repeat the first.
+inline std::vector<std::tuple<std::string, lighting::GBufferLayout>> mode_layouts() {
+  std::vector<std::tuple<std::string, lighting::GBufferLayout>> pairs;
+  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+    if (info.name == "forward") continue;
+    if (info.gbuffer != lighting::GBufferUse::Chosen) {
+      pairs.emplace_back(std::string(info.name), lighting::GBufferLayout::Full);
+      continue;
+    }
+    for (const lighting::GBufferLayout layout : gbuffer_layouts()) pairs.emplace_back(std::string(info.name), layout);
+  }
+  return pairs;
+}
+
 inline lighting::TechniqueOptions with_layout(lighting::GBufferLayout layout) {
   lighting::TechniqueOptions options;
   options.gbuffer_layout = layout;

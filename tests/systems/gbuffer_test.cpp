@@ -106,11 +106,34 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
   }
 }
 
+// The technique table's GBufferUse column is what each technique does: no
+// G-buffer, the layout --gbuffer chose, or a layout of its own.
+TEST_F(CompactGBuffer, EachTechniqueKeepsTheGBufferItsTableRowSays) {
+  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+    World world({.scene = "atrium", .lights = 4u, .mode = std::string(info.name), .size = {32, 18},
+                 .technique_options = testing::with_layout(lighting::GBufferLayout::Compact)});
+    world.frame(0.0);
+    const lighting::GBuffer* gbuffer = world.renderer().technique()->gbuffer();
+    switch (info.gbuffer) {
+      case lighting::GBufferUse::None: EXPECT_EQ(gbuffer, nullptr) << info.name; break;
+      case lighting::GBufferUse::Chosen:
+        ASSERT_NE(gbuffer, nullptr) << info.name;
+        EXPECT_EQ(gbuffer->layout(), lighting::GBufferLayout::Compact) << info.name;
+        break;
+      case lighting::GBufferUse::Own:
+        ASSERT_NE(gbuffer, nullptr) << info.name;
+        EXPECT_NE(gbuffer->layout(), lighting::GBufferLayout::Compact) << info.name;
+        break;
+    }
+  }
+}
+
 TEST_F(CompactGBuffer, DrawsWhatTheFullLayoutDrawsInEveryDeferredMode) {
   World full({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Full)});
   World compact({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Compact)});
-  for (const std::string& mode : testing::non_forward_modes()) {
-    if (mode == "clustered-forward") continue;  // no G-buffer
+  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+    if (info.gbuffer != lighting::GBufferUse::Chosen) continue;  // the layout changes nothing there
+    const std::string mode(info.name);
     double worst = 1e9;
     for (int view = 1; view <= 5; ++view) {
       for (World* world : {&full, &compact}) {

@@ -157,10 +157,11 @@ const EdgeCase kCases[] = {
 };
 
 class VolumeEdgeCase : public testing::GlTest,
-                       public ::testing::WithParamInterface<std::tuple<std::string, int, lighting::GBufferLayout>> {};
+                       public ::testing::WithParamInterface<std::tuple<std::tuple<std::string, lighting::GBufferLayout>, int>> {};
 
 TEST_P(VolumeEdgeCase, MatchesForward) {
-  const auto& [mode, index, layout] = GetParam();
+  const auto& [mode_layout, index] = GetParam();
+  const auto& [mode, layout] = mode_layout;
   const std::string name = testing::test_name(mode, layout);
   const EdgeCase& c = kCases[index];
   const assets::Image reference = render(c, "forward");
@@ -176,10 +177,10 @@ TEST_P(VolumeEdgeCase, MatchesForward) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Modes, VolumeEdgeCase,
-                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()), ::testing::Range(0, static_cast<int>(std::size(kCases))),
-                                            ::testing::ValuesIn(testing::gbuffer_layouts())),
+                         ::testing::Combine(::testing::ValuesIn(testing::mode_layouts()), ::testing::Range(0, static_cast<int>(std::size(kCases)))),
                          [](const auto& info) {
-                           return testing::test_name(std::get<0>(info.param), std::get<2>(info.param)) + "_" +
+                           const auto& mode_layout = std::get<0>(info.param);
+                           return testing::test_name(std::get<0>(mode_layout), std::get<1>(mode_layout)) + "_" +
                                   kCases[std::get<1>(info.param)].name;
                          });
 

@@ -27,9 +27,7 @@ TEST_P(TechniqueMatchesForward, FromEveryView) {
   testing::expect_forward_picture_from_every_view(world, mode, testing::test_name(mode, layout));
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward,
-                         ::testing::Combine(::testing::ValuesIn(testing::non_forward_modes()),
-                                            ::testing::ValuesIn(testing::gbuffer_layouts())),
+INSTANTIATE_TEST_SUITE_P(Modes, TechniqueMatchesForward, ::testing::ValuesIn(testing::mode_layouts()),
                          [](const auto& info) { return testing::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
 // The Phong models factor into the same terms as Cook-Torrance (brdf.glsl's

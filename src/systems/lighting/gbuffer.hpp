@@ -61,6 +61,7 @@ class GBuffer {
   void draw_fullscreen(const SampleRatePrograms& programs, const FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
+  [[nodiscard]] GBufferLayout layout() const { return layout_; }
   // The defines a program that writes or reads this G-buffer is built with on
   // top of the renderer's globals (which carry COMPACT_GBUFFER).
   [[nodiscard]] std::vector<gfx::ShaderDefine> defines() const;

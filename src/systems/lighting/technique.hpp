@@ -119,10 +119,16 @@ struct LightLoops {
   bool blended = false;  // the shading of blended surfaces
 };
 
+// Which G-buffer a technique keeps: none (forward modes), one in the layout
+// users choose (--gbuffer), or one in a layout of its own (the light pre-pass's
+// thin one). Tests run the --gbuffer layouts only where they change something.
+enum class GBufferUse : std::uint8_t { None, Chosen, Own };
+
 struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
   LightLoops loops_over_every_light;
+  GBufferUse gbuffer;
   // Makes the technique; it takes its shader programs from gpu.shaders().
   std::unique_ptr<LightingTechnique> (*create)(assets::GpuAssets& gpu, const TechniqueOptions& options);
 };

@@ -19,21 +19,21 @@ std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueO
 }
 
 constexpr TechniqueInfo kTechniques[] = {
-    {"forward", "one geometry pass; every fragment loops over every light (the baseline)", {true, true}, &make<ForwardTechnique>},
-    {"deferred", "G-buffer, then one full-screen pass over every light", {true, true}, &make<DeferredTechnique, false>},
-    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel", {true, true}, &make<DeferredTechnique, true>},
+    {"forward", "one geometry pass; every fragment loops over every light (the baseline)", {true, true}, GBufferUse::None, &make<ForwardTechnique>},
+    {"deferred", "G-buffer, then one full-screen pass over every light", {true, true}, GBufferUse::Chosen, &make<DeferredTechnique, false>},
+    {"deferred-radius", "deferred, skipping lights whose radius does not reach the pixel", {true, true}, GBufferUse::Chosen, &make<DeferredTechnique, true>},
     {"light-volumes", "deferred; per light a stencil pass and a lighting pass on a sphere of its radius", {false, true},
-     &make<LightVolumeTechnique, false>},
+     GBufferUse::Chosen, &make<LightVolumeTechnique, false>},
     {"tiled-deferred", "G-buffer, lights culled per 16x16 tile against its depth bounds, each pixel shades its tile's", {},
-     &make<TiledTechnique>},
+     GBufferUse::Chosen, &make<TiledTechnique>},
     {"clustered-forward", "forward+: depth pre-pass, lights assigned to a 3D cluster grid, each fragment shades its cluster's", {},
-     &make<ClusteredTechnique, false>},
+     GBufferUse::None, &make<ClusteredTechnique, false>},
     {"clustered-deferred", "G-buffer, lights assigned to a 3D cluster grid, each pixel shades its cluster's", {},
-     &make<ClusteredTechnique, true>},
+     GBufferUse::Chosen, &make<ClusteredTechnique, true>},
     {"light-volumes-instanced", "deferred; all light spheres in one instanced draw, no stencil", {false, true},
-     &make<LightVolumeTechnique, true>},
+     GBufferUse::Chosen, &make<LightVolumeTechnique, true>},
     {"light-prepass", "thin G-buffer, light volumes sum BRDF factors into a light buffer, a second geometry pass applies materials",
-     {false, true}, &make<LightPrepassTechnique>},
+     {false, true}, GBufferUse::Own, &make<LightPrepassTechnique>},
 };
 
 }  // namespace

@@ -1,6 +1,6 @@
 // Tiled deferred shading (mode `tiled-deferred`): after the G-buffer pass, a
 // compute pass over 16x16-pixel tiles takes each tile's depth bounds from the
-// depth buffer, culls the lights against the tile's frustum and writes per-tile
+// G-buffer's positions (the points the lighting pass shades), culls the lights against the tile's frustum and writes per-tile
 // light lists; the lighting pass shades each pixel with its tile's lights.
 // Blended surfaces get lists of their own, bounded by the depths of the glass in
 // front of each tile's opaque surfaces, and are shaded forward from them.
@@ -33,10 +33,11 @@ class TiledTechnique final : public LightingTechnique {
   [[nodiscard]] LightBins bind_light_bins() const override;
 
  private:
-  // Culls the lights into `list` with `assign`, keeping `shading`'s capacity in step.
+  // Give the programs that read the opaque (blended) list its new capacity.
   void set_capacity(std::uint32_t capacity);
   void set_blended_capacity(std::uint32_t capacity);
-  // `set_capacity` gives the programs that read the list its new capacity.
+  // Culls `light_count` lights into `list` with `assign`; `set_capacity` keeps
+  // the programs that read the list in step when it grows.
   void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
                      const std::function<void(std::uint32_t)>& set_capacity);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
