@@ -1,6 +1,7 @@
 #include "systems/lighting/light_index_list.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 #include "base/format.hpp"
@@ -15,21 +16,11 @@ LightIndexList::LightIndexList(std::uint32_t bins)
       loop_limit_(gfx::shader_loop_limit()),
       ranges_(gfx::create_buffer()),
       total_(gfx::create_buffer()),
-      ring_(gfx::create_buffer()) {
+      totals_(sizeof(Total)) {
   static_assert(sizeof(Total) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(bins, 1) * 2 * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  constexpr GLbitfield kMapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-  glNamedBufferStorage(ring_.id(), sizeof(Total) * kRingSlots, nullptr, kMapping);
-  ring_data_ = static_cast<const Total*>(glMapNamedBufferRange(ring_.id(), 0, sizeof(Total) * kRingSlots, kMapping));
   resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
-}
-
-LightIndexList::~LightIndexList() {
-  for (Pending& pending : pending_) {
-    if (pending.fence) glDeleteSync(pending.fence);
-  }
-  if (ring_data_) glUnmapNamedBuffer(ring_.id());
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
@@ -62,23 +53,14 @@ void LightIndexList::grow_for(std::uint32_t entries, const std::function<void(st
 }
 
 void LightIndexList::poll() {
-  // Oldest first, so that last_total_ ends as the newest that arrived.
-  for (std::size_t age = kRingSlots; age > 0; --age) {
-    const std::size_t slot = (next_slot_ + kRingSlots - age) % kRingSlots;
-    Pending& pending = pending_[slot];
-    if (!pending.fence) continue;
-    // Timeout 0: asks, never waits (the flush lets a fence that was never
-    // submitted pass at all).
-    const GLenum status = glClientWaitSync(pending.fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-    if (status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) continue;
-    glDeleteSync(pending.fence);
-    pending.fence = nullptr;
-    const Total total = ring_data_[slot];
+  totals_.poll([&](const void* data, std::size_t, std::uint64_t capacity) {
+    Total total;
+    std::memcpy(&total, data, sizeof total);
     check(total);
     last_total_ = total.entries;
-    if (total.entries > pending.capacity) ++overflow_frames_;
+    if (total.entries > capacity) ++overflow_frames_;
     wanted_ = std::max(wanted_, total.entries);
-  }
+  });
 }
 
 void LightIndexList::assign(std::uint32_t light_count, const std::function<void()>& dispatch,
@@ -107,11 +89,7 @@ void LightIndexList::assign(std::uint32_t light_count, const std::function<void(
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     return;
   }
-  Pending& pending = pending_[next_slot_];
-  if (pending.fence) return;  // the GPU is kRingSlots frames behind: this total is not needed to grow
-  glCopyNamedBufferSubData(total_.id(), ring_.id(), 0, static_cast<GLintptr>(next_slot_ * sizeof(Total)), sizeof(Total));
-  pending = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), capacity_};
-  next_slot_ = (next_slot_ + 1) % kRingSlots;
+  (void)totals_.copy(total_.id(), 0, sizeof(Total), capacity_);
 }
 
 void LightIndexList::bind() const {

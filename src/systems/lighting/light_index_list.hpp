@@ -1,9 +1,9 @@
 // A light index list with no cap: per bin (cluster or tile) an (offset, count)
 // range into one global array of light indices. An assignment pass counts each
 // bin's lights, reserves its range with an atomic add on a total, and writes
-// what fits. The frame never waits for the total: it is copied into a ring of
-// mapped slots and read one or more frames later, when its fence has passed,
-// and the array grows (with headroom) for the frames after. A bin whose range
+// what fits. The frame never waits for the total: it is copied into a
+// gfx::ReadbackRing and read one or more frames later, when its fence has
+// passed, and the array grows (with headroom) for the frames after. A bin whose range
 // ends past this frame's capacity overflowed: shading loops over every light
 // for its pixels (common/list_shading.glsl), so no light is dropped, only time.
 // Where the driver ends shader loops early (llvmpipe) and there are more lights
@@ -14,12 +14,12 @@
 // needed, in the frame that learns it.
 #pragma once
 
-#include <array>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "gfx/gl_object.hpp"
+#include "gfx/readback_ring.hpp"
 #include "render/frame_graph.hpp"
 
 namespace atrium::lighting {
@@ -29,9 +29,6 @@ inline constexpr GLuint kLightRangesBinding = 2, kLightIndicesBinding = 3, kLigh
 class LightIndexList {
  public:
   explicit LightIndexList(std::uint32_t bins);
-  ~LightIndexList();
-  LightIndexList(const LightIndexList&) = delete;
-  LightIndexList& operator=(const LightIndexList&) = delete;
 
   // Runs `dispatch` (which must read the capacity through `capacity()` or the
   // uniform set by `on_resize`) for `light_count` lights. Totals of earlier
@@ -65,14 +62,6 @@ class LightIndexList {
     std::uint32_t wrapped = 0;
     std::uint32_t longest = 0;
   };
-  // A frame's total on its way back: the slot of the mapped ring it is copied
-  // to, the fence that says the copy is done, and the capacity it ran with.
-  struct Pending {
-    GLsync fence = nullptr;
-    std::uint32_t capacity = 0;
-  };
-  static constexpr std::size_t kRingSlots = 4;
-
   void resize(std::uint32_t capacity);
   // Throws gfx::ResourceLimitError when `total` cannot be held.
   void check(const Total& total) const;
@@ -82,10 +71,7 @@ class LightIndexList {
   std::uint64_t max_entries_;  // what GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows
   std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest loop a pixel may run
   gfx::Buffer ranges_, indices_, total_;
-  gfx::Buffer ring_;                       // kRingSlots totals, persistently mapped for reading
-  const Total* ring_data_ = nullptr;
-  std::array<Pending, kRingSlots> pending_{};
-  std::size_t next_slot_ = 0;
+  gfx::ReadbackRing totals_;  // each frame's Total on its way back, tagged with the capacity it ran with
   std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0;
   std::uint32_t wanted_ = 0;  // the largest total arrived since the list last grew
 };

@@ -1,0 +1,52 @@
+#include "gfx/readback_ring.hpp"
+
+#include <algorithm>
+
+namespace atrium::gfx {
+
+namespace {
+constexpr GLbitfield kMapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+}  // namespace
+
+ReadbackRing::ReadbackRing(std::size_t slot_bytes, std::size_t slots)
+    : slot_bytes_(std::max<std::size_t>(slot_bytes, 4)), buffer_(create_buffer()), slots_(std::max<std::size_t>(slots, 1)) {
+  const auto total = static_cast<GLsizeiptr>(slot_bytes_ * slots_.size());
+  glNamedBufferStorage(buffer_.id(), total, nullptr, kMapping);
+  mapped_ = static_cast<const unsigned char*>(glMapNamedBufferRange(buffer_.id(), 0, total, kMapping));
+}
+
+ReadbackRing::~ReadbackRing() {
+  for (Slot& slot : slots_) {
+    if (slot.fence) glDeleteSync(slot.fence);
+  }
+  if (mapped_) glUnmapNamedBuffer(buffer_.id());
+}
+
+bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::uint64_t tag) {
+  Slot& slot = slots_[next_];
+  if (slot.fence || bytes > slot_bytes_ || !mapped_) return false;
+  // The copy reads what shaders wrote through storage or images.
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  glCopyNamedBufferSubData(buffer, buffer_.id(), offset, static_cast<GLintptr>(next_ * slot_bytes_), static_cast<GLsizeiptr>(bytes));
+  slot = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), bytes, tag, copies_++};
+  next_ = (next_ + 1) % slots_.size();
+  return true;
+}
+
+void ReadbackRing::poll(const std::function<void(const void* data, std::size_t bytes, std::uint64_t tag)>& arrived) {
+  std::vector<std::size_t> done;
+  for (std::size_t i = 0; i < slots_.size(); ++i) {
+    if (!slots_[i].fence) continue;
+    // Timeout 0: asks, never waits; the flush lets a fence never submitted pass at all.
+    const GLenum status = glClientWaitSync(slots_[i].fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
+    if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) done.push_back(i);
+  }
+  std::sort(done.begin(), done.end(), [&](std::size_t a, std::size_t b) { return slots_[a].order < slots_[b].order; });
+  for (const std::size_t i : done) {
+    glDeleteSync(slots_[i].fence);
+    slots_[i].fence = nullptr;
+    arrived(mapped_ + i * slot_bytes_, slots_[i].bytes, slots_[i].tag);
+  }
+}
+
+}  // namespace atrium::gfx

@@ -1,0 +1,50 @@
+// What the GPU writes for the CPU to read a frame or more later, without ever
+// waiting: each copy goes to a slot of a persistently mapped buffer with a
+// fence, and poll() hands back the copies whose fences have passed (asked with
+// timeout 0), oldest first. A copy asked for while every slot is still in
+// flight is dropped: the GPU is that many frames behind, and the next one will
+// do. Used by the light lists (their totals) and the debug views' averages;
+// one-shot commands wait for the GPU first (MeshRenderer::settle) and then poll.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "gfx/gl_object.hpp"
+
+namespace atrium::gfx {
+
+class ReadbackRing {
+ public:
+  // Slots of `slot_bytes` each.
+  explicit ReadbackRing(std::size_t slot_bytes, std::size_t slots = 4);
+  ~ReadbackRing();
+  ReadbackRing(const ReadbackRing&) = delete;
+  ReadbackRing& operator=(const ReadbackRing&) = delete;
+
+  // Copies `bytes` (at most the slot size) of `buffer` from `offset` once the
+  // commands before it have run, keeping `tag` with it (what the caller needs
+  // to read it: the capacity it ran with, a count). False when it was dropped.
+  bool copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::uint64_t tag);
+  // Calls `arrived` for every copy whose fence has passed, oldest first.
+  void poll(const std::function<void(const void* data, std::size_t bytes, std::uint64_t tag)>& arrived);
+  [[nodiscard]] std::size_t slot_bytes() const { return slot_bytes_; }
+
+ private:
+  struct Slot {
+    GLsync fence = nullptr;
+    std::size_t bytes = 0;
+    std::uint64_t tag = 0;
+    std::uint64_t order = 0;  // when it was copied, to hand slots back oldest first
+  };
+  std::size_t slot_bytes_;
+  Buffer buffer_;
+  const unsigned char* mapped_ = nullptr;
+  std::vector<Slot> slots_;
+  std::size_t next_ = 0;
+  std::uint64_t copies_ = 0;
+};
+
+}  // namespace atrium::gfx
