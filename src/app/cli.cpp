@@ -74,6 +74,7 @@ int run_render(const CliOptions& options) {
     world.frame(0.0);
   }
   assets::write_png(out, world.renderer().read_output());
+  world.renderer().settle();  // what the GPU reports a frame late: averages, list totals, pass timings
   const FrameStats& stats = world.renderer().stats();
   std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles drawn of %zu in %zu draws, %s)\n",
               options.out.c_str(), options.size.x, options.size.y, world.mode().c_str(), world.view(),
@@ -85,7 +86,6 @@ int run_render(const CliOptions& options) {
   if (options.debug_view == "fragments") {
     std::printf("fragments rasterised per pixel by the geometry passes: %.2f on average\n", stats.fragments_per_pixel);
   }
-  world.renderer().settle();
   if (world.renderer().timer().counts_fragments()) {
     // The frame's fragments per pass: overdraw and expensive cameras show here.
     std::string passes;

@@ -336,7 +336,10 @@ void MeshRenderer::render(ecs::Registry& registry) {
   }
   if (debug_view) {
     graph_.add_pass("debug view", [&](render::PassBuilder& pass) { pass.write(output, render::Access::Attachment); },
-                    [&](const render::PassResources&) { debug_views().draw(*debug_view, view_frame, output_framebuffer_.id()); });
+                    [&](const render::PassResources&) {
+                      debug_views().draw(*debug_view, view_frame, output_framebuffer_.id());
+                      if (counting) debug_views().send_counts(needs);
+                    });
   }
   if (settings.present_to_window) {
     graph_.add_pass("present", [&](render::PassBuilder& pass) {
@@ -365,8 +368,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
   frame_stats_.draw_calls = draws.draw_calls();
   frame_stats_.triangles = draws.triangles;
   frame_stats_.triangles_drawn = draws.triangles_drawn;
-  if (counting_lights) frame_stats_.light_evaluations_per_pixel = debug_views_->average_count();
-  if (counting_fragments) frame_stats_.fragments_per_pixel = debug_views_->average_count();
+  take_count_averages();
+  counted_lights_ = counting_lights;
+  counted_fragments_ = counting_fragments;
+  if (counting_lights) frame_stats_.light_evaluations_per_pixel = light_average_;
+  if (counting_fragments) frame_stats_.fragments_per_pixel = fragment_average_;
   frame_stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
   stats_ = frame_stats_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -375,10 +381,20 @@ void MeshRenderer::render(ecs::Registry& registry) {
 void MeshRenderer::settle() {
   gfx::finish();
   timer_.wait_for_latest();
+  take_count_averages();
+  if (counted_lights_) stats_.light_evaluations_per_pixel = light_average_;
+  if (counted_fragments_) stats_.fragments_per_pixel = fragment_average_;
   if (!technique_) return;
   const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
   stats_.light_list_entries = lists.entries;
   stats_.light_list_overflows = lists.overflowed_frames;
+}
+
+void MeshRenderer::take_count_averages() {
+  if (!debug_views_) return;
+  for (const lighting::DebugViews::CountAverage& average : debug_views_->take_averages()) {
+    (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
+  }
 }
 
 assets::Image MeshRenderer::read_output() const {

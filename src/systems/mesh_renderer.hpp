@@ -37,8 +37,10 @@ struct FrameStats {
   std::size_t objects = 0;          // entities with a mesh
   std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
-  double light_evaluations_per_pixel = 0.0;  // measured while the heatmap is shown
-  double fragments_per_pixel = 0.0;          // rasterised by geometry passes, while the fragments view is shown
+  // Measured while the heatmap (fragments view) is shown; the newest average
+  // that has come back, a frame or more late (settle() waits for the last).
+  double light_evaluations_per_pixel = 0.0;  // lights evaluated per pixel
+  double fragments_per_pixel = 0.0;          // rasterised by geometry passes
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
   std::uint32_t light_list_overflows = 0;    // frames whose lists did not fit (counted as their totals arrive)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
@@ -100,6 +102,8 @@ class MeshRenderer {
   // Makes the diffuse and specular light targets and their framebuffer while
   // split_lighting_ is on, drops them while it is off.
   void update_split_targets();
+  // Takes in the counters' averages that have arrived (DebugViews::take_averages).
+  void take_count_averages();
   // Made on first use (a debug view or the thumbnails).
   lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);
@@ -145,6 +149,10 @@ class MeshRenderer {
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
   FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
   FrameStats frame_stats_;  // the frame being drawn
+  // The heatmap's and the fragments view's newest averages (they arrive a
+  // frame or more late) and whether the last frame counted each.
+  double light_average_ = 0.0, fragment_average_ = 0.0;
+  bool counted_lights_ = false, counted_fragments_ = false;
   gfx::PassTimer timer_;
   render::FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once

@@ -189,6 +189,7 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   auto evaluated = [&](const char* mode) {
     world.set_mode(mode);
     world.frame(0.0);
+    world.renderer().settle();
     return world.renderer().stats().light_evaluations_per_pixel;
   };
   EXPECT_DOUBLE_EQ(evaluated("forward"), 6.0);

@@ -254,6 +254,7 @@ double evaluated_per_pixel(World& world, const std::string& mode) {
   world.set_mode(mode);
   world.registry().resource<RendererSettings>().debug_view = "heatmap";
   world.frame(0.0);
+  world.renderer().settle();
   world.registry().resource<RendererSettings>().debug_view.clear();
   return world.renderer().stats().light_evaluations_per_pixel;
 }

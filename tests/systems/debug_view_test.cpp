@@ -65,6 +65,7 @@ double coverage(World& world) {
 double evaluations(World& world, const char* mode) {
   world.set_mode(mode);
   world.frame(0.0);
+  world.renderer().settle();
   return world.renderer().stats().light_evaluations_per_pixel;
 }
 
@@ -99,6 +100,7 @@ TEST_F(DebugViewRender, FragmentsViewCountsWhatEachGeometryPassRasterises) {
     World world = stacked_quads(mode);
     world.registry().resource<RendererSettings>().debug_view = "fragments";
     world.frame(0.0);
+    world.renderer().settle();
     EXPECT_DOUBLE_EQ(world.renderer().stats().fragments_per_pixel, 3.0 * passes) << mode;
     // The driver's own count per pass (pipeline statistics) includes the helper
     // invocations of 2x2 quads, so it is at least the fragments rasterised.

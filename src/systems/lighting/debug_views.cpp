@@ -1,11 +1,15 @@
 #include "systems/lighting/debug_views.hpp"
 
+#include <cstring>
 #include <numeric>
 #include <vector>
 
-#include "gfx/gpu_waits.hpp"
 
 namespace atrium::lighting {
+
+namespace {
+constexpr GLuint kBlockSumsBinding = 11;  // shaders/debug/sum_counts.comp
+}  // namespace
 
 namespace {
 
@@ -106,6 +110,10 @@ void DebugViews::resize(const FrameTargets& targets) {
   gbuffer_.resize(targets.size, targets.depth_stencil);
   counts_ = gfx::create_texture(GL_TEXTURE_2D);
   glTextureStorage2D(counts_.id(), 1, GL_R32UI, targets.size.x, targets.size.y);
+  const std::size_t blocks = static_cast<std::size_t>((targets.size.x + 15) / 16) * static_cast<std::size_t>((targets.size.y + 15) / 16);
+  block_sums_ = gfx::create_buffer();
+  glNamedBufferStorage(block_sums_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(blocks, 1) * sizeof(GLuint)), nullptr, 0);
+  sums_ = std::make_unique<gfx::ReadbackRing>(std::max<std::size_t>(blocks, 1) * sizeof(GLuint));
   thumbnail_size_ = {kThumbnailWidth, std::max(1, kThumbnailWidth * targets.size.y / std::max(targets.size.x, 1))};
   thumbnails_ = gfx::create_texture(GL_TEXTURE_2D);
   glTextureStorage2D(thumbnails_.id(), 1, GL_RGBA8, thumbnail_size_.x * kThumbnailColumns,
@@ -216,13 +224,30 @@ void DebugViews::show_light_sum(GLuint sum, glm::vec2 origin, glm::vec2 scale) {
   fullscreen_.draw();
 }
 
-double DebugViews::average_count() const {
-  std::vector<GLuint> counts(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
-  if (counts.empty()) return 0.0;
-  glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT);
-  gfx::read_texture(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, static_cast<GLsizei>(counts.size() * sizeof(GLuint)),
-                    counts.data());
-  return static_cast<double>(std::accumulate(counts.begin(), counts.end(), std::uint64_t{0})) / static_cast<double>(counts.size());
+void DebugViews::send_counts(const DebugViewNeeds& needs) {
+  const glm::ivec2 blocks = (size_ + 15) / 16;
+  if (blocks.x <= 0 || blocks.y <= 0) return;
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlockSumsBinding, block_sums_.id());
+  gpu_.shaders().get({"debug/sum_counts.comp"}).use();
+  glDispatchCompute(static_cast<GLuint>(blocks.x), static_cast<GLuint>(blocks.y), 1);
+  const std::size_t bytes = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y) * sizeof(GLuint);
+  // The tag: the pixels averaged over, and whether they counted fragments.
+  const std::uint64_t pixels = static_cast<std::uint64_t>(size_.x) * static_cast<std::uint64_t>(size_.y);
+  (void)sums_->copy(block_sums_.id(), 0, bytes, pixels << 1 | (needs.count_fragments ? 1u : 0u));
+}
+
+std::vector<DebugViews::CountAverage> DebugViews::take_averages() {
+  std::vector<CountAverage> averages;
+  if (!sums_) return averages;
+  sums_->poll([&](const void* data, std::size_t bytes, std::uint64_t tag) {
+    std::vector<GLuint> sums(bytes / sizeof(GLuint));
+    std::memcpy(sums.data(), data, sums.size() * sizeof(GLuint));
+    const double pixels = static_cast<double>(std::max<std::uint64_t>(tag >> 1, 1));
+    averages.push_back({static_cast<double>(std::accumulate(sums.begin(), sums.end(), std::uint64_t{0})) / pixels, (tag & 1u) != 0});
+  });
+  return averages;
 }
 
 void DebugViews::show_light_bins(bool depth_slices, const DebugViewFrame& frame) {

@@ -24,6 +24,7 @@
 
 #include "assets/gpu_assets.hpp"
 #include "gfx/gl_object.hpp"
+#include "gfx/readback_ring.hpp"
 #include "render/shader_globals.hpp"
 #include "systems/lighting/cluster_grid.hpp"
 #include "systems/lighting/gbuffer.hpp"
@@ -87,8 +88,17 @@ class DebugViews {
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
   // image) after the technique has drawn the frame.
   void draw(const DebugView& view, const DebugViewFrame& frame, GLuint output_framebuffer);
-  // Heatmap and fragments views: the count per pixel, averaged over the image.
-  [[nodiscard]] double average_count() const;
+  // Heatmap and fragments views: sums this frame's counters per block and
+  // sends the sums back (gfx::ReadbackRing) to be averaged a frame or more
+  // later; nothing waits.
+  void send_counts(const DebugViewNeeds& needs);
+  // The averages whose sums have arrived since the last call, newest last:
+  // counts per pixel, and whether they counted fragments (else lights).
+  struct CountAverage {
+    double per_pixel = 0.0;
+    bool fragments = false;
+  };
+  [[nodiscard]] std::vector<CountAverage> take_averages();
 
   // The overlay's thumbnails: the G-buffer views (position, normal, albedo,
   // metallic-roughness, emissive, depth) of `gbuffer`, decoded as the debug
@@ -135,6 +145,8 @@ class DebugViews {
   FullscreenTriangle fullscreen_;
   gfx::Sampler depth_sampler_;  // the shadow atlas read as depth values, comparison off
   gfx::Texture counts_;
+  gfx::Buffer block_sums_;                   // one uint per 16x16 block of counts_
+  std::unique_ptr<gfx::ReadbackRing> sums_;  // block_sums_ on their way back, tagged with what they counted
   gfx::Texture thumbnails_;
   gfx::Framebuffer thumbnail_framebuffer_;
   glm::ivec2 thumbnail_size_{0};
