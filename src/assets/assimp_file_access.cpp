@@ -17,9 +17,12 @@ namespace fs = std::filesystem;
 struct OwnedBytes {
   std::vector<std::uint8_t> bytes;
 };
+// An empty file still gets a valid pointer: the stream copies from it (zero
+// bytes), and memcpy from a null pointer is undefined even then.
+constexpr std::uint8_t kNoBytes = 0;
 struct OwnedMemoryStream : OwnedBytes, Assimp::MemoryIOStream {
   explicit OwnedMemoryStream(std::vector<std::uint8_t> data)
-      : OwnedBytes{std::move(data)}, Assimp::MemoryIOStream(bytes.data(), bytes.size(), false) {}
+      : OwnedBytes{std::move(data)}, Assimp::MemoryIOStream(bytes.empty() ? &kNoBytes : bytes.data(), bytes.size(), false) {}
 };
 
 }  // namespace
