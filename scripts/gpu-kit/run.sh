@@ -76,6 +76,14 @@ step() {
   return "$rc"
 }
 
+# The GPU's clocks, power and temperature into the log (where nvidia-smi is):
+# slow figures read differently on a throttled GPU.
+gpu_state() {
+  command -v nvidia-smi >/dev/null || return 0
+  echo "== GPU state, $1: $(nvidia-smi --query-gpu=clocks.sm,clocks.max.sm,clocks.mem,power.draw,temperature.gpu,utilization.gpu \
+    --format=csv,noheader 2>&1 | head -n 1) (SM clock, max SM clock, memory clock, power, temperature, utilisation)" >>"$log"
+}
+
 info=$out/.info.txt
 if ! step "GL context" 60 "$info" "$atrium" info --lights 0; then
   echo "run.sh: atrium could not start (log: $log)" >&2
@@ -93,12 +101,14 @@ fi
 # Constant density: radii shrink as lights grow (4 m at 1,024 lights, 0.4 m at
 # 2^20), so each pixel is reached by about as many lights at every count.
 bench=("$atrium" bench --modes all --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density)
+gpu_state "before the runs"
 step "compare, built-in scene" 90 "$out/.compare-atrium.txt" "$atrium" compare --size "$size"
 step "compare, Sponza" 90 "$out/.compare-sponza.txt" "$atrium" compare "$sponza" --size "$size"
 step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights "$lights" --csv "$out/bench-atrium.csv"
 step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
 step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
   --shadows "$shadowed" --csv "$out/bench-shadows.csv"
+gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
 step "picture, built-in scene" 30 "$out/.render-atrium.txt" "$atrium" render --mode tiled-deferred --lights 1024 --size "$size" \
@@ -135,6 +145,10 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   echo "- size $size; light counts $lights at constant density; $frames frames after $warmup warm-up per run, view 1;" \
     "a run stops after a frame over 1 s"
   echo "- steps that failed: ${failed[*]:-none}"
+  grep "^== GPU state" "$log" | sed 's/^== /- /'
+  if command -v dmesg >/dev/null && dmesg 2>/dev/null | grep -q "NVRM: Xid"; then
+    echo "- the driver logged GPU faults (dmesg, NVRM Xid): $(dmesg 2>/dev/null | grep "NVRM: Xid" | tail -n 3 | tr '\n' ' ')"
+  fi
   [ -n "$plot_note" ] && echo "- $plot_note"
   section "Every mode against forward, built-in scene (PSNR)" "$out/.compare-atrium.txt"
   section "Every mode against forward, Sponza (PSNR)" "$out/.compare-sponza.txt"
