@@ -36,6 +36,12 @@ std::string fixed(double value, int decimals) {
   return out.str();
 }
 
+// A row with no times (refused or skipped): NaN prints as "-" and is left
+// out of the medians.
+void mark_unmeasured(BenchRow& row) {
+  row.median_ms = row.p5_ms = row.p95_ms = row.gpu_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+}
+
 double percentile(std::vector<double> values, double p) {
   if (values.empty()) return 0.0;
   std::sort(values.begin(), values.end());
@@ -104,7 +110,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
     } catch (const gfx::ResourceLimitError& e) {
       row.refused = e.what();
       row.sliced = slices_depth();
-      row.median_ms = row.p5_ms = row.p95_ms = row.gpu_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+      mark_unmeasured(row);
       return row;
     }
     gfx::finish();
@@ -250,7 +256,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
               row.shadows = shadows;
               row.z_slicing = slicing;
               row.skipped = skipped;
-              row.median_ms = row.p5_ms = row.p95_ms = row.gpu_ms = row.evaluated_per_pixel = std::numeric_limits<double>::quiet_NaN();
+              mark_unmeasured(row);
               row.reaching_per_pixel = reaching;
             }
             if (!row.sliced) std::erase(to_measure, mode);

@@ -129,8 +129,7 @@ int run_info(const CliOptions& options) {
     for (const std::string& mode : lighting::mode_names()) {
       world.set_mode(mode);
       world.frame(0.0);
-      const render::GraphMemory memory = world.renderer().graph().memory();
-      info.memory.push_back({mode, memory.imported_bytes, memory.transient_bytes, memory.aliased_bytes});
+      info.memory.push_back({mode, world.renderer().graph().memory()});
     }
   }
   std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);

@@ -95,8 +95,9 @@ std::string format_info_text(const SceneInfo& i) {
                   i.memory_size.y);
     text += line;
     for (const SceneInfo::ModeMemory& m : i.memory) {
-      std::snprintf(line, sizeof line, "  %-24s %10s; %s (%s)\n", m.mode.c_str(), format_bytes(static_cast<double>(m.imported_bytes)).c_str(),
-                    format_bytes(static_cast<double>(m.aliased_bytes)).c_str(), format_bytes(static_cast<double>(m.transient_bytes)).c_str());
+      std::snprintf(line, sizeof line, "  %-24s %10s; %s (%s)\n", m.mode.c_str(), format_bytes(static_cast<double>(m.bytes.imported_bytes)).c_str(),
+                    format_bytes(static_cast<double>(m.bytes.aliased_bytes)).c_str(),
+                    format_bytes(static_cast<double>(m.bytes.transient_bytes)).c_str());
       text += line;
     }
   }
@@ -129,8 +130,8 @@ std::string format_info_json(const SceneInfo& i) {
   if (!i.memory.empty()) {
     nlohmann::json modes = nlohmann::json::array();
     for (const SceneInfo::ModeMemory& m : i.memory) {
-      modes.push_back({{"mode", m.mode}, {"imported_bytes", m.imported_bytes}, {"transient_bytes", m.transient_bytes},
-                       {"aliased_bytes", m.aliased_bytes}});
+      modes.push_back({{"mode", m.mode}, {"imported_bytes", m.bytes.imported_bytes}, {"transient_bytes", m.bytes.transient_bytes},
+                       {"aliased_bytes", m.bytes.aliased_bytes}});
     }
     j["render_targets"] = {{"size", {i.memory_size.x, i.memory_size.y}}, {"modes", modes}};
   }

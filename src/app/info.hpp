@@ -8,6 +8,7 @@
 
 #include "app/world.hpp"
 #include "gfx/context.hpp"
+#include "render/frame_graph.hpp"
 
 namespace atrium {
 
@@ -28,7 +29,7 @@ struct SceneInfo {
   // --memory: per mode, the frame graph's render-target memory at `memory_size`.
   struct ModeMemory {
     std::string mode;
-    std::size_t imported_bytes = 0, transient_bytes = 0, aliased_bytes = 0;
+    render::GraphMemory bytes;
   };
   std::vector<ModeMemory> memory;
   glm::ivec2 memory_size{0};

@@ -355,11 +355,11 @@ void MeshRenderer::render(ecs::Registry& registry) {
 
   graph_.compile();
   timer_.begin_frame();
+  counted_lights_ = counting_lights;
+  counted_fragments_ = counting_fragments;
   try {
     graph_.execute(&timer_);
-    const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
-    frame_stats_.light_list_entries = lists.entries;
-    frame_stats_.light_list_overflows = lists.overflowed_frames;
+    take_reports(frame_stats_);
   } catch (const gfx::ResourceLimitError& e) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
                                   std::to_string(size.y) + ": " + e.what());
@@ -368,11 +368,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
   frame_stats_.draw_calls = draws.draw_calls();
   frame_stats_.triangles = draws.triangles;
   frame_stats_.triangles_drawn = draws.triangles_drawn;
-  take_count_averages();
-  counted_lights_ = counting_lights;
-  counted_fragments_ = counting_fragments;
-  if (counting_lights) frame_stats_.light_evaluations_per_pixel = light_average_;
-  if (counting_fragments) frame_stats_.fragments_per_pixel = fragment_average_;
   frame_stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
   stats_ = frame_stats_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -381,20 +376,21 @@ void MeshRenderer::render(ecs::Registry& registry) {
 void MeshRenderer::settle() {
   gfx::finish();
   timer_.wait_for_latest();
-  take_count_averages();
-  if (counted_lights_) stats_.light_evaluations_per_pixel = light_average_;
-  if (counted_fragments_) stats_.fragments_per_pixel = fragment_average_;
-  if (!technique_) return;
-  const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
-  stats_.light_list_entries = lists.entries;
-  stats_.light_list_overflows = lists.overflowed_frames;
+  take_reports(stats_);
 }
 
-void MeshRenderer::take_count_averages() {
-  if (!debug_views_) return;
-  for (const lighting::DebugViews::CountAverage& average : debug_views_->take_averages()) {
-    (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
+void MeshRenderer::take_reports(FrameStats& stats) {
+  if (debug_views_) {
+    for (const lighting::DebugViews::CountAverage& average : debug_views_->take_averages()) {
+      (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
+    }
   }
+  if (counted_lights_) stats.light_evaluations_per_pixel = light_average_;
+  if (counted_fragments_) stats.fragments_per_pixel = fragment_average_;
+  if (!technique_) return;
+  const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
+  stats.light_list_entries = lists.entries;
+  stats.light_list_overflows = lists.overflowed_frames;
 }
 
 assets::Image MeshRenderer::read_output() const {

@@ -102,8 +102,10 @@ class MeshRenderer {
   // Makes the diffuse and specular light targets and their framebuffer while
   // split_lighting_ is on, drops them while it is off.
   void update_split_targets();
-  // Takes in the counters' averages that have arrived (DebugViews::take_averages).
-  void take_count_averages();
+  // Takes what the GPU reported a frame or more late and has arrived into
+  // `stats`: the counters' averages (DebugViews::take_averages) for the views
+  // the last frame counted, and the light lists' totals. Never waits.
+  void take_reports(FrameStats& stats);
   // Made on first use (a debug view or the thumbnails).
   lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);

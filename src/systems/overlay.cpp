@@ -289,7 +289,6 @@ void register_overlay(ecs::Registry& registry, GLFWwindow* window) {
   registry.set_resource<Overlay>(window);
   // A pass over the window's framebuffer after presenting: the frame graph
   // times it with the others.
-  if (!registry.try_resource<RenderContributors>()) registry.set_resource<RenderContributors>();
   registry.resource<RenderContributors>().on_window.push_back(
       [](render::FrameGraph& graph, ecs::Registry& r, const lighting::FrameContext&, const lighting::FrameTargets&) {
         graph.add_pass("overlay", [](render::PassBuilder& pass) { pass.keep(); },

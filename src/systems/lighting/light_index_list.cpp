@@ -68,11 +68,14 @@ void LightIndexList::assign(std::uint32_t light_count, const std::function<void(
   poll();
   grow_for(wanted_, on_resize);
   wanted_ = 0;
-  const Total zero;
-  glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
-  bind();
-  dispatch();
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  auto run = [&] {
+    const Total zero;
+    glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
+    bind();
+    dispatch();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  };
+  run();
   if (loop_limit_ && light_count > loop_limit_) {
     // An overflowed bin's pixels would loop over more lights than the driver
     // allows: size the list in this frame instead.
@@ -83,10 +86,7 @@ void LightIndexList::assign(std::uint32_t light_count, const std::function<void(
     if (total.entries <= capacity_) return;
     ++overflow_frames_;
     grow_for(total.entries, on_resize);
-    glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
-    bind();
-    dispatch();
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    run();
     return;
   }
   (void)totals_.copy(total_.id(), 0, sizeof(Total), capacity_);
