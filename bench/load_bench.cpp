@@ -12,7 +12,7 @@
 #include <tiny_gltf.h>
 
 #include "assets/gltf_import.hpp"
-#include "assets/gpu_assets.hpp"
+#include "render/gpu_assets.hpp"
 #include "gfx/context.hpp"
 
 namespace {

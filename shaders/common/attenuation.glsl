@@ -1,6 +1,6 @@
 // Point-light falloff: inverse-square times a smooth window that is exactly zero
-// at the light's radius. Twin of src/systems/lighting/light_falloff.cpp; the two
-// are compared by tests/systems/light_falloff_test.cpp.
+// at the light's radius. Twin of src/render/lighting/light_falloff.cpp; the two
+// are compared by tests/render/lighting/light_falloff_test.cpp.
 const float kMinLightDistance = 0.01;
 
 float light_attenuation(float distance, float radius) {

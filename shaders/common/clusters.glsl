@@ -3,7 +3,7 @@
 // the near plane to u_slicing.x; past it a depth's slice is f(depth) * scale + bias,
 // f the logarithm (log and plain-log slicing: distant slices are not wasted)
 // or, for uniform slicing, the depth itself. C++ twin: ClusterGrid in
-// src/systems/lighting/cluster_grid.cpp (tested against each other).
+// src/render/lighting/cluster_grid.cpp (tested against each other).
 layout(std140, binding = 1) uniform ClusterBlock {
   uvec4 u_grid;             // xyz clusters per axis, w total
   vec4 u_slicing;           // x first slice's far depth, y scale, z bias, w 1 = uniform (else log)

@@ -1,5 +1,5 @@
 // Per-frame constants shared by every pass. C++ twin: FrameUniforms in
-// src/systems/lighting/frame_uniforms.hpp (its size is static_asserted).
+// src/render/frame/frame_uniforms.hpp (its size is static_asserted).
 layout(std140, binding = 0) uniform FrameBlock {
   mat4 u_view;
   mat4 u_projection;

@@ -1,6 +1,6 @@
 // The G-buffer of the deferred techniques, written by the geometry pass and read
 // back into a Surface by lighting passes. C++ side: GBuffer in
-// src/systems/lighting/gbuffer.hpp (formats, bytes per pixel). Needs frame.glsl.
+// src/render/lighting/gbuffer.hpp (formats, bytes per pixel). Needs frame.glsl.
 // The layout is picked by define: THIN_GBUFFER (the light pre-pass's, set by
 // GBuffer::defines()), else COMPACT_GBUFFER (--gbuffer compact), else full.
 // With MSAA every target is multisampled: read_gbuffer() reads the sample the

@@ -1,5 +1,5 @@
 // The scene's lights, mirrored from light entities each frame by the
-// LightBuffer system. C++ twin: GpuLight in src/systems/light_buffer.hpp.
+// LightBuffer system. C++ twin: GpuLight in src/render/light_buffer.hpp.
 const uint kLightPoint = 0u;
 const uint kLightSpot = 1u;
 const uint kLightDirectional = 2u;

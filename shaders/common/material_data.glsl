@@ -1,6 +1,6 @@
 // A material's parameters as the frame's material table holds them, and the
 // bits of Material.flags. C++ twins: MaterialData and the kMaterial* constants
-// in src/systems/lighting/draw_list.hpp (compared by a test).
+// in src/render/frame/draw_list.hpp (compared by a test).
 const uint kMaterialHasNormalTexture = 1u << 0;
 const uint kMaterialNormalXyOnly = 1u << 1;     // a two-channel (BC5) normal map: z is rebuilt
 const uint kMaterialNormalGreenDown = 1u << 2;  // DirectX's convention: green points down

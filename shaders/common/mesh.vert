@@ -19,7 +19,7 @@ layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
 layout(location = 6) in uint a_instance;
 
-// C++ twin: InstanceData in src/systems/lighting/draw_list.hpp.
+// C++ twin: InstanceData in src/render/frame/draw_list.hpp.
 struct Instance {
   mat4 model;
   mat4 normal_matrix;  // the inverse transpose in the upper-left 3x3

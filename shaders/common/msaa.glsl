@@ -2,7 +2,7 @@
 // renderer's global define for --msaa) every target is multisampled; a pass
 // reads sample `i` of a target with fetch_sample(), and a lighting pass built
 // with PER_SAMPLE runs once per sample (gl_SampleID), the others once per pixel
-// reading sample 0 (src/systems/lighting/sample_rate.hpp says which pixels get which).
+// reading sample 0 (src/render/lighting/sample_rate.hpp says which pixels get which).
 #ifdef MSAA_SAMPLES
 #define target2D sampler2DMS
 #define utarget2D usampler2DMS

@@ -16,7 +16,7 @@ float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) { retur
 // Whether the ShadowAtlas drew maps for `light` this frame.
 bool has_shadow_maps(Light light) { return light.spot.z > 0.5; }
 
-// C++ twin: ShadowView in src/systems/shadows/shadow_views.hpp.
+// C++ twin: ShadowView in src/render/shadows/shadow_views.hpp.
 struct ShadowView {
   mat4 view_projection;  // world to the map's clip space (reversed Z)
   vec4 rect;             // the tile in atlas UV: xy lower-left corner, zw size

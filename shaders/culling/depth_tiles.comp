@@ -2,7 +2,7 @@
 // Reads the depth buffer after the first geometry pass (every sample with
 // MSAA); writes the farthest view depth of each 8x8-pixel tile (infinity where
 // some sample holds no geometry) for occlusion culling on the CPU
-// (src/systems/occlusion_culling.hpp): whatever lies behind it is hidden.
+// (src/render/culling/occlusion_culling.hpp): whatever lies behind it is hidden.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/frame.glsl"

@@ -1,9 +1,10 @@
 #version 450 core
 // Debug views of the G-buffer and depth: reads one target and writes it as a
 // displayable colour straight to the output (no tone mapping). One of
-// SHOW_POSITION, SHOW_NORMAL, SHOW_ALBEDO, SHOW_METALLIC_ROUGHNESS, SHOW_EMISSIVE
-// and SHOW_DEPTH picks the target (the debug view table's rows); in the light
-// pre-pass's thin layout albedo and emissive are grey.
+// SHOW_POSITION, SHOW_NORMAL, SHOW_ALBEDO, SHOW_METALLIC_ROUGHNESS and
+// SHOW_EMISSIVE picks the G-buffer quantity (the debug view table's rows; in
+// the light pre-pass's thin layout albedo and emissive are grey); SHOW_DEPTH
+// shows the depth resource bound at unit 5 (the visualiser of depth resources).
 // The overlay's thumbnails draw it into a smaller viewport: output
 // pixels map to G-buffer pixels through the thumbnail origin and scale. With
 // MSAA they show sample 0.
@@ -22,15 +23,15 @@ layout(location = 0) out vec4 out_color;
 
 void main() {
   ivec2 pixel = ivec2((gl_FragCoord.xy - u_thumbnail_origin) * u_thumbnail_scale);
-  Surface s;
-  bool covered = read_gbuffer(pixel, s);
   vec3 color = vec3(0.0);
 #ifdef SHOW_DEPTH
-  // Linear view depth, near white, far black, on a log scale.
+  // Linear view depth, near white, far black, on a log scale; any depth
+  // resource, with no G-buffer.
   float d = fetch_sample(u_depth, pixel, 0).r;
   color = vec3(d > kDepthFar ? 1.0 - log2(view_depth_from_depth(d) / u_near) / log2(u_far / u_near) : 0.0);
 #else
-  if (covered) {
+  Surface s;
+  if (read_gbuffer(pixel, s)) {
 #if defined(SHOW_POSITION)
     color = clamp((s.position - u_bounds_min) / max(u_bounds_max - u_bounds_min, vec3(1e-6)), 0.0, 1.0);
 #elif defined(SHOW_NORMAL)

@@ -15,8 +15,9 @@
 #include "gfx/gl.hpp"
 #include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
-#include "systems/lighting/light_falloff.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/lighting/light_falloff.hpp"
+#include "render/lighting/light_index_list.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 namespace {
@@ -98,8 +99,8 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
   auto slices_depth = [&] {
-    const lighting::LightingTechnique* technique = world.renderer().technique();
-    return technique && technique->bind_light_bins().binning == lighting::LightingTechnique::Binning::Clusters;
+    const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>();
+    return bins && bins->binning == lighting::LightBins::Binning::Clusters;
   };
   bool over_limit = false;
   for (int f = 0; f < warmup + frames && !over_limit; ++f) {

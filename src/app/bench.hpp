@@ -15,7 +15,7 @@
 
 #include "assets/scene.hpp"
 #include "gfx/pass_timer.hpp"
-#include "systems/lighting/technique_options.hpp"
+#include "components/technique_options.hpp"
 
 namespace atrium {
 

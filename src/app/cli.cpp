@@ -15,8 +15,8 @@
 #include "assets/load_budget.hpp"
 #include "gfx/context.hpp"
 #include "gfx/shader_program.hpp"
-#include "systems/lighting/debug_views.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/debug/debug_views.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 
@@ -40,8 +40,8 @@ WorldOptions world_options(const CliOptions& options) {
 
 namespace {
 
-// `render --debug-view list`: the views the mode (with these options) offers,
-// one per line with what each shows.
+// `render --debug-view list`: the views the mode's graph (with these options)
+// offers, one per line with what each shows.
 int list_debug_views(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create();
   WorldOptions listed = world_options(options);
@@ -49,10 +49,8 @@ int list_debug_views(const CliOptions& options) {
   listed.size = {16, 16};  // one frame makes the technique; its picture is not needed
   World world(listed);
   world.frame(0.0);
-  const auto& settings = world.registry().resource<RendererSettings>();
-  for (const lighting::DebugView& view : lighting::debug_view_table()) {
-    if (!view.offered(*world.renderer().technique(), settings.technique_options, settings.shadows)) continue;
-    std::printf("%-20s %s\n", std::string(view.name).c_str(), std::string(view.help).c_str());
+  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
+    std::printf("%-24s %s\n", view.name.c_str(), view.help.c_str());
   }
   return kExitOk;
 }
@@ -251,6 +249,8 @@ int run_cli(int argc, char** argv) {
     return fail(e, kExitUsage);
   } catch (const assets::ImageError& e) {
     return fail(e, kExitUsage);
+  } catch (const lighting::UnknownViewError& e) {
+    return fail(e, kExitUsage);  // found by the first frame: its graph does not offer that view
   } catch (const gfx::ShaderError& e) {
     std::fprintf(stderr, "atrium: shader error:\n%s\n", e.what());
     return kExitRuntimeFailure;

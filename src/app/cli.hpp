@@ -15,7 +15,7 @@
 #include "app/bench.hpp"
 #include "app/world.hpp"
 #include "components/light.hpp"
-#include "systems/lighting/technique_options.hpp"
+#include "components/technique_options.hpp"
 
 namespace atrium {
 

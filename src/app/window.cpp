@@ -25,8 +25,8 @@
 #include "systems/fly_camera.hpp"
 #include "systems/input.hpp"
 #include "systems/light_animation.hpp"
-#include "systems/lighting/debug_views.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/debug/debug_views.hpp"
+#include "render/techniques/technique.hpp"
 #include "systems/overlay.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -78,7 +78,7 @@ void handle_keys(World& world, gfx::WindowContext& context) {
         break;
       case GLFW_KEY_G: {
         std::vector<std::string> views{""};
-        for (const lighting::DebugView& view : lighting::debug_view_table()) views.emplace_back(view.name);
+        for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
         set_debug_view(world, step_name(views, registry.resource<RendererSettings>().debug_view, shift ? -1 : 1));
         break;
       }

@@ -13,7 +13,7 @@
 #include "assets/asset_manager.hpp"
 #include "assets/scene_file.hpp"
 #include "assets/builtin_scene.hpp"
-#include "assets/gpu_assets.hpp"
+#include "render/gpu_assets.hpp"
 #include "components/camera.hpp"
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
@@ -24,9 +24,9 @@
 #include "systems/camera.hpp"
 #include "systems/fireflies/fireflies.hpp"
 #include "systems/frustum_culling.hpp"
-#include "systems/light_buffer.hpp"
+#include "render/light_buffer.hpp"
 #include "systems/light_radius.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 namespace {

@@ -14,8 +14,8 @@
 #include "assets/scene.hpp"
 #include "assets/scene_file.hpp"
 #include "ecs/scheduler.hpp"
-#include "systems/lighting/technique_options.hpp"
-#include "systems/mesh_renderer.hpp"
+#include "components/technique_options.hpp"
+#include "render/mesh_renderer.hpp"
 
 namespace atrium {
 
@@ -31,8 +31,8 @@ struct WorldOptions {
   std::optional<std::string> mode;      // the scene's default mode when absent
   int view = 1;                         // 1-based index into the scene's views
   glm::ivec2 size{1280, 720};
-  std::string shading = "pbr";          // a name from systems/lighting/shading_model.hpp
-  std::string debug_view;               // empty, or a name from systems/lighting/debug_views.hpp
+  std::string shading = "pbr";          // a name from render/lighting/shading_model.hpp
+  std::string debug_view;               // empty, or a name from render/debug/debug_views.hpp
   lighting::TechniqueOptions technique_options;
   // Every point and spot light gets this radius, and the intensity whose derived
   // radius it is (so brightness stays sane); absent: the scene's own.

@@ -5,6 +5,9 @@
 // index list is reordered so that every meshlet is one contiguous range.
 #pragma once
 
+#include <cstdint>
+#include <span>
+
 #include "assets/mesh_asset.hpp"
 
 namespace atrium::assets {
@@ -19,5 +22,27 @@ inline constexpr std::size_t kMeshletMinTriangles = 2 * kMeshletTriangles;
 // kMeshletMinTriangles triangles (blended ones keep their triangle order, which
 // blending sees). Double-sided materials get no normal cone.
 void build_meshlets(MeshAsset& asset);
+
+// Calls `run(first_index, index_count)` (within the primitive's indices) for
+// each run of consecutive meshlets that `keep(m)` accepts (m indexes
+// `meshlets`), so that a pass draws one range per run rather than one per
+// meshlet.
+template <typename Keep, typename Run>
+void for_each_meshlet_run(std::span<const Meshlet> meshlets, Keep keep, Run run) {
+  std::uint32_t first = 0, count = 0;
+  for (std::size_t m = 0; m < meshlets.size(); ++m) {
+    if (!keep(m)) {
+      if (count > 0) run(first, count);
+      count = 0;
+    } else if (count > 0 && first + count == meshlets[m].first_index) {
+      count += meshlets[m].index_count;
+    } else {
+      if (count > 0) run(first, count);
+      first = meshlets[m].first_index;
+      count = meshlets[m].index_count;
+    }
+  }
+  if (count > 0) run(first, count);
+}
 
 }  // namespace atrium::assets

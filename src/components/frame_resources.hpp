@@ -5,7 +5,7 @@
 
 #include <glm/glm.hpp>
 
-#include "systems/lighting/technique_options.hpp"
+#include "components/technique_options.hpp"
 
 namespace atrium {
 
@@ -34,11 +34,11 @@ struct SceneSettings {
 };
 
 // What the MeshRenderer draws with: a mode name from the technique table and a
-// shading model name from systems/lighting/shading_model.hpp.
+// shading model name from render/lighting/shading_model.hpp.
 struct RendererSettings {
   std::string mode = "forward";
   std::string shading = "pbr";  // pbr, blinn-phong or phong
-  std::string debug_view;       // empty, or a name from systems/lighting/debug_views.hpp
+  std::string debug_view;       // empty, or a name from render/debug/debug_views.hpp
   lighting::TechniqueOptions technique_options;
   bool present_to_window = false;  // blit the final image to the default framebuffer
   bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)

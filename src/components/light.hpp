@@ -1,6 +1,6 @@
 // A point light is an entity with a Transform (its position), a LightColor and,
 // optionally, a LightRadius. Without a LightRadius the radius is derived from the
-// colour and intensity (see systems/lighting/light_falloff.hpp). A SpotCone or a
+// colour and intensity (see render/lighting/light_falloff.hpp). A SpotCone or a
 // DirectionalLight component changes the kind.
 #pragma once
 

@@ -1,6 +1,6 @@
 // What the camera sees of an entity, per primitive and per meshlet: the frustum
 // culling system (systems/frustum_culling.hpp) marks what lies in the view, and
-// occlusion culling (systems/occlusion_culling.hpp) what the depth buffer hides.
+// occlusion culling (render/culling/occlusion_culling.hpp) what the depth buffer hides.
 // Every pass that draws scene geometry reads it through the frame's draw list.
 #pragma once
 

@@ -11,7 +11,7 @@
 
 #include "ecs/registry.hpp"
 #include "render/frame_graph.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 

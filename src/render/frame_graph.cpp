@@ -114,12 +114,12 @@ struct FrameGraph::Pool {
   }
 };
 
-ResourceId PassBuilder::create(const std::string& name, const TextureDesc& desc) {
-  return graph_.create(pass_, {name, ResourceKind::Texture, desc, {}}, Access::Attachment);
+ResourceId PassBuilder::create(const std::string& name, const TextureDesc& desc, ViewKind view) {
+  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Texture, .texture = desc, .view = view}, Access::Attachment);
 }
 
-ResourceId PassBuilder::create(const std::string& name, const BufferDesc& desc) {
-  return graph_.create(pass_, {name, ResourceKind::Buffer, {}, desc}, Access::Transfer);
+ResourceId PassBuilder::create(const std::string& name, const BufferDesc& desc, ViewKind view) {
+  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Buffer, .buffer = desc, .view = view}, Access::Transfer);
 }
 
 ResourceId PassBuilder::read(ResourceId resource, Access access) {
@@ -149,7 +149,7 @@ GLuint PassResources::buffer(ResourceId resource) const {
 }
 
 
-GLuint PassResources::framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const { return graph_.framebuffer(colors, depth); }
+GLuint PassResources::framebuffer(std::span<const ResourceId> colors, ResourceId depth) const { return graph_.framebuffer(colors, depth); }
 
 FrameGraph::FrameGraph() : pool_(std::make_unique<Pool>()) {}
 FrameGraph::~FrameGraph() = default;
@@ -158,11 +158,13 @@ void FrameGraph::reset() {
   passes_.clear();
   resources_.clear();
   by_name_.clear();
+  board_.clear();
   slots_.clear();
   compiled_.clear();
   memory_ = {};
-  frame_framebuffers_.clear();
 }
+
+void FrameGraph::forget_imports() { pool_->framebuffers.clear(); }
 
 std::uint32_t FrameGraph::add_resource(Resource resource) {
   if (by_name_.contains(resource.name)) throw std::logic_error("frame graph: two resources are named '" + resource.name + "'");
@@ -178,12 +180,12 @@ ResourceId FrameGraph::create(std::uint32_t pass, Resource resource, Access firs
   return id;
 }
 
-ResourceId FrameGraph::import_texture(const std::string& name, GLuint texture, const TextureDesc& desc) {
-  return {add_resource({name, ResourceKind::Texture, desc, {}, true, texture})};
+ResourceId FrameGraph::import_texture(const std::string& name, GLuint texture, const TextureDesc& desc, ViewKind view) {
+  return {add_resource({.name = name, .kind = ResourceKind::Texture, .texture = desc, .imported = true, .view = view, .object = texture})};
 }
 
-ResourceId FrameGraph::import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc) {
-  return {add_resource({name, ResourceKind::Buffer, {}, desc, true, buffer})};
+ResourceId FrameGraph::import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc, ViewKind view) {
+  return {add_resource({.name = name, .kind = ResourceKind::Buffer, .buffer = desc, .imported = true, .view = view, .object = buffer})};
 }
 
 void FrameGraph::use(std::uint32_t pass, ResourceId resource, Access access, bool write) {
@@ -211,6 +213,16 @@ ResourceId FrameGraph::find(const std::string& name) const {
   const auto it = by_name_.find(name);
   return it == by_name_.end() ? ResourceId{} : ResourceId{it->second};
 }
+
+std::vector<ViewableResource> FrameGraph::viewable() const {
+  std::vector<ViewableResource> resources;
+  for (std::uint32_t i = 0; i < resources_.size(); ++i) {
+    if (resources_[i].view != ViewKind::None) resources.push_back({resources_[i].name, resources_[i].view, {i}});
+  }
+  return resources;
+}
+
+const TextureDesc& FrameGraph::texture_desc(ResourceId resource) const { return resources_.at(resource.index).texture; }
 
 void FrameGraph::compile() {
   const std::size_t count = passes_.size();
@@ -318,19 +330,14 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
 
 std::size_t FrameGraph::pooled_objects() const { return pool_->textures.size() + pool_->buffers.size(); }
 
-GLuint FrameGraph::framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const {
+GLuint FrameGraph::framebuffer(std::span<const ResourceId> colors, ResourceId depth) const {
   std::vector<GLuint> key;
   for (const ResourceId c : colors) key.push_back(resources_.at(c.index).object);
   key.push_back(depth.valid() ? resources_.at(depth.index).object : 0);
-  // Pooled objects live until the pool releases them, with their framebuffers;
-  // an imported texture may be remade under the same name by its owner, so a
-  // framebuffer on one lasts this frame only.
-  bool all_pooled = !depth.valid() || !resources_.at(depth.index).imported;
-  for (const ResourceId c : colors) all_pooled = all_pooled && !resources_.at(c.index).imported;
-  if (all_pooled) {
-    const auto it = pool_->framebuffers.find(key);
-    if (it != pool_->framebuffers.end()) return it->second.id();
-  }
+  // Kept until the pool releases one of its textures, or an owner remakes an
+  // imported one (forget_imports).
+  const auto it = pool_->framebuffers.find(key);
+  if (it != pool_->framebuffers.end()) return it->second.id();
   gfx::Framebuffer framebuffer = gfx::create_framebuffer();
   std::vector<GLenum> buffers;
   for (std::size_t i = 0; i + 1 < key.size(); ++i) {
@@ -346,8 +353,7 @@ GLuint FrameGraph::framebuffer(std::initializer_list<ResourceId> colors, Resourc
   else glNamedFramebufferDrawBuffers(framebuffer.id(), static_cast<GLsizei>(buffers.size()), buffers.data());
   gfx::require_complete(framebuffer.id(), "frame graph");
   const GLuint id = framebuffer.id();
-  if (all_pooled) pool_->framebuffers.emplace(std::move(key), std::move(framebuffer));
-  else frame_framebuffers_.push_back(std::move(framebuffer));
+  pool_->framebuffers.emplace(std::move(key), std::move(framebuffer));
   return id;
 }
 

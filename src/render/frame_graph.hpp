@@ -11,12 +11,15 @@
 // contributor (a debug view, a system that draws) can read what another made.
 #pragma once
 
+#include <any>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
+#include <typeindex>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -61,17 +64,39 @@ struct ResourceId {
 
 enum class ResourceKind : std::uint8_t { Texture, Buffer };
 
+// What a resource holds, for the debug views (render/debug/debug_views.hpp),
+// which pick their visualiser by it: a pass that declares a resource with a
+// kind makes it viewable under its name with no other edit. None: nothing to
+// look at (light data, scratch, the final output).
+enum class ViewKind : std::uint8_t {
+  None,
+  Color,        // linear HDR colour or summed light: shown exposed and tone-mapped
+  Depth,        // depth (a depth-stencil target, or view depth in a float target): log view depth
+  GBuffer,      // a G-buffer target: shown through its decoded quantities (position, normal...)
+  Counts,       // per-pixel counters (R32UI): a heatmap
+  LightBins,    // per-bin light ranges: each pixel's bin's light count (FrameGraph::published<LightBins>)
+  ShadowAtlas,  // shadow-map depths
+};
+
+// A resource a debug view can show (FrameGraph::viewable).
+struct ViewableResource {
+  std::string name;
+  ViewKind kind;
+  ResourceId id;
+};
+
 // What a pass declares about itself while the graph is built.
 class PassBuilder {
  public:
   // A transient resource this pass writes first; made by the graph, valid
   // from this pass to the last pass that reads it.
-  ResourceId create(const std::string& name, const TextureDesc& desc);
-  ResourceId create(const std::string& name, const BufferDesc& desc);
+  ResourceId create(const std::string& name, const TextureDesc& desc, ViewKind view = ViewKind::None);
+  ResourceId create(const std::string& name, const BufferDesc& desc, ViewKind view = ViewKind::None);
   ResourceId read(ResourceId resource, Access access);
   ResourceId write(ResourceId resource, Access access);
   // By name (any contributor's resource); invalid when none has that name.
   [[nodiscard]] ResourceId find(const std::string& name) const;
+
   // The pass has effects the graph cannot see (presenting, a read-back, state
   // a later frame uses): it is never culled.
   void keep();
@@ -91,7 +116,10 @@ class PassResources {
   // A framebuffer with these textures as colour attachments 0.. and `depth`
   // (depth-stencil or depth, by its format; invalid: none), made once and kept
   // while the textures live.
-  [[nodiscard]] GLuint framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth = {}) const;
+  [[nodiscard]] GLuint framebuffer(std::span<const ResourceId> colors, ResourceId depth = {}) const;
+  [[nodiscard]] GLuint framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth = {}) const {
+    return framebuffer(std::span<const ResourceId>(colors.begin(), colors.size()), depth);
+  }
 
  private:
   friend class FrameGraph;
@@ -127,15 +155,34 @@ class FrameGraph {
   // pooled for the next frames.
   void reset();
 
+  // A long-lived GL object owned elsewhere, under `name`. Its owner calls
+  // forget_imports() when it remakes one (a resize), so that framebuffers
+  // cached on the old objects go.
+  void forget_imports();
   // A long-lived GL object owned elsewhere, under `name`.
-  ResourceId import_texture(const std::string& name, GLuint texture, const TextureDesc& desc);
-  ResourceId import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc);
+  ResourceId import_texture(const std::string& name, GLuint texture, const TextureDesc& desc, ViewKind view = ViewKind::None);
+  ResourceId import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc, ViewKind view = ViewKind::None);
 
   // Adds a pass; `setup` runs now, `execute` when the graph executes. Untimed
   // passes (timed = false) are for work too small to be worth a line.
   void add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed = true);
 
   [[nodiscard]] ResourceId find(const std::string& name) const;
+  // Every resource declared with a ViewKind, in the order declared.
+  [[nodiscard]] std::vector<ViewableResource> viewable() const;
+  // A texture resource's description (size, format, samples).
+  [[nodiscard]] const TextureDesc& texture_desc(ResourceId resource) const;
+
+  // What a contributor tells the frame's later passes beyond its resources
+  // (how its light lists map pixels to bins, say): one value per type, kept
+  // until reset(). The reader needs no hook into the writer.
+  template <typename T>
+  void publish(T value) { board_[std::type_index(typeid(T))] = std::move(value); }
+  template <typename T>
+  [[nodiscard]] const T* published() const {
+    const auto it = board_.find(std::type_index(typeid(T)));
+    return it == board_.end() ? nullptr : std::any_cast<T>(&it->second);
+  }
 
   // Culls, finds lifetimes and plans which transient resources share objects.
   void compile();
@@ -169,6 +216,7 @@ class FrameGraph {
     TextureDesc texture;
     BufferDesc buffer;
     bool imported = false;
+    ViewKind view = ViewKind::None;
     GLuint object = 0;              // imported: given; transient: set by execute
     std::uint32_t first = 0, last = 0;  // passes that first and last use it
     bool used = false;
@@ -184,15 +232,15 @@ class FrameGraph {
   std::uint32_t add_resource(Resource resource);
   ResourceId create(std::uint32_t pass, Resource resource, Access first_write);
   void use(std::uint32_t pass, ResourceId resource, Access access, bool write);
-  GLuint framebuffer(std::initializer_list<ResourceId> colors, ResourceId depth) const;
+  GLuint framebuffer(std::span<const ResourceId> colors, ResourceId depth) const;
 
   std::vector<Pass> passes_;
   std::vector<Resource> resources_;
   std::map<std::string, std::uint32_t> by_name_;
+  std::map<std::type_index, std::any> board_;
   std::vector<Slot> slots_;
   std::vector<CompiledPass> compiled_;
   GraphMemory memory_;
-  mutable std::vector<gfx::Framebuffer> frame_framebuffers_;  // on imported textures: this frame's only
 
   // GL objects kept across frames: per description, a list; a frame takes
   // them in order, and those no frame took for a while are released.

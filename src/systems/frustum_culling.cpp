@@ -8,33 +8,6 @@
 
 namespace atrium {
 
-Frustum frustum_of(const glm::mat4& m) {
-  // Gribb and Hartmann: a clip-space bound is a plane over the matrix's rows.
-  const glm::vec4 x{m[0][0], m[1][0], m[2][0], m[3][0]};
-  const glm::vec4 y{m[0][1], m[1][1], m[2][1], m[3][1]};
-  const glm::vec4 z{m[0][2], m[1][2], m[2][2], m[3][2]};
-  const glm::vec4 w{m[0][3], m[1][3], m[2][3], m[3][3]};
-  // -w <= x, y <= w; 0 <= z <= w holds for both depth directions.
-  return {{w + x, w - x, w + y, w - y, z, w - z}};
-}
-
-bool intersects(const Frustum& frustum, glm::vec3 min, glm::vec3 max) {
-  for (const glm::vec4& plane : frustum.planes) {
-    // The box's corner farthest along the plane's normal.
-    const glm::vec3 corner{plane.x >= 0.0f ? max.x : min.x, plane.y >= 0.0f ? max.y : min.y, plane.z >= 0.0f ? max.z : min.z};
-    if (glm::dot(glm::vec3(plane), corner) + plane.w < 0.0f) return false;
-  }
-  return true;
-}
-
-bool intersects(const Frustum& frustum, glm::vec3 center, float radius) {
-  for (const glm::vec4& plane : frustum.planes) {
-    // Planes from a matrix are not unit length: scale the radius with them.
-    if (glm::dot(glm::vec3(plane), center) + plane.w < -radius * glm::length(glm::vec3(plane))) return false;
-  }
-  return true;
-}
-
 bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye) {
   return glm::dot(glm::normalize(meshlet.cone_apex - eye), meshlet.cone_axis) >= meshlet.cone_cutoff;
 }

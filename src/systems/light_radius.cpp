@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "components/light.hpp"
-#include "systems/lighting/light_falloff.hpp"
+#include "render/lighting/light_falloff.hpp"
 
 namespace atrium {
 

@@ -15,11 +15,11 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/limits.hpp"
 #include "systems/light_radius.hpp"
-#include "systems/lighting/debug_views.hpp"
-#include "systems/lighting/shading_model.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/debug/debug_views.hpp"
+#include "render/lighting/shading_model.hpp"
+#include "render/techniques/technique.hpp"
 #include "render/contributors.hpp"
-#include "systems/mesh_renderer.hpp"
+#include "render/mesh_renderer.hpp"
 
 namespace atrium {
 
@@ -170,7 +170,7 @@ void Overlay::controls(ecs::Registry& registry) {
   const std::vector<std::string> modes = lighting::mode_names();
   std::vector<std::string> models, views{"(none)"};
   for (const auto name : lighting::kShadingModels) models.emplace_back(name);
-  for (const lighting::DebugView& view : lighting::debug_view_table()) views.emplace_back(view.name);
+  for (const lighting::OfferedView& view : registry.resource<MeshRenderer>().offered_views()) views.push_back(view.name);
   ImGui::PushItemWidth(220);
   std::string chosen;
   if (combo("mode", settings.mode, modes, chosen)) requests.mode = chosen;

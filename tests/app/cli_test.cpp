@@ -4,7 +4,7 @@
 #include <sstream>
 
 #include "app/cli.hpp"
-#include "systems/lighting/technique.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 namespace {

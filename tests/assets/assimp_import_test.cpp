@@ -4,7 +4,7 @@
 // its units and axes are read, its source's bounds. Texture paths as exporters
 // write them are found with a warning; material conventions map as documented
 // (docs/real-scenes.md); bad files fail in one line naming the file.
-// Renders are compared with their glTF sources in tests/systems/model_render_test.cpp.
+// Renders are compared with their glTF sources in tests/render/model_render_test.cpp.
 #include <cmath>
 #include <filesystem>
 #include <fstream>

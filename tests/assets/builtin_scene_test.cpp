@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "assets/builtin_scene.hpp"
-#include "systems/lighting/light_falloff.hpp"
+#include "render/lighting/light_falloff.hpp"
 
 namespace atrium::assets {
 namespace {

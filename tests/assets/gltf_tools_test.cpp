@@ -2,7 +2,7 @@
 // with gltfpack, glTF-Transform and Blender from ../shared/testdata): each
 // imports with its source's triangles, values decode close to the source's,
 // and what each tool wrote (filters, instancing, colours, unlit) is read.
-// Renders are compared with their sources in tests/systems/gltf_render_test.cpp.
+// Renders are compared with their sources in tests/render/gltf_render_test.cpp.
 #include <cstring>
 #include <filesystem>
 #include <fstream>

@@ -6,8 +6,8 @@
 #include <tuple>
 #include <vector>
 
-#include "systems/lighting/technique.hpp"
-#include "systems/lighting/technique_options.hpp"
+#include "render/techniques/technique.hpp"
+#include "components/technique_options.hpp"
 
 namespace atrium::testing {
 

@@ -9,7 +9,7 @@
 
 #include <glm/glm.hpp>
 
-#include "systems/lighting/light_falloff.hpp"
+#include "render/lighting/light_falloff.hpp"
 
 namespace atrium::testing {
 

@@ -1,6 +1,6 @@
 #include "systems/fireflies/firefly_sprites.hpp"
 
-#include "assets/gpu_assets.hpp"
+#include "render/gpu_assets.hpp"
 #include "components/light.hpp"
 #include "components/transform.hpp"
 #include "gfx/depth.hpp"

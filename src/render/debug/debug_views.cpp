@@ -1,0 +1,401 @@
+#include "render/debug/debug_views.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <numeric>
+#include <vector>
+
+#include "render/frame/scene_passes.hpp"
+
+namespace atrium::lighting {
+
+namespace {
+
+constexpr GLuint kBlockSumsBinding = 11;  // shaders/debug/sum_counts.comp
+
+// A resource's visualiser, picked by its ViewKind: what a view of any
+// resource of that kind shows, and how it draws it.
+struct Visualiser {
+  render::ViewKind kind;
+  std::string_view shows;
+  void (*draw)(DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res,
+               glm::vec2 origin, glm::vec2 scale);
+};
+
+constexpr Visualiser kVisualisers[] = {
+    {render::ViewKind::Color, "colour or light, exposed and tone-mapped",
+     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame&, const render::PassResources& res, glm::vec2 origin,
+        glm::vec2 scale) { views.show_light_sum(resource, res, origin, scale); }},
+    {render::ViewKind::Depth, "view depth on a log scale, near white",
+     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+        glm::vec2 scale) { views.show_depth(resource, frame, res, origin, scale); }},
+    {render::ViewKind::Counts, "per-pixel counts as a heatmap",
+     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2,
+        glm::vec2) { views.show_counts(resource, frame, res); }},
+    {render::ViewKind::LightBins, "lights in each pixel's bin (magenta: a bin that did not fit this frame)",
+     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2,
+        glm::vec2) { views.show_light_bins(resource, frame, res); }},
+    {render::ViewKind::ShadowAtlas, "shadow-map depths",
+     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame&, const render::PassResources& res, glm::vec2, glm::vec2) {
+       views.show_shadow_atlas(resource, res);
+     }},
+};
+
+const Visualiser* visualiser_for(render::ViewKind kind) {
+  const auto it = std::find_if(std::begin(kVisualisers), std::end(kVisualisers), [&](const Visualiser& v) { return v.kind == kind; });
+  return it == std::end(kVisualisers) ? nullptr : &*it;
+}
+
+// The resource a row shows through its kind's visualiser: by name, or the
+// first of the row's kind; invalid when the frame has none.
+render::ResourceId resource_of(const DebugView& row, const render::FrameGraph& graph) {
+  if (!row.resource.empty()) return graph.find(std::string(row.resource));
+  for (const render::ViewableResource& r : graph.viewable()) {
+    if (r.kind == row.kind) return r.id;
+  }
+  return {};
+}
+
+bool always(const render::FrameGraph&, const TechniqueOptions&) { return true; }
+bool has_gbuffer(const render::FrameGraph& graph, const TechniqueOptions&) { return GBuffer::find(graph).has_value(); }
+template <const char* kName>
+bool has_resource(const render::FrameGraph& graph, const TechniqueOptions&) {
+  return graph.find(kName).valid();
+}
+bool has_light_bins(const render::FrameGraph& graph, const TechniqueOptions&) {
+  const std::vector<render::ViewableResource> resources = graph.viewable();
+  return std::any_of(resources.begin(), resources.end(), [](const auto& r) { return r.kind == render::ViewKind::LightBins; });
+}
+
+template <const char* kTarget>
+void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+  views.show_gbuffer(kTarget, frame, res, origin, scale);
+}
+// Only a deferred mode's lighting passes write the sums apart: a forward
+// mode's sums stay grey.
+template <const char* kName>
+void split_sum(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+  const render::ResourceId sum = frame.graph.find(kName);
+  if (sum.valid() && GBuffer::find(frame.graph)) views.show_light_sum(sum, res, origin, scale);
+  else views.show_nothing();
+}
+constexpr char kPosition[] = "POSITION", kNormal[] = "NORMAL", kAlbedo[] = "ALBEDO", kMetallicRoughness[] = "METALLIC_ROUGHNESS",
+               kEmissive[] = "EMISSIVE";
+constexpr char kDiffuseLight[] = "diffuse-light", kSpecularLight[] = "specular-light", kLightBuffer[] = "light-buffer.diffuse",
+               kShadowAtlas[] = "shadow-atlas";
+
+constexpr DebugViewNeeds kGBuffer{.gbuffer = true};
+
+const std::array kViews{
+    DebugView{"position", "world position, scaled to the scene's bounds", kGBuffer, {}, {}, always, gbuffer_target<kPosition>},
+    DebugView{"normal", "shading normal (normal maps applied)", kGBuffer, {}, {}, always, gbuffer_target<kNormal>},
+    DebugView{"albedo", "base colour (grey in the light pre-pass's thin G-buffer, which has none)", kGBuffer, {}, {}, always,
+              gbuffer_target<kAlbedo>},
+    DebugView{"metallic-roughness", "metallic in red, roughness in green", kGBuffer, {}, {}, always, gbuffer_target<kMetallicRoughness>},
+    DebugView{"emissive", "emitted light, tone-mapped", kGBuffer, {}, {}, always, gbuffer_target<kEmissive>},
+    DebugView{"depth", "view depth on a log scale, near white", {}, "depth", {}, always},
+    DebugView{"light-volumes", "outlines of the light spheres over the lit image", kGBuffer, {}, {}, always,
+              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+                views.show_over_gbuffer("debug/outlines.frag", frame, res, false);
+              }},
+    DebugView{"heatmap", "lights evaluated per pixel by the mode", {.count_lights = true}, "light-counts", {}, always},
+    DebugView{"light-lists", "lights in each pixel's tile or cluster list (magenta: a bin that did not fit this frame)", {}, {},
+              render::ViewKind::LightBins, has_light_bins},
+    DebugView{"depth-slices", "the cluster depth slices (--cluster-grid, --z-slicing)", {}, {}, {}, always,
+              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources&, glm::vec2, glm::vec2) {
+                views.show_depth_slices(frame);
+              }},
+    DebugView{"fragments", "fragments the geometry passes rasterise per pixel (overdraw)", {.count_fragments = true}, "fragment-counts",
+              {}, always},
+    DebugView{"diffuse-light", "the diffuse light sum, apart (deferred modes)", {.split_lighting = true}, kDiffuseLight, {}, has_gbuffer,
+              split_sum<kDiffuseLight>},
+    DebugView{"specular-light", "the specular light sum, apart (deferred modes)", {.split_lighting = true}, kSpecularLight, {},
+              has_gbuffer, split_sum<kSpecularLight>},
+    DebugView{"light-buffer", "light summed before materials (light-prepass)", {}, kLightBuffer, {}, has_resource<kLightBuffer>},
+    DebugView{"msaa-edges", "the pixels the deferred modes shade per sample, in red (with --msaa)", kGBuffer, {}, {},
+              [](const render::FrameGraph& graph, const TechniqueOptions& options) { return options.msaa > 1 && has_gbuffer(graph, options); },
+              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+                views.show_over_gbuffer("debug/msaa_edges.frag", frame, res, true);
+              }},
+    DebugView{"shadow-atlas", "the shadow maps' depths (with --shadows)", {}, kShadowAtlas, {}, has_resource<kShadowAtlas>},
+};
+
+}  // namespace
+
+std::span<const DebugView> debug_view_table() { return kViews; }
+
+const DebugView* find_debug_view(std::string_view name) {
+  for (const DebugView& view : kViews) {
+    if (view.name == name) return &view;
+  }
+  return nullptr;
+}
+
+std::string debug_view_names() {
+  std::string names;
+  for (const DebugView& view : kViews) names += (names.empty() ? "" : ", ") + std::string(view.name);
+  return names;
+}
+
+std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const TechniqueOptions& options) {
+  std::vector<OfferedView> views;
+  for (const DebugView& row : kViews) {
+    if (row.offered(graph, options)) views.push_back({std::string(row.name), std::string(row.help)});
+  }
+  for (const render::ViewableResource& resource : graph.viewable()) {
+    const Visualiser* visualiser = visualiser_for(resource.kind);
+    if (!visualiser || find_debug_view(resource.name)) continue;
+    views.push_back({resource.name, std::string(visualiser->shows)});
+  }
+  return views;
+}
+
+std::optional<SelectedView> select_view(std::string_view name, const render::FrameGraph& graph) {
+  if (const DebugView* row = find_debug_view(name)) return SelectedView{row, row->draw ? render::ResourceId{} : resource_of(*row, graph)};
+  const render::ResourceId id = graph.find(std::string(name));
+  for (const render::ViewableResource& resource : graph.viewable()) {
+    if (resource.id == id && visualiser_for(resource.kind)) return SelectedView{nullptr, id};
+  }
+  return std::nullopt;
+}
+
+DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
+    : gpu_(gpu),
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa),
+      cluster_dims_(options.cluster_grid),
+      z_slicing_(options.z_slicing),
+      depth_sampler_(gfx::create_sampler()) {
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+void DebugViews::resize(const FrameTargets& targets) {
+  size_ = targets.size;
+  counts_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(counts_.id(), 1, GL_R32UI, targets.size.x, targets.size.y);
+  const std::size_t blocks = static_cast<std::size_t>((targets.size.x + 15) / 16) * static_cast<std::size_t>((targets.size.y + 15) / 16);
+  block_sums_ = gfx::create_buffer();
+  glNamedBufferStorage(block_sums_.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(blocks, 1) * sizeof(GLuint)), nullptr, 0);
+  sums_ = std::make_unique<gfx::ReadbackRing>(std::max<std::size_t>(blocks, 1) * sizeof(GLuint));
+  thumbnail_size_ = {kThumbnailWidth, std::max(1, kThumbnailWidth * targets.size.y / std::max(targets.size.x, 1))};
+  thumbnails_ = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(thumbnails_.id(), 1, GL_RGBA8, thumbnail_size_.x * kThumbnailColumns,
+                     thumbnail_size_.y * (kThumbnailCount / kThumbnailColumns));
+  thumbnail_framebuffer_ = gfx::create_framebuffer();
+  glNamedFramebufferTexture(thumbnail_framebuffer_.id(), GL_COLOR_ATTACHMENT0, thumbnails_.id(), 0);
+}
+
+void DebugViews::add_gbuffer_pass(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  add_geometry_pass(graph, gbuffer_, gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame, targets);
+}
+
+void DebugViews::add_counting_pass(render::FrameGraph& graph, const DebugViewNeeds& needs) {
+  // The counters outlive the frame (their sums go back through sums_), so
+  // they are the views' own, imported.
+  counts_resource_ = graph.import_texture(needs.count_fragments ? "fragment-counts" : "light-counts", counts_.id(), {GL_R32UI, size_, 1},
+                                          render::ViewKind::Counts);
+  graph.add_pass("clear counters", [&](render::PassBuilder& pass) { pass.write(counts_resource_, render::Access::Transfer); },
+                 [this, fragments = needs.count_fragments](const render::PassResources&) {
+                   const GLuint zero = 0;
+                   glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+                   glBindImageTexture(fragments ? 1 : 0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+                 }, false);
+}
+
+void DebugViews::declare_reads(const SelectedView& view, render::PassBuilder& pass, const render::FrameGraph& graph,
+                               const FrameContext& frame) {
+  pass.read(frame.scene_depth, render::Access::Sampled);
+  if (view.row && view.row->needs.gbuffer) {
+    if (const std::optional<GBuffer::Found> found = GBuffer::find(graph)) {
+      for (std::size_t i = 0; i < found->count; ++i) pass.read(found->resources[i], render::Access::Sampled);
+    }
+  }
+  // A row that derives its picture may still show a resource (the light sums).
+  render::ResourceId shown = view.resource;
+  if (view.row && !view.row->resource.empty()) shown = graph.find(std::string(view.row->resource));
+  if (shown.valid()) pass.read(shown, render::Access::Sampled);
+}
+
+void DebugViews::declare_thumbnail_reads(render::PassBuilder& pass, const render::FrameGraph& graph, const FrameContext& frame) {
+  for (const std::string_view name : kThumbnailViews) declare_reads(*select_view(name, graph), pass, graph, frame);
+}
+
+void DebugViews::draw_into_viewport(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res,
+                                    glm::vec2 origin, glm::vec2 scale) {
+  if (view.row && view.row->draw) {
+    view.row->draw(*this, frame, res, origin, scale);
+    return;
+  }
+  const Visualiser* visualiser = nullptr;
+  if (view.resource.valid()) {
+    for (const render::ViewableResource& resource : frame.graph.viewable()) {
+      if (resource.id == view.resource) visualiser = visualiser_for(resource.kind);
+    }
+  }
+  if (visualiser) visualiser->draw(*this, view.resource, frame, res, origin, scale);
+  else show_nothing();  // the frame lacks what the view shows
+}
+
+void DebugViews::draw_thumbnails(const DebugViewFrame& frame, const render::PassResources& res) {
+  glBindFramebuffer(GL_FRAMEBUFFER, thumbnail_framebuffer_.id());
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  glDisable(GL_STENCIL_TEST);
+  for (int index = 0; index < kThumbnailCount; ++index) {
+    // Top row first on screen: GL's rows run bottom-up.
+    const glm::ivec2 cell(index % kThumbnailColumns, kThumbnailCount / kThumbnailColumns - 1 - index / kThumbnailColumns);
+    glViewport(cell.x * thumbnail_size_.x, cell.y * thumbnail_size_.y, thumbnail_size_.x, thumbnail_size_.y);
+    draw_into_viewport(*select_view(kThumbnailViews[static_cast<std::size_t>(index)], frame.graph), frame, res,
+                       glm::vec2(cell * thumbnail_size_), glm::vec2(frame.targets.size) / glm::vec2(thumbnail_size_));
+  }
+}
+
+void DebugViews::draw(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res, GLuint output_framebuffer) {
+  // Every view is a full-screen pass into the output.
+  glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
+  glViewport(0, 0, size_.x, size_.y);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  draw_into_viewport(view, frame, res, glm::vec2(0.0f), glm::vec2(1.0f));
+}
+
+void DebugViews::show_gbuffer(std::string_view target, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+                              glm::vec2 scale) {
+  const std::optional<GBuffer::Found> gbuffer = GBuffer::find(frame.graph);
+  if (!gbuffer) {
+    show_nothing();
+    return;
+  }
+  GBuffer::bind_textures(res, *gbuffer);
+  std::vector<gfx::ShaderDefine> defines = GBuffer::defines(gbuffer->layout);
+  defines.push_back({"SHOW_" + std::string(target)});
+  draw_show(defines, frame, origin, scale);
+}
+
+void DebugViews::draw_show(const std::vector<gfx::ShaderDefine>& defines, const DebugViewFrame& frame, glm::vec2 origin, glm::vec2 scale) {
+  gfx::ShaderProgram& show = gpu_.shaders().get({"post/fullscreen.vert", "debug/show.frag"}, defines);
+  show.set("u_bounds_min", frame.bounds_min);
+  show.set("u_bounds_max", frame.bounds_max);
+  show.set("u_thumbnail_origin", origin);
+  show.set("u_thumbnail_scale", scale);
+  show.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::show_depth(render::ResourceId depth, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+                            glm::vec2 scale) {
+  glBindTextureUnit(5, res.texture(depth));
+  draw_show({{"SHOW_DEPTH"}}, frame, origin, scale);
+}
+
+void DebugViews::show_counts(render::ResourceId counts, const DebugViewFrame& frame, const render::PassResources& res) {
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  const bool fragments = frame.graph.find("fragment-counts") == counts;
+  const float scale_max = fragments ? 64.0f : 2.0f * static_cast<float>(std::max<std::size_t>(frame.frame.lights.size(), 1));
+  gfx::ShaderProgram& heatmap = gpu_.shaders().get({"post/fullscreen.vert", "debug/heatmap.frag"});
+  heatmap.set("u_scale_max", scale_max);
+  glBindImageTexture(0, res.texture(counts), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  heatmap.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::show_shadow_atlas(render::ResourceId atlas, const render::PassResources& res) {
+  glBindTextureUnit(0, res.texture(atlas));
+  glBindSampler(0, depth_sampler_.id());
+  gpu_.shaders().get({"post/fullscreen.vert", "debug/shadow_atlas.frag"}).use();
+  fullscreen_.draw();
+  glBindSampler(0, 0);
+}
+
+void DebugViews::show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const render::PassResources& res, bool blend) {
+  const std::optional<GBuffer::Found> gbuffer = GBuffer::find(frame.graph);
+  if (!gbuffer) return;  // nothing to draw over
+  GBuffer::bind_textures(res, *gbuffer);
+  if (blend) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
+  gpu_.shaders().get({"post/fullscreen.vert", fragment_shader}, GBuffer::defines(gbuffer->layout)).use();
+  fullscreen_.draw();
+  glDisable(GL_BLEND);
+}
+
+void DebugViews::show_nothing() {
+  // Grey says the view has nothing here; the scissor keeps a thumbnail's clear in its cell.
+  GLint viewport[4];
+  glGetIntegerv(GL_VIEWPORT, viewport);
+  glScissor(viewport[0], viewport[1], viewport[2], viewport[3]);
+  glEnable(GL_SCISSOR_TEST);
+  const float grey[] = {0.15f, 0.15f, 0.15f, 1.0f};
+  glClearBufferfv(GL_COLOR, 0, grey);
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void DebugViews::show_light_sum(render::ResourceId sum, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_sum.frag"});
+  program.set("u_thumbnail_origin", origin);
+  program.set("u_thumbnail_scale", scale);
+  glBindTextureUnit(0, res.texture(sum));
+  program.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::send_counts(const DebugViewNeeds& needs) {
+  const glm::ivec2 blocks = (size_ + 15) / 16;
+  if (blocks.x <= 0 || blocks.y <= 0) return;
+  glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, counts_.id(), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBlockSumsBinding, block_sums_.id());
+  gpu_.shaders().get({"debug/sum_counts.comp"}).use();
+  glDispatchCompute(static_cast<GLuint>(blocks.x), static_cast<GLuint>(blocks.y), 1);
+  const std::size_t bytes = static_cast<std::size_t>(blocks.x) * static_cast<std::size_t>(blocks.y) * sizeof(GLuint);
+  // The tag: the pixels averaged over, and whether they counted fragments.
+  const std::uint64_t pixels = static_cast<std::uint64_t>(size_.x) * static_cast<std::uint64_t>(size_.y);
+  (void)sums_->copy(block_sums_.id(), 0, bytes, pixels << 1 | (needs.count_fragments ? 1u : 0u));
+}
+
+std::vector<DebugViews::CountAverage> DebugViews::take_averages() {
+  std::vector<CountAverage> averages;
+  if (!sums_) return averages;
+  sums_->poll([&](const void* data, std::size_t bytes, std::uint64_t tag) {
+    std::vector<GLuint> sums(bytes / sizeof(GLuint));
+    std::memcpy(sums.data(), data, sums.size() * sizeof(GLuint));
+    const double pixels = static_cast<double>(std::max<std::uint64_t>(tag >> 1, 1));
+    averages.push_back({static_cast<double>(std::accumulate(sums.begin(), sums.end(), std::uint64_t{0})) / pixels, (tag & 1u) != 0});
+  });
+  return averages;
+}
+
+void DebugViews::show_depth_slices(const DebugViewFrame& frame) {
+  if (!slicing_) slicing_ = std::make_unique<ClusterGrid>(cluster_dims_, z_slicing_);
+  slicing_->update(frame.frame.projection, frame.frame.near_plane, frame.frame.far_plane);
+  slicing_->bind();
+  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"}, {{"DEPTH_SLICES"}});
+  glBindTextureUnit(5, frame.targets.depth_stencil);
+  program.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res) {
+  const LightBins* bins = frame.graph.published<LightBins>();
+  if (!bins || bins->lists != lists) {
+    show_nothing();  // lists whose technique did not say how pixels map to them
+    return;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightRangesBinding, res.buffer(lists));
+  if (bins->binning == LightBins::Binning::Clusters) glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, bins->grid_uniforms);
+  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"},
+                                                   {{"LIGHT_BINS", bins->binning == LightBins::Binning::Tiles ? "1" : "2"}});
+  program.set("u_tiles", bins->tiles);
+  program.set("u_tile_size", bins->tile_size);
+  program.set("u_list_capacity", bins->list->capacity());
+  // A bin can hold every light: the map tops out there.
+  program.set("u_scale_max", static_cast<float>(std::max<std::size_t>(frame.frame.lights.size(), 1)));
+  glBindTextureUnit(5, frame.targets.depth_stencil);
+  program.use();
+  fullscreen_.draw();
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,280 @@
+#include "render/frame/draw_list.hpp"
+
+#include <algorithm>
+#include <map>
+#include <tuple>
+#include <unordered_map>
+
+#include "components/bounds.hpp"
+#include "components/mesh_instance.hpp"
+#include "components/transform.hpp"
+#include "components/visibility.hpp"
+#include "gfx/depth.hpp"
+#include "assets/meshlets.hpp"
+#include "base/frustum.hpp"
+#include "render/techniques/technique.hpp"
+
+namespace atrium::lighting {
+
+DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
+  DrawBatch state;
+  state.vertex_array = vertex_array;
+  const auto slots = material.texture_slots();
+  for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
+    state.textures[s] = gpu.texture(slots[s]->texture);
+    state.samplers[s] = gpu.sampler(slots[s]->sampler);
+  }
+  state.double_sided = material.double_sided;
+  state.mirrored = mirrored;
+  state.alpha_masked = material.alpha_mode == assets::AlphaMode::Mask;
+  return state;
+}
+
+namespace {
+
+// The GL state a batch sets: batches are merged and ordered by it.
+auto state_key(const DrawBatch& b) {
+  return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored);
+}
+
+// Opaque geometry before it is placed: one command, all instances of a
+// primitive drawn with one material.
+struct PendingCommand {
+  DrawBatch state;
+  DrawCommand command;
+  std::vector<std::pair<float, InstanceData>> instances;  // view depth, record; never empty
+};
+
+struct PendingBlend {
+  DrawBatch state;
+  DrawCommand command;
+  InstanceData instance;
+  float depth = 0.0f;
+};
+
+}  // namespace
+
+MaterialData material_data(const assets::Material& m, const assets::GpuAssets& gpu) {
+  MaterialData data;
+  data.base_color_factor = m.base_color_factor;
+  data.emissive = glm::vec4(m.emissive_factor * m.emissive_strength, m.normal_scale);
+  data.metallic_factor = m.metallic_factor;
+  data.roughness_factor = m.roughness_factor;
+  data.occlusion_strength = m.occlusion_texture.valid() ? m.occlusion_strength : 0.0f;
+  data.alpha_cutoff = m.alpha_mode == assets::AlphaMode::Mask ? m.alpha_cutoff : -1.0f;
+  if (m.normal_texture.valid()) data.flags |= kMaterialHasNormalTexture;
+  if (gpu.two_channel(m.normal_texture.texture)) data.flags |= kMaterialNormalXyOnly;
+  if (m.normal_green_down) data.flags |= kMaterialNormalGreenDown;
+  if (m.double_sided) data.flags |= kMaterialDoubleSided;
+  if (m.unlit) data.flags |= kMaterialUnlit;
+  if (m.alpha_mode == assets::AlphaMode::Mask) data.flags |= kMaterialAlphaMasked;
+  const auto slots = m.texture_slots();
+  for (std::size_t s = 0; s < kMaterialTextureSlots; ++s) {
+    if (slots[s]->uv_set == 1) data.uv_sets |= 1u << s;
+    const glm::mat3& t = slots[s]->uv_transform;  // column-major: t[column][row]
+    data.uv_transform[2 * s] = glm::vec4(t[0][0], t[1][0], t[2][0], 0.0f);
+    data.uv_transform[2 * s + 1] = glm::vec4(t[0][1], t[1][1], t[2][1], 0.0f);
+  }
+  return data;
+}
+
+bool selected(std::uint8_t state, DrawSelection selection) {
+  if (!(state & seen::kInView)) return false;
+  switch (selection) {
+    case DrawSelection::InView: return true;
+    case DrawSelection::ShownLastFrame: return (state & seen::kLastFrame) != 0;
+    case DrawSelection::Revealed: return (state & (seen::kLastFrame | seen::kRevealed)) == seen::kRevealed;
+    case DrawSelection::Shown: return (state & (seen::kLastFrame | seen::kRevealed)) != 0;
+  }
+  return false;
+}
+
+DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets, const assets::GpuAssets& gpu,
+                         const glm::mat4& view, DrawSelection selection) {
+  // An entity without culling state is in view and was shown.
+  constexpr std::uint8_t kEverything = seen::kInView | seen::kLastFrame;
+  DrawList list;
+  std::unordered_map<const assets::Material*, std::uint32_t> material_index;
+  auto index_of = [&](const assets::Material& material) {
+    const auto [it, added] = material_index.try_emplace(&material, static_cast<std::uint32_t>(list.materials.size()));
+    if (added) list.materials.push_back(material_data(material, gpu));
+    return it->second;
+  };
+  // Identical index ranges with one material and winding share a command.
+  using CommandKey = std::tuple<GLuint, std::uint32_t, std::uint32_t, std::int32_t, const assets::Material*, bool>;
+  std::map<CommandKey, std::size_t> command_of;
+  std::vector<PendingCommand> pending;
+  std::vector<PendingBlend> blended;
+
+  registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform& transform, const MeshInstance& instance) {
+    const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
+    if (instance.mesh >= asset.meshes.size()) return;
+    const auto* bounds = registry.try_get<WorldBounds>(entity);
+    if (bounds && (bounds->asset != instance.asset || bounds->mesh != instance.mesh)) bounds = nullptr;
+    const auto* visibility = bounds ? registry.try_get<Visibility>(entity) : nullptr;
+    const auto& primitives = asset.meshes[instance.mesh].primitives;
+    for (const assets::Primitive& primitive : primitives) list.triangles += primitive.indices.size() / 3;
+    if (visibility && !visibility->any) return;
+
+    const assets::GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
+    InstanceData data;
+    data.model = bounds ? bounds->model : to_matrix(transform);
+    data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
+    const bool mirrored = glm::determinant(glm::mat3(data.model)) < 0.0f;
+    for (std::uint32_t p = 0; p < primitives.size(); ++p) {
+      const assets::Primitive& primitive = primitives[p];
+      if (primitive.indices.empty()) continue;
+      const std::uint8_t state = visibility && p < visibility->primitives.size() ? visibility->primitives[p] : kEverything;
+      if (!(state & seen::kInView)) continue;
+      const assets::Material& material = asset.materials.at(primitive.material);
+      const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
+      data.material.x = index_of(material);
+      const glm::vec3 centre = bounds && p < bounds->primitives.size()
+                                   ? 0.5f * (bounds->primitives[p].min + bounds->primitives[p].max)
+                                   : glm::vec3(data.model * glm::vec4(0.5f * (primitive.bounds_min + primitive.bounds_max), 1.0f));
+      const float depth = -(view * glm::vec4(centre, 1.0f)).z;
+      const GLuint vertex_array = gpu_asset.vertex_array.id();
+      if (material.alpha_mode == assets::AlphaMode::Blend) {
+        // Never occlusion-culled: blended surfaces go with every list but the late one.
+        if (selection == DrawSelection::Revealed) continue;
+        list.triangles_drawn += primitive.indices.size() / 3;
+        blended.push_back({batch_state(material, gpu, vertex_array, mirrored), {range.index_count, 1, range.first_index, range.base_vertex, 0},
+                           data, depth});
+        continue;
+      }
+      // (offset within the primitive, index count): one command per selected meshlet run.
+      auto add_run = [&](std::uint32_t offset, std::uint32_t count) {
+        list.triangles_drawn += count / 3;
+        const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
+        const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
+        const auto [it, added] = command_of.try_emplace(key, pending.size());
+        if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
+        pending[it->second].instances.emplace_back(depth, data);
+      };
+      const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
+                              bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
+      if (by_meshlet) {
+        const std::uint8_t* meshlet_states = visibility->meshlets.data() + bounds->meshlet_offsets[p];
+        assets::for_each_meshlet_run(primitive.meshlets, [&](std::size_t m) { return selected(meshlet_states[m], selection); }, add_run);
+      } else if (selected(state, selection)) {
+        add_run(0, range.index_count);
+      }
+    }
+  });
+
+  // Opaque: masked last (its discard defeats early depth tests on GPUs), then
+  // by state, so that a batch holds every command of one state, then front to
+  // back (instances by depth, commands by their nearest instance).
+  for (PendingCommand& command : pending) {
+    std::stable_sort(command.instances.begin(), command.instances.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  }
+  std::vector<std::size_t> order(pending.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    const PendingCommand& x = pending[a];
+    const PendingCommand& y = pending[b];
+    // alpha_masked leads the state key: false sorts first.
+    if (state_key(x.state) != state_key(y.state)) return state_key(x.state) < state_key(y.state);
+    return x.instances.front().first < y.instances.front().first;
+  });
+  auto append = [&](std::vector<DrawBatch>& batches, const DrawBatch& state, DrawCommand command, float depth) {
+    if (batches.empty() || state_key(batches.back()) != state_key(state)) {
+      batches.push_back(state);
+      batches.back().first_command = static_cast<std::uint32_t>(list.commands.size());
+      batches.back().command_count = 0;
+    }
+    list.commands.push_back(command);
+    list.command_depths.push_back(depth);
+    ++batches.back().command_count;
+  };
+  for (const std::size_t i : order) {
+    const PendingCommand& pending_command = pending[i];
+    DrawCommand command = pending_command.command;
+    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
+    command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
+    for (const auto& [depth, record] : pending_command.instances) list.instances.push_back(record);
+    append(list.opaque, pending_command.state, command, pending_command.instances.front().first);
+  }
+  // Blended: farthest first, one instance per command.
+  std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });
+  for (const PendingBlend& item : blended) {
+    DrawCommand command = item.command;
+    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
+    list.instances.push_back(item.instance);
+    append(list.blended, item.state, command, item.depth);
+  }
+  return list;
+}
+
+void draw_items(std::span<const DrawBatch> batches) {
+  GLuint bound_vertex_array = 0;
+  const DrawBatch* bound_textures = nullptr;
+  glEnable(GL_CULL_FACE);
+  for (const DrawBatch& batch : batches) {
+    if (batch.vertex_array != bound_vertex_array) {
+      glBindVertexArray(batch.vertex_array);
+      bound_vertex_array = batch.vertex_array;
+    }
+    if (!bound_textures || bound_textures->textures != batch.textures || bound_textures->samplers != batch.samplers) {
+      glBindTextures(0, kMaterialTextureSlots, batch.textures.data());
+      glBindSamplers(0, kMaterialTextureSlots, batch.samplers.data());
+      bound_textures = &batch;
+    }
+    if (batch.double_sided) glDisable(GL_CULL_FACE);
+    else glEnable(GL_CULL_FACE);
+    glFrontFace(batch.mirrored ? GL_CW : GL_CCW);
+    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand)),
+                                static_cast<GLsizei>(batch.command_count), 0);
+  }
+  glEnable(GL_CULL_FACE);
+  glFrontFace(GL_CCW);
+  glBindVertexArray(0);
+  glBindSamplers(0, kMaterialTextureSlots, nullptr);
+}
+
+void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked) {
+  // build_draw_list puts the masked batches last.
+  const auto first_masked = std::find_if(batches.begin(), batches.end(), [](const DrawBatch& b) { return b.alpha_masked; });
+  const auto split = static_cast<std::size_t>(first_masked - batches.begin());
+  position_only.use();
+  draw_items(batches.first(split));
+  if (split == batches.size()) return;
+  masked.use();
+  draw_items(batches.subspan(split));
+}
+
+void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {
+  if (frame.draws.blended.empty()) return;
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloser);
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  forward_program.use();
+  draw_items(frame.draws.blended);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets) {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
+  glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, gfx::kDepthFar, 0);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloser);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
+}
+
+void FullscreenTriangle::draw() const {
+  glBindVertexArray(vertex_array_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+}
+
+}  // namespace atrium::lighting

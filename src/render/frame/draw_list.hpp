@@ -1,0 +1,170 @@
+// The frame's visible geometry as indirect draw batches, gathered from the
+// MeshInstance entities the culling systems marked visible (once, and again
+// after the first pass when occlusion culling revealed more) and shared by
+// every pass of every technique. Per-instance data (model matrix, material
+// index) and material parameters live in storage buffers, so one
+// glMultiDrawElementsIndirect draws every primitive that shares a vertex
+// layout, a texture set and a cull state: the number of draws follows the
+// scene's distinct texture sets, not its objects.
+#pragma once
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "assets/asset_manager.hpp"
+#include "render/gpu_assets.hpp"
+#include "ecs/registry.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/shader_program.hpp"
+
+namespace atrium::lighting {
+
+// Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
+inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlots;
+
+// Where mesh.vert finds the instance records and material.glsl the materials
+// (storage buffer bindings).
+inline constexpr unsigned kInstanceStorageBinding = 1;
+inline constexpr unsigned kMaterialStorageBinding = 8;
+
+// std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
+struct InstanceData {
+  glm::mat4 model{1.0f};
+  glm::mat4 normal_matrix{1.0f};  // inverse transpose of the model's 3x3, in a mat4 to keep std430 simple
+  glm::uvec4 material{0};         // x: index into DrawList::materials
+};
+static_assert(sizeof(InstanceData) == 144, "must match Instance in shaders/common/mesh.vert");
+
+// Material::flags bits; GLSL twins in shaders/common/material_data.glsl.
+inline constexpr std::uint32_t kMaterialHasNormalTexture = 1u << 0;
+inline constexpr std::uint32_t kMaterialNormalXyOnly = 1u << 1;     // a two-channel (BC5) normal map: z is rebuilt
+inline constexpr std::uint32_t kMaterialNormalGreenDown = 1u << 2;  // DirectX's convention: green points down
+inline constexpr std::uint32_t kMaterialDoubleSided = 1u << 3;
+inline constexpr std::uint32_t kMaterialUnlit = 1u << 4;            // KHR_materials_unlit
+inline constexpr std::uint32_t kMaterialAlphaMasked = 1u << 5;
+
+// std430 twin of Material in shaders/common/material_data.glsl.
+struct MaterialData {
+  glm::vec4 base_color_factor{1.0f};
+  glm::vec4 emissive{0.0f};  // rgb: emissive factor times strength; a: normal scale
+  float metallic_factor = 1.0f;
+  float roughness_factor = 1.0f;
+  float occlusion_strength = 0.0f;  // 0 without an occlusion texture
+  float alpha_cutoff = -1.0f;       // < 0 when the material is not alpha-masked
+  std::uint32_t flags = 0;          // kMaterial* bits
+  std::uint32_t uv_sets = 0;        // bit s: texture slot s reads UV set 1
+  std::uint32_t padding[2] = {0, 0};
+  // Per texture slot, the two rows of its KHR_texture_transform (a 2x3 affine map).
+  std::array<glm::vec4, 2 * kMaterialTextureSlots> uv_transform{};
+};
+static_assert(sizeof(MaterialData) == 224, "must match Material in shaders/common/material_data.glsl");
+
+[[nodiscard]] MaterialData material_data(const assets::Material& material, const assets::GpuAssets& gpu);
+
+// GL's DrawElementsIndirectCommand.
+struct DrawCommand {
+  std::uint32_t count = 0;
+  std::uint32_t instance_count = 0;
+  std::uint32_t first_index = 0;
+  std::int32_t base_vertex = 0;
+  std::uint32_t base_instance = 0;
+};
+static_assert(sizeof(DrawCommand) == 20, "GL reads indirect commands as five 32-bit words");
+
+// One glMultiDrawElementsIndirect: commands sharing a vertex array, the five
+// material textures and samplers, and a cull state.
+struct DrawBatch {
+  GLuint vertex_array = 0;
+  std::array<GLuint, kMaterialTextureSlots> textures{};
+  std::array<GLuint, kMaterialTextureSlots> samplers{};
+  bool double_sided = false;
+  // The instances' transforms mirror (negative determinant): glTF then takes
+  // clockwise triangles as front faces.
+  bool mirrored = false;
+  // Alpha-masked: fragments below the cutoff are discarded, so even a depth-only
+  // pass must evaluate the material's alpha.
+  bool alpha_masked = false;
+  std::uint32_t first_command = 0;  // into DrawList::commands
+  std::uint32_t command_count = 0;
+};
+
+// The state a batch of `material`'s primitives draws with (no commands yet).
+[[nodiscard]] DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored);
+
+struct DrawList {
+  // Opaque and alpha-masked geometry: ordered by state (masked last, then
+  // vertex array and textures), commands front to back within a batch,
+  // identical primitives instanced.
+  std::vector<DrawBatch> opaque;
+  // Blended geometry, one command per primitive instance, farthest first;
+  // neighbours with the same state share a batch (draw order is kept).
+  std::vector<DrawBatch> blended;
+  std::vector<DrawCommand> commands;
+  std::vector<float> command_depths;  // per command: view depth of its nearest instance's primitive centre
+  std::vector<InstanceData> instances;
+  std::vector<MaterialData> materials;
+  std::size_t triangles = 0;        // in the scene, every instance, visible or not
+  std::size_t triangles_drawn = 0;  // by one pass over opaque and blended: what culling kept
+
+  [[nodiscard]] std::size_t draw_calls() const { return opaque.size() + blended.size(); }
+};
+
+// Which of the geometry in view a list holds: occlusion culling's phases
+// (render/culling/occlusion_culling.hpp, the seen:: bits of components/visibility.hpp).
+enum class DrawSelection {
+  InView,          // all of it (occlusion culling off)
+  ShownLastFrame,  // what the first pass draws before testing the rest
+  Revealed,        // what it draws after (opaque geometry only)
+  Shown,           // both: what the passes after the first draw
+};
+// Whether a primitive or meshlet in `state` (seen:: bits) belongs to `selection`.
+[[nodiscard]] bool selected(std::uint8_t state, DrawSelection selection);
+
+// Builds the frame's list from the entities' WorldBounds and Visibility (an
+// entity without them is drawn whole). `view` orders draws by distance.
+// Blended surfaces in view are in every selection but Revealed: they are not
+// occlusion-culled.
+[[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
+                                       const assets::GpuAssets& gpu, const glm::mat4& view,
+                                       DrawSelection selection = DrawSelection::InView);
+
+// Issues one multi-draw per batch with the program in use, binding each batch's
+// textures to units 0-4, disabling back-face culling for double-sided batches
+// and turning the front face for mirrored ones. The frame's instance, material
+// and indirect buffers must be bound (the MeshRenderer binds them). Leaves
+// culling enabled and counter-clockwise front faces on return.
+void draw_items(std::span<const DrawBatch> batches);
+
+// Depth only, for pre-passes: batches without an alpha test through
+// `position_only` (common/mesh.vert with POSITION_ONLY and common/depth_only.frag:
+// no varyings, no material reads), alpha-masked ones through `masked`, which
+// discards below the cutoff. Colour writes are the caller's to disable.
+void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked);
+
+struct FrameContext;
+struct FrameTargets;
+
+// Draws the frame's blended items over the lit image, back to front, shaded by
+// every light with `forward_program`, depth-tested against the opaque depth
+// (the body of the "transparency" pass, lighting/scene_passes.hpp).
+void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
+
+// Binds the HDR target, clears it to the background and depth to the far
+// plane (gfx::kDepthFar, reversed depth), and sets
+// the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
+void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets);
+
+// A triangle that covers the viewport, for full-screen passes.
+class FullscreenTriangle {
+ public:
+  FullscreenTriangle() : vertex_array_(gfx::create_vertex_array()) {}
+  void draw() const;
+
+ private:
+  gfx::VertexArray vertex_array_;
+};
+
+}  // namespace atrium::lighting

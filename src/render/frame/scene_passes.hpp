@@ -1,0 +1,28 @@
+// The frame-graph passes most techniques share. "geometry" fills a G-buffer
+// (its targets made as transients gbuffer.<target>) and the scene depth from the
+// opaque and masked draw items; "transparency" shades the blended items
+// forward over the lit HDR image, depth-tested against the opaque depth. Both
+// exist so that each technique's file lists only the passes that are its own.
+#pragma once
+
+#include <functional>
+
+#include "render/frame_graph.hpp"
+#include "render/lighting/gbuffer.hpp"
+#include "render/techniques/technique.hpp"
+
+namespace atrium::lighting {
+
+// Adds the "geometry" pass, which makes `gbuffer`'s targets for this frame
+// (GBuffer::create_targets) and fills them and the scene depth; passes that
+// shade from them declare GBuffer::read_targets.
+void add_geometry_pass(render::FrameGraph& graph, GBuffer& gbuffer, gfx::ShaderProgram& program, const FrameContext& frame,
+                       const FrameTargets& targets);
+
+// The "transparency" pass, when the frame has blended items: `prepare` runs
+// first (binding the light lists the program reads, say); `reads` declares
+// what it reads beyond the scene's depth, colour and lights.
+void add_transparency_pass(render::FrameGraph& graph, gfx::ShaderProgram& program, const FrameContext& frame, const FrameTargets& targets,
+                           const std::function<void(render::PassBuilder&)>& reads = {}, std::function<void()> prepare = {});
+
+}  // namespace atrium::lighting

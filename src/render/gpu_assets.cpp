@@ -1,0 +1,250 @@
+#include "render/gpu_assets.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+#include "gfx/limits.hpp"
+
+namespace atrium::assets {
+namespace {
+
+constexpr float kMaxAnisotropy = 8.0f;
+
+gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_t& bytes) {
+  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  const GLenum format = color_space == ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  if (levels > 1) glGenerateTextureMipmap(texture.id());
+  bytes += static_cast<std::size_t>(image.width) * image.height * 4 * 4 / 3;  // with the mip chain
+  return texture;
+}
+
+// The GL format of a block format in a colour space (BC4 and BC5 hold data, never colour).
+GLenum compressed_format(BlockFormat format, ColorSpace space) {
+  const bool srgb = space == ColorSpace::Srgb;
+  switch (format) {
+    case BlockFormat::BC1: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT : GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+    case BlockFormat::BC2: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT : GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
+    case BlockFormat::BC3: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    case BlockFormat::BC4: return GL_COMPRESSED_RED_RGTC1;
+    case BlockFormat::BC5: return GL_COMPRESSED_RG_RGTC2;
+    case BlockFormat::BC7: return srgb ? GL_COMPRESSED_SRGB_ALPHA_BPTC_UNORM : GL_COMPRESSED_RGBA_BPTC_UNORM;
+  }
+  return GL_NONE;
+}
+
+// RGTC (BC4, BC5) and BPTC (BC7) are core since GL 3.0 and 4.2; S3TC (BC1-BC3)
+// is an extension, with sRGB variants of its own.
+bool compressed_supported(BlockFormat format) {
+  if (format == BlockFormat::BC4 || format == BlockFormat::BC5 || format == BlockFormat::BC7) return true;
+  return epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc") &&
+         (epoxy_has_gl_extension("GL_EXT_texture_sRGB") || epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc_srgb"));
+}
+
+// Uploads a DDS's levels from `first` on, as they are.
+gfx::Texture upload_compressed(const CompressedImage& image, std::size_t first, ColorSpace space, std::size_t& bytes) {
+  const int levels = static_cast<int>(image.levels.size() - first);
+  const GLenum format = compressed_format(image.format, space);
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  const int width = std::max(1, image.width >> first), height = std::max(1, image.height >> first);
+  glTextureStorage2D(texture.id(), levels, format, width, height);
+  for (int level = 0; level < levels; ++level) {
+    const auto& data = image.levels[first + static_cast<std::size_t>(level)];
+    glCompressedTextureSubImage2D(texture.id(), level, 0, 0, std::max(1, width >> level), std::max(1, height >> level), format,
+                                  static_cast<GLsizei>(data.size()), data.data());
+    bytes += data.size();
+  }
+  // One channel of data reads as grey, as a greyscale PNG does.
+  if (image.format == BlockFormat::BC4) {
+    const GLint swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
+    glTextureParameteriv(texture.id(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
+  }
+  return texture;
+}
+
+}  // namespace
+
+std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
+  std::vector<std::string> warnings;
+  if (!white_) {
+    const Image white{1, 1, {255, 255, 255, 255}};
+    std::size_t ignored = 0;
+    white_ = upload_image(white, ColorSpace::Linear, ignored);
+    make_sampler(SamplerDesc{});
+  }
+  const int context_limit = gfx::max_texture_size();
+  const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
+  auto too_large = [&](std::size_t t, const TextureData& data, glm::ivec2 to) {
+    return "texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.width()) + "x" + std::to_string(data.height()) +
+           ", more than " +
+           (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
+                                  : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
+           "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + std::to_string(to.x) + "x" +
+           std::to_string(to.y);
+  };
+  for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
+    const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
+    two_channel_.push_back(data.compressed && data.compressed->format == BlockFormat::BC5);
+    if (data.compressed) {
+      if (compressed_supported(data.compressed->format)) {
+        std::size_t first = 0;
+        while (first + 1 < data.compressed->levels.size() &&
+               std::max(data.compressed->width >> first, data.compressed->height >> first) > limit) {
+          ++first;
+        }
+        const glm::ivec2 size(std::max(1, data.compressed->width >> first), std::max(1, data.compressed->height >> first));
+        if (first > 0) warnings.push_back(too_large(t, data, size));
+        textures_.push_back(upload_compressed(*data.compressed, first, data.color_space, texture_bytes_));
+        continue;
+      }
+      std::string error;
+      std::optional<Image> decoded = decode_blocks(*data.compressed, error);
+      if (!decoded) {
+        warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
+        textures_.push_back(upload_image(Image{1, 1, {255, 255, 255, 255}}, ColorSpace::Linear, texture_bytes_));
+        continue;
+      }
+      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + block_format_name(data.compressed->format) +
+                         ", which this driver cannot sample; it is decoded and uploaded uncompressed");
+      const Image fitted = downscale_to_fit(*decoded, limit, data.color_space == ColorSpace::Srgb);
+      textures_.push_back(upload_image(fitted, data.color_space, texture_bytes_));
+      continue;
+    }
+    if (data.image.width <= limit && data.image.height <= limit) {
+      textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
+      continue;
+    }
+    const Image smaller = downscale_to_fit(data.image, limit, data.color_space == ColorSpace::Srgb);
+    warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
+    textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
+  }
+  for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
+    const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    for (const Material& m : asset.materials) {
+      for (const TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
+    }
+    // Every vertex buffer once, primitives as index ranges with the base
+    // vertex of the buffer they index: shared vertices stay shared.
+    GpuMeshAsset gpu;
+    std::vector<std::int32_t> base_vertex(asset.vertex_buffers.size());
+    std::size_t vertex_total = 0, index_total = 0;
+    for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
+      base_vertex[b] = static_cast<std::int32_t>(vertex_total);
+      vertex_total += asset.vertex_buffers[b].size();
+    }
+    for (const Mesh& mesh : asset.meshes) {
+      for (const Primitive& p : mesh.primitives) index_total += p.indices.size();
+    }
+    gpu.vertices = gfx::create_buffer();
+    gpu.indices = gfx::create_buffer();
+    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(Vertex)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
+      const auto& vertices = asset.vertex_buffers[b];
+      if (vertices.empty()) continue;
+      glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(Vertex)),
+                           static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
+    }
+    std::size_t first_index = 0;
+    for (const Mesh& mesh : asset.meshes) {
+      auto& ranges = gpu.meshes.emplace_back();
+      for (const Primitive& p : mesh.primitives) {
+        ranges.push_back({static_cast<std::uint32_t>(first_index), static_cast<std::uint32_t>(p.indices.size()), base_vertex.at(p.vertex_buffer)});
+        if (!p.indices.empty()) {
+          glNamedBufferSubData(gpu.indices.id(), static_cast<GLintptr>(first_index * sizeof(std::uint32_t)),
+                               static_cast<GLsizeiptr>(p.indices.size() * sizeof(std::uint32_t)), p.indices.data());
+        }
+        first_index += p.indices.size();
+      }
+    }
+
+    gpu.vertex_array = gfx::create_vertex_array();
+    const GLuint vao = gpu.vertex_array.id();
+    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayElementBuffer(vao, gpu.indices.id());
+    struct Attribute {
+      GLuint location;
+      GLint components;
+      GLenum type;
+      GLboolean normalized;
+      std::size_t offset;
+    };
+    const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position)},
+                                    {1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal)},
+                                    {2, 4, GL_FLOAT, GL_FALSE, offsetof(Vertex, tangent)},
+                                    {3, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv0)},
+                                    {4, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv1)},
+                                    {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(Vertex, color)}};
+    for (const auto& attribute : attributes) {
+      glEnableVertexArrayAttrib(vao, attribute.location);
+      glVertexArrayAttribFormat(vao, attribute.location, attribute.components, attribute.type, attribute.normalized,
+                                static_cast<GLuint>(attribute.offset));
+      glVertexArrayAttribBinding(vao, attribute.location, 0);
+    }
+    // Location 6: which instance record a vertex belongs to, from the
+    // instance-index buffer (binding 1, one value per instance). Instanced
+    // draws offset it by their base instance.
+    glEnableVertexArrayAttrib(vao, kInstanceIndexLocation);
+    glVertexArrayAttribIFormat(vao, kInstanceIndexLocation, 1, GL_UNSIGNED_INT, 0);
+    glVertexArrayAttribBinding(vao, kInstanceIndexLocation, 1);
+    glVertexArrayBindingDivisor(vao, 1, 1);
+    if (instance_indices_) glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
+    mesh_assets_.push_back(std::move(gpu));
+  }
+  return warnings;
+}
+
+void GpuAssets::reserve_instances(std::size_t count) {
+  if (count <= instance_capacity_ && instance_indices_) return;
+  instance_capacity_ = std::max<std::size_t>({count, 2 * instance_capacity_, 1024});
+  std::vector<std::uint32_t> identity(instance_capacity_);
+  for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<std::uint32_t>(i);
+  instance_indices_ = gfx::create_buffer();
+  glNamedBufferStorage(instance_indices_.id(), static_cast<GLsizeiptr>(identity.size() * sizeof(std::uint32_t)), identity.data(), 0);
+  for (const GpuMeshAsset& asset : mesh_assets_) {
+    glVertexArrayVertexBuffer(asset.vertex_array.id(), 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
+  }
+}
+
+GLuint GpuAssets::sampler(const SamplerDesc& desc) const {
+  auto it = samplers_.find(desc);
+  return it != samplers_.end() ? it->second.id() : samplers_.at(SamplerDesc{}).id();
+}
+
+void GpuAssets::make_sampler(const SamplerDesc& desc) {
+  if (samplers_.contains(desc)) return;
+  gfx::Sampler sampler = gfx::create_sampler();
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, desc.mag_filter);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, desc.min_filter);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, desc.wrap_s);
+  glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, desc.wrap_t);
+  const bool mipmapped = desc.min_filter != SamplerDesc::kNearest && desc.min_filter != SamplerDesc::kLinear;
+  // llvmpipe filters anisotropically with an elliptical weighted average that
+  // loops over every texel of a pixel's footprint. A leaf seen edge-on right at
+  // the camera has a footprint of thousands of texels (its derivatives
+  // extrapolate far beyond the triangle), and one 160x90 frame of Sponza spent
+  // 80 s in those loops. GPUs bound the cost in hardware; software renderers
+  // sample trilinearly.
+  if (mipmapped && !gfx::is_software_renderer() &&
+      (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_texture_filter_anisotropic") ||
+       epoxy_has_gl_extension("GL_EXT_texture_filter_anisotropic"))) {
+    glSamplerParameterf(sampler.id(), GL_TEXTURE_MAX_ANISOTROPY, kMaxAnisotropy);
+  }
+  samplers_.emplace(desc, std::move(sampler));
+}
+
+bool GpuAssets::two_channel(TextureHandle handle) const {
+  return handle.valid() && handle.index < two_channel_.size() && two_channel_[handle.index];
+}
+
+GLuint GpuAssets::texture(TextureHandle handle) const {
+  return handle.valid() && handle.index < textures_.size() ? textures_[handle.index].id() : white_.id();
+}
+
+}  // namespace atrium::assets

@@ -1,0 +1,173 @@
+// The MeshRenderer system (Render phase): owns the frame's long-lived render
+// targets, the lighting technique selected by RendererSettings::mode and the
+// frame graph. Each frame it gathers the draw list and fills the frame
+// uniforms, then builds the graph from its contributors (shadow maps, the
+// technique's passes, systems' RenderContributors, tone map, thumbnails,
+// debug view, present), compiles and executes it.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "assets/asset_manager.hpp"
+#include "render/gpu_assets.hpp"
+#include "assets/image.hpp"
+#include "ecs/scheduler.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/pass_timer.hpp"
+#include "gfx/shader_program.hpp"
+#include "gfx/stream_buffer.hpp"
+#include "render/frame_graph.hpp"
+#include "render/techniques/technique.hpp"
+#include "render/culling/occlusion_culling.hpp"
+#include "render/shadows/shadow_atlas.hpp"
+
+#include "render/debug/debug_views.hpp"
+
+namespace atrium {
+
+struct FrameStats {
+  std::size_t draw_calls = 0;       // multi-draws one geometry pass issues (opaque and blended)
+  std::size_t triangles = 0;        // in the scene
+  std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum and occlusion culling
+  std::size_t triangles_occluded = 0;  // in view, but hidden behind what the first pass drew
+  std::size_t objects = 0;          // entities with a mesh
+  std::size_t objects_drawn = 0;    // of which the camera sees some primitive
+  std::uint32_t lights = 0;
+  // Measured while the heatmap (fragments view) is shown; the newest average
+  // that has come back, a frame or more late (settle() waits for the last).
+  double light_evaluations_per_pixel = 0.0;  // lights evaluated per pixel
+  double fragments_per_pixel = 0.0;          // rasterised by geometry passes
+  std::uint32_t light_list_entries = 0;      // tiled and clustered modes
+  std::uint32_t light_list_overflows = 0;    // frames whose lists did not fit (counted as their totals arrive)
+  shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
+  std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
+};
+
+class MeshRenderer {
+ public:
+  explicit MeshRenderer(assets::GpuAssets& gpu);
+  ~MeshRenderer();
+
+  // Renders one frame of the registry's world. Throws std::invalid_argument for
+  // a mode that is not in the technique table.
+  void render(ecs::Registry& registry);
+
+  // Waits for the GPU and takes in what it reports a frame or more late
+  // (light-list totals, pass timings) into stats() and timer(): for one-shot
+  // commands after a frame, never inside one (a counted GPU wait).
+  void settle();
+
+  // The last frame's display image (sRGB, top row first).
+  [[nodiscard]] assets::Image read_output() const;
+  // The last frame's view depth (metres along the view axis) per pixel, top
+  // row first; infinity where no geometry was drawn. With MSAA the targets
+  // below are read resolved (colour: samples averaged; depth: one sample).
+  [[nodiscard]] std::vector<float> read_view_depth() const;
+  // The last frame's linear HDR colour, or with the split on its diffuse or
+  // specular light sum, as RGBA floats in GL's row order (bottom row first);
+  // empty for a sum while the split is off.
+  enum class HdrTarget { Color, DiffuseLight, SpecularLight };
+  [[nodiscard]] std::vector<glm::vec4> read_hdr(HdrTarget target) const;
+
+  [[nodiscard]] const std::string& mode() const { return mode_; }
+  // The technique that drew the last frame (tests and tools inspect it).
+  [[nodiscard]] const lighting::LightingTechnique* technique() const { return technique_.get(); }
+  // The G-buffer thumbnails of the last frame (see DebugViews::draw_thumbnails),
+  // 0 when the frame drew none (setting off, or a forward mode).
+  [[nodiscard]] GLuint gbuffer_thumbnails() const;
+  [[nodiscard]] glm::ivec2 thumbnail_size() const;
+  [[nodiscard]] const FrameStats& stats() const { return stats_; }
+  [[nodiscard]] glm::ivec2 size() const { return size_; }
+  // Per-pass times of the latest frame whose timings are complete (each pass
+  // of the frame graph is timed by it).
+  [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
+  [[nodiscard]] gfx::PassTimer& timer() { return timer_; }
+  // The debug views the last frame's graph offered (its technique's and
+  // contributors' passes made what they show), and whether it offered `view`.
+  [[nodiscard]] const std::vector<lighting::OfferedView>& offered_views() const { return offered_views_; }
+  [[nodiscard]] bool offers(std::string_view view) const;
+  // The last frame's graph: its passes, resources and render-target memory.
+  [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
+  // The shadow maps of the last frame (RendererSettings::shadows).
+  [[nodiscard]] const shadows::ShadowAtlas& shadow_atlas() const { return shadows_; }
+
+  // Drops the technique and debug views; the next frame makes them again from
+  // the shader library (after a shader reload).
+  void recreate_technique();
+
+ private:
+  // A single-sample copy of a multisampled target, for reading back.
+  [[nodiscard]] gfx::Texture resolve(GLuint texture, GLenum format, bool depth) const;
+  void resize(glm::ivec2 size);
+  // Makes the diffuse and specular light targets and their framebuffer while
+  // split_lighting_ is on, drops them while it is off.
+  void update_split_targets();
+  // Takes what the GPU reported a frame or more late and has arrived into
+  // `stats`: the counters' averages (DebugViews::take_averages) for the views
+  // the last frame counted, and the light lists' totals. Never waits.
+  void take_reports(FrameStats& stats);
+  // Made on first use (a debug view or the thumbnails).
+  lighting::DebugViews& debug_views();
+  void select_technique(const std::string& mode);
+  [[nodiscard]] lighting::FrameTargets targets() const;
+  // Throws gfx::ResourceLimitError when the driver limits shader loops and a
+  // pixel of this frame would loop over more lights than that limit.
+  void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
+  // Copies the frame's instance records, materials and indirect commands to
+  // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
+  // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame.
+  void upload_draws(const lighting::DrawList& draws);
+  // Binds the frame's instance, material and command buffers again (after a
+  // pass that bound its own).
+  void bind_draws() const;
+  // FrameContext::draw_first_pass: draws draws_ (what the last frame showed),
+  // then, with occlusion culling and once a frame, what the depth it wrote
+  // does not hide, and leaves draws_ holding both.
+  void draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw);
+
+  glm::ivec2 size_{0};
+  std::string mode_;
+  lighting::TechniqueOptions technique_options_;
+  std::vector<gfx::ShaderDefine> globals_;  // what every program is compiled with (render/shader_globals.hpp)
+  bool split_lighting_ = false;  // the light-sum targets exist (shaders compiled with SPLIT_LIGHTING)
+  std::unique_ptr<lighting::DebugViews> debug_views_;
+  std::vector<lighting::OfferedView> offered_views_;  // the last frame's
+  bool thumbnails_drawn_ = false;
+  std::unique_ptr<lighting::LightingTechnique> technique_;
+  gfx::Texture hdr_color_;
+  gfx::Texture depth_stencil_;
+  gfx::Framebuffer hdr_framebuffer_;
+  gfx::Texture diffuse_light_, specular_light_;
+  gfx::Framebuffer lighting_framebuffer_;  // hdr_color, diffuse_light, specular_light
+  gfx::Texture output_color_;
+  gfx::Framebuffer output_framebuffer_;
+  gfx::Buffer frame_uniforms_;
+  gfx::StreamBuffer instances_, materials_, commands_;
+  lighting::DrawList draws_;  // the frame's; FrameContext::draws
+  bool occlusion_pending_ = false;  // draws_ holds only what the last frame showed; draw_first_pass tests the rest
+  shadows::ShadowAtlas shadows_;
+  DepthReader depth_reader_;
+  gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
+  assets::GpuAssets& gpu_;
+  gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
+  FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
+  FrameStats frame_stats_;  // the frame being drawn
+  // The heatmap's and the fragments view's newest averages (they arrive a
+  // frame or more late) and whether the last frame counted each.
+  double light_average_ = 0.0, fragment_average_ = 0.0;
+  bool counted_lights_ = false, counted_fragments_ = false;
+  gfx::PassTimer timer_;
+  render::FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
+  std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
+  glm::vec2 planes_{0.05f, 200.0f};  // the last frame's near and far planes
+};
+
+// Adds the MeshRenderer to the Render phase. The world must hold the resources
+// AssetManager, GpuAssets, Viewport, ViewState, SceneSettings, RendererSettings
+// and a MeshRenderer (constructed with a current GL context).
+void register_mesh_renderer(ecs::Scheduler& scheduler);
+
+}  // namespace atrium

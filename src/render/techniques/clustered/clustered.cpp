@@ -1,0 +1,143 @@
+#include "render/techniques/clustered/clustered.hpp"
+
+#include "gfx/depth.hpp"
+#include "render/frame/scene_passes.hpp"
+
+namespace atrium::lighting {
+namespace {
+
+// Deferred marks from the G-buffer's positions, forward+ from depths.
+std::vector<gfx::ShaderDefine> mark_defines(bool pixel_bounds, bool from_gbuffer) {
+  std::vector<gfx::ShaderDefine> defines;
+  if (!pixel_bounds) defines.push_back({"ACTIVE_FLAGS"});
+  if (from_gbuffer) defines.push_back({"FROM_GBUFFER"});
+  return defines;
+}
+
+// Forward+'s pre-pass with MSAA also writes the shading depth (common/shading_depth.glsl).
+std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::vector<gfx::ShaderDefine> defines) {
+  if (!deferred && samples > 1) defines.push_back({"SHADING_DEPTH"});
+  return defines;
+}
+
+}  // namespace
+
+ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
+    : deferred_(deferred),
+      pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels),
+      active_only_(options.active_clusters && !pixel_bounds_),
+      grid_(options.cluster_grid, options.z_slicing),
+      assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
+      mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
+      mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
+      geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"},
+                                  prepass_defines(deferred, options.msaa, {}))),
+      position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
+                                       prepass_defines(deferred, options.msaa, {{"POSITION_ONLY"}}))),
+      shading_(deferred ? SampleRatePrograms(gpu.shaders(), {"post/fullscreen.vert", "clustered/lighting.frag"}, {}, options.msaa)
+                        : SampleRatePrograms(gpu.shaders(), {"common/mesh.vert", "clustered/shade.frag"}, {}, 1)),
+      blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
+
+GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  GLuint buffer = 0;
+  if (pixel_bounds_) {
+    grid_.clear_pixel_bounds();
+    buffer = grid_.pixel_bounds_buffer();
+  } else {
+    const std::uint32_t zero = 0;
+    glClearNamedBufferData(grid_.active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    buffer = grid_.active_buffer();
+  }
+  grid_.bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
+  if (deferred_) gbuffer_.bind_textures(res);
+  else glBindTextureUnit(0, shading_depth_.valid() ? res.texture(shading_depth_) : targets.depth_stencil);
+  mark_.use();
+  glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
+  if (!frame.draws.blended.empty()) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glViewport(0, 0, targets.size.x, targets.size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(gfx::kDepthCloser);
+    glDepthMask(GL_FALSE);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    mark_blended_.use();
+    draw_items(frame.draws.blended);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthMask(GL_TRUE);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  return buffer;
+}
+
+void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  grid_.update(frame.projection, frame.near_plane, frame.far_plane);
+  shading_depth_ = {};
+  if (deferred_) {
+    add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+  } else {
+    graph.add_pass("depth pre-pass", [&](render::PassBuilder& pass) {
+      pass.write(frame.scene_depth, render::Access::Attachment);
+      if (targets.samples > 1) shading_depth_ = pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth);
+    }, [this, &frame, &targets](const render::PassResources& res) { draw_prepass(res, frame, targets); });
+  }
+  const render::ResourceId lists = grid_.list().import_into(graph, "cluster-light-lists", render::ViewKind::LightBins);
+  graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_.list(), grid_.uniform_buffer()});
+  graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
+    if (deferred_) gbuffer_.read_targets(pass);
+    else pass.read(shading_depth_.valid() ? shading_depth_ : frame.scene_depth, render::Access::Sampled);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(lists, render::Access::Storage);
+  }, [this, &frame, &targets](const render::PassResources& res) {
+    const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;
+    grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
+  });
+  graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
+    if (deferred_) gbuffer_.read_targets(pass);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.read(lists, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources& res) { shade(res, frame, targets); });
+  // Blended surfaces are shaded forward+ from the same lists: their clusters
+  // were marked with the opaque pixels'.
+  add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
+                        [this] { grid_.bind(); });
+}
+
+void ClusteredTechnique::draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  begin_scene_pass(frame, targets);
+  const DrawBatches draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
+  if (shading_depth_.valid()) {
+    const GLuint prepass_framebuffer = res.framebuffer({shading_depth_}, frame.scene_depth);
+    glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer);
+    const float far = gfx::kDepthFar;
+    glClearNamedFramebufferfv(prepass_framebuffer, GL_COLOR, 0, &far);
+    frame.draw_first_pass(draw_prepass);
+  } else {
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    frame.draw_first_pass(draw_prepass);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  }
+}
+
+void ClusteredTechnique::shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  grid_.bind();
+  if (deferred_) {
+    gbuffer_.draw_fullscreen(res, shading_, targets);
+    return;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  // Every visible fragment is shaded once: its depth is already there.
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(gfx::kDepthCloserOrEqual);
+  glDepthMask(GL_FALSE);
+  shading_.per_pixel().use();
+  draw_items(frame.draws.opaque);
+  glDepthMask(GL_TRUE);
+  glDepthFunc(gfx::kDepthCloser);
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,55 @@
+// Clustered shading (modes `clustered-forward` and `clustered-deferred`): the
+// frustum is cut into a 3D grid of clusters; a compute pass assigns each light
+// to the clusters its sphere touches; shading then loops over the pixel's
+// cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
+// fragment once; deferred shades from the G-buffer. By default a cluster's lights
+// are those touching the box of the pixels it holds this frame (read from the
+// positions shading lights and from blended fragments); --cluster-bounds grid tests its whole
+// frustum slice instead. Blended surfaces are shaded forward+ from the same lists.
+#pragma once
+
+#include "render/lighting/cluster_grid.hpp"
+#include "render/lighting/gbuffer.hpp"
+#include "render/techniques/technique.hpp"
+
+namespace atrium::lighting {
+
+class ClusteredTechnique final : public LightingTechnique {
+ public:
+  ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
+  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+
+  [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
+  [[nodiscard]] ListStats light_lists() override {
+    grid_.list().poll();
+    return {grid_.list().last_total(), grid_.list().overflow_frames()};
+  }
+
+ private:
+  // Fills the per-cluster buffer assignment reads (pixel boxes, or active
+  // flags) from the positions shading will light (G-buffer, or depths) and the
+  // blended fragments in front of them; returns it.
+  GLuint mark_clusters(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  // Forward+: the depth pre-pass (through FrameContext::draw_first_pass).
+  void draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  // The opaque surfaces lit from the lists: full-screen (deferred) or forward.
+  void shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+
+  bool deferred_;
+  bool pixel_bounds_;
+  bool active_only_;
+  ClusterGrid grid_;
+  ClusterAssignPrograms assign_;
+  gfx::ShaderProgram& mark_;
+  gfx::ShaderProgram& mark_blended_;
+  gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
+  gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
+  SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)
+  gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
+  GBuffer gbuffer_;
+  // Forward+ with MSAA: this frame's pre-pass depth at pixel centres (R32F,
+  // per sample), where shading lights each fragment; assignment marks from it.
+  render::ResourceId shading_depth_;
+};
+
+}  // namespace atrium::lighting

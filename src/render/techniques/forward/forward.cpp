@@ -1,0 +1,23 @@
+#include "render/techniques/forward/forward.hpp"
+
+#include "render/frame/scene_passes.hpp"
+
+namespace atrium::lighting {
+
+ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& /*options*/)
+    : program_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
+
+void ForwardTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  graph.add_pass("shading", [&](render::PassBuilder& pass) {
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(frame.scene_depth, render::Access::Attachment);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &frame, &targets](const render::PassResources&) {
+    begin_scene_pass(frame, targets);
+    program_.use();
+    frame.draw_first_pass(draw_items);
+  });
+  add_transparency_pass(graph, program_, frame, targets);
+}
+
+}  // namespace atrium::lighting

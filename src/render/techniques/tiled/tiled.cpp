@@ -1,0 +1,106 @@
+#include "render/techniques/tiled/tiled.hpp"
+
+#include "gfx/depth.hpp"
+#include "render/frame/scene_passes.hpp"
+
+namespace atrium::lighting {
+
+TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
+    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
+      assign_(gpu.shaders().get({"tiled/assign.comp"})),
+      lighting_(gpu.shaders(), {"post/fullscreen.vert", "tiled/lighting.frag"}, {}, options.msaa),
+      blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
+      assign_blended_(gpu.shaders().get({"tiled/assign.comp"}, {{"BLENDED"}})),
+      blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
+
+void TiledTechnique::resize(const FrameTargets& targets) {
+  tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
+  list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
+  blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
+  for (gfx::ShaderProgram* program : {&assign_, &assign_blended_, &blended_}) program->set("u_tiles", tiles_);
+  lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
+  set_capacity(list_->capacity());
+  set_blended_capacity(blended_list_->capacity());
+}
+
+void TiledTechnique::set_capacity(std::uint32_t capacity) {
+  assign_.set("u_list_capacity", capacity);
+  lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_list_capacity", capacity); });
+}
+
+void TiledTechnique::set_blended_capacity(std::uint32_t capacity) {
+  assign_blended_.set("u_list_capacity", capacity);
+  blended_.set("u_list_capacity", capacity);
+}
+
+void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
+                                   const std::function<void(std::uint32_t)>& set_capacity) {
+  assign.use();
+  list.assign(light_count, [&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
+}
+
+void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+  add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+  const render::ResourceId lists = list_->import_into(graph, "tile-light-lists", render::ViewKind::LightBins);
+  graph.publish(LightBins{LightBins::Binning::Tiles, lists, tiles_, static_cast<std::uint32_t>(kTileSize), list_.get(), 0});
+  graph.add_pass("light culling", [&](render::PassBuilder& pass) {
+    gbuffer_.read_targets(pass);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.write(lists, render::Access::Storage);
+  }, [this, &frame](const render::PassResources& res) {
+    gbuffer_.bind_textures(res);
+    assign_lights(*list_, assign_, static_cast<std::uint32_t>(frame.lights.size()), [&](std::uint32_t capacity) { set_capacity(capacity); });
+  });
+  graph.add_pass("lighting", [&](render::PassBuilder& pass) {
+    gbuffer_.read_targets(pass);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    pass.read(lists, render::Access::Storage);
+    pass.write(frame.scene_color, render::Access::Attachment);
+  }, [this, &targets](const render::PassResources& res) {
+    list_->bind();
+    gbuffer_.draw_fullscreen(res, lighting_, targets);
+  });
+  blended_listed_ = !frame.draws.blended.empty();
+  if (!blended_listed_) return;
+  const render::ResourceId blended_lists = blended_list_->import_into(graph, "blended-tile-light-lists");
+  graph.add_pass("blended light culling", [&](render::PassBuilder& pass) {
+    pass.read(frame.scene_depth, render::Access::Transfer);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    front_depth_ = pass.create("blended-front-depth", render::TextureDesc{gfx::kDepthStencilFormat, targets.size, targets.samples},
+                               render::ViewKind::Depth);
+    pass.write(blended_lists, render::Access::Storage);
+  }, [this, &frame, &targets](const render::PassResources& res) { cull_for_blended(res, frame, targets); });
+  add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(blended_lists, render::Access::Storage); },
+                        [this] { blended_list_->bind(); });
+}
+
+void TiledTechnique::cull_for_blended(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  {
+    const glm::ivec2 size = targets.size;
+    const GLuint front_framebuffer = res.framebuffer({}, front_depth_);
+    glBlitNamedFramebuffer(targets.hdr_framebuffer, front_framebuffer, 0, 0, size.x, size.y, 0, 0, size.x, size.y,
+                           GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_FRAMEBUFFER, front_framebuffer);
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(gfx::kDepthCloser);
+    glDepthMask(GL_TRUE);
+    blended_depth_.use();
+    draw_items(frame.draws.blended);
+    glBindTextureUnit(0, targets.depth_stencil);
+    glBindTextureUnit(1, res.texture(front_depth_));
+    assign_lights(*blended_list_, assign_blended_, static_cast<std::uint32_t>(frame.lights.size()),
+                  [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
+  }
+}
+
+LightingTechnique::ListStats TiledTechnique::light_lists() {
+  if (!list_) return {};
+  list_->poll();
+  blended_list_->poll();
+  const std::uint32_t blended = blended_listed_ ? blended_list_->last_total() : 0;
+  return {list_->last_total() + blended, list_->overflow_frames() + blended_list_->overflow_frames()};
+}
+
+}  // namespace atrium::lighting

@@ -1,0 +1,148 @@
+// Occlusion culling: the depth pyramid's box test on its own, then the
+// Bistro-scale grid (scenes/courtyard-grid.json), whose street views hide most
+// of what is in view: every mode draws the picture it draws without occlusion
+// culling while submitting a fraction of the triangles, also in the first frame
+// after the camera jumps (when what the last frame showed says little).
+#include "render/culling/occlusion_culling.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/depth.hpp"
+#include "support/gl_test.hpp"
+#include "support/modes.hpp"
+
+namespace atrium {
+namespace {
+
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// A camera at the origin looking down -Z, 90 degrees wide, on a 64x64 viewport
+// (8x8 tiles), every tile at `depth` unless `hole` names one at infinity.
+struct Scene {
+  glm::mat4 view{1.0f};
+  glm::mat4 projection = gfx::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
+  DepthPyramid pyramid(float depth, glm::ivec2 hole = glm::ivec2(-1)) const {
+    std::vector<float> tiles(64, depth);
+    if (hole.x >= 0) tiles[static_cast<std::size_t>(hole.y) * 8 + hole.x] = kInfinity;
+    return DepthPyramid(std::move(tiles), glm::ivec2(8), glm::ivec2(64));
+  }
+  bool hides(const DepthPyramid& p, glm::vec3 centre, float half) const {
+    return p.hides(view, projection, 0.1f, centre - half, centre + half);
+  }
+};
+
+TEST(DepthPyramid, HidesABoxBehindTheDepthAndNothingThatReachesInFrontOfIt) {
+  const Scene scene;
+  const DepthPyramid wall = scene.pyramid(10.0f);
+  EXPECT_TRUE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -20.0f), 1.0f));
+  EXPECT_TRUE(scene.hides(wall, glm::vec3(3.0f, -2.0f, -11.5f), 1.0f)) << "nearest corner at 10.5 m";
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -10.5f), 1.0f)) << "nearest corner at 9.5 m, in front";
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -5.0f), 1.0f));
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -10.0f), 0.0f)) << "a point on the wall is not behind it";
+}
+
+TEST(DepthPyramid, OneUncoveredTileUnderTheBoxKeepsItAtEveryLevel) {
+  const Scene scene;
+  for (int x = 0; x < 8; ++x) {
+    const DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(x, 3));
+    // A box over the whole screen: read at the pyramid's coarsest levels.
+    EXPECT_FALSE(scene.hides(holed, glm::vec3(0.0f, 0.0f, -50.0f), 40.0f)) << "hole in tile " << x;
+  }
+  // A small box over tile (6, 3) only (pixels 48-55, 24-31): the hole at (1, 3) does not matter.
+  const DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(1, 3));
+  const float ndc_x = (52.0f / 64.0f) * 2.0f - 1.0f, ndc_y = (28.0f / 64.0f) * 2.0f - 1.0f;
+  EXPECT_TRUE(scene.hides(holed, glm::vec3(ndc_x * 20.0f, ndc_y * 20.0f, -20.0f), 0.2f));
+  EXPECT_FALSE(scene.hides(scene.pyramid(10.0f, glm::ivec2(6, 3)), glm::vec3(ndc_x * 20.0f, ndc_y * 20.0f, -20.0f), 0.2f));
+}
+
+TEST(DepthPyramid, KeepsBoxesAtTheNearPlaneBehindTheCameraOrOffScreen) {
+  const Scene scene;
+  const DepthPyramid wall = scene.pyramid(1.0f);
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -0.1f), 0.05f)) << "crosses the near plane";
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, 20.0f), 1.0f)) << "behind the camera";
+  EXPECT_FALSE(scene.hides(wall, glm::vec3(200.0f, 0.0f, -20.0f), 1.0f)) << "off screen to the right";
+  EXPECT_FALSE(scene.hides(DepthPyramid(), glm::vec3(0.0f, 0.0f, -20.0f), 1.0f)) << "no depth read";
+}
+
+using OcclusionCulling = testing::GlTest;
+
+constexpr glm::ivec2 kSize{160, 90};
+const std::string kGrid = std::string(ATRIUM_SOURCE_DIR) + "/scenes/courtyard-grid.json";
+
+void set_occlusion_culling(World& world, bool on) { world.registry().resource<RendererSettings>().occlusion_culling = on; }
+
+struct Frame {
+  assets::Image image;
+  std::size_t triangles_drawn = 0;
+  std::size_t triangles_occluded = 0;
+};
+
+Frame draw(World& world) {
+  world.frame(0.0);
+  return {world.renderer().read_output(), world.renderer().stats().triangles_drawn, world.renderer().stats().triangles_occluded};
+}
+
+TEST_F(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTriangles) {
+  World world({.scene = kGrid, .lights = 256u, .mode = "clustered-deferred", .size = kSize});
+  for (int view = 1; view <= 5; ++view) {
+    world.set_view(view);
+    set_occlusion_culling(world, false);
+    const Frame all = draw(world);
+    set_occlusion_culling(world, true);
+    draw(world);  // learns what shows
+    const Frame culled = draw(world);
+    assets::write_png("occlusion_grid_view" + std::to_string(view) + ".png", culled.image);
+    EXPECT_EQ(all.triangles_occluded, 0u);
+    EXPECT_EQ(culled.triangles_drawn + culled.triangles_occluded, all.triangles_drawn) << "view " << view;
+    EXPECT_GE(assets::psnr(all.image, culled.image), 60.0) << "view " << view;
+    // The street views (court, avenue, gallery) see the other courtyards
+    // through the first one's walls.
+    if (view == 2 || view == 4 || view == 5) {
+      EXPECT_LT(culled.triangles_drawn, all.triangles_drawn / 3) << "view " << view;
+    }
+  }
+}
+
+TEST_F(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHid) {
+  World world({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
+  World reference({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
+  set_occlusion_culling(reference, false);
+  draw(world);
+  draw(world);
+  // From the avenue to each other view: the last frame hid or never saw most
+  // of what shows now.
+  for (const int view : {2, 1, 5, 3}) {
+    world.set_view(view);
+    reference.set_view(view);
+    const Frame jumped = draw(world);
+    EXPECT_GE(assets::psnr(draw(reference).image, jumped.image), 60.0) << "view " << view;
+  }
+}
+
+TEST_F(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
+  for (const int samples : {1, 4}) {
+    WorldOptions options{.scene = kGrid, .lights = 256u, .mode = "forward", .view = 5, .size = kSize};
+    options.technique_options.msaa = samples;
+    World world(options);
+    for (const std::string& mode : lighting::mode_names()) {
+      world.set_mode(mode);
+      set_occlusion_culling(world, false);
+      const Frame all = draw(world);
+      set_occlusion_culling(world, true);
+      draw(world);
+      const Frame culled = draw(world);
+      EXPECT_GE(assets::psnr(all.image, culled.image), 60.0) << mode << ", MSAA " << samples;
+      EXPECT_LT(culled.triangles_drawn, all.triangles_drawn / 3) << mode << ", MSAA " << samples;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace atrium

@@ -1,0 +1,143 @@
+// The frame's draw list: the material table matches its GLSL twin byte for
+// byte, opaque draws come one multi-draw per state, masked after opaque, front
+// to back within a state, and blended draws farthest first.
+#include "render/frame/draw_list.hpp"
+
+#include <algorithm>
+#include <set>
+#include <tuple>
+
+#include "app/world.hpp"
+#include "components/frame_resources.hpp"
+#include "components/visibility.hpp"
+#include "assets/mesh_builder.hpp"
+#include "components/transform.hpp"
+#include "support/compute_probe.hpp"
+#include "support/gl_test.hpp"
+
+namespace atrium::lighting {
+namespace {
+
+using DrawListTest = testing::GlTest;
+
+TEST_F(DrawListTest, MaterialTableLayoutAndFlagsMatchTheirGlslTwins) {
+  std::vector<MaterialData> materials(3);
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const float f = static_cast<float>(i + 1);
+    materials[i].base_color_factor = glm::vec4(0.1f * f, 0.2f, 0.3f, 0.4f);
+    materials[i].emissive = glm::vec4(1.0f, 2.0f, 3.0f, 0.5f * f);
+    materials[i].metallic_factor = 0.25f * f;
+    materials[i].roughness_factor = 0.125f;
+    materials[i].occlusion_strength = 0.75f;
+    materials[i].alpha_cutoff = 0.3f * f;
+    materials[i].flags = 7u * static_cast<std::uint32_t>(i + 1);
+    materials[i].uv_sets = 0x15u + static_cast<std::uint32_t>(i);
+    materials[i].uv_transform[9] = glm::vec4(5.0f, 6.0f * f, 7.0f, 0.0f);
+  }
+  const auto read = testing::evaluate_glsl<glm::vec4, MaterialData>(
+      "#include \"common/material_data.glsl\"\n", "Material", "vec4",
+      "vec4(value.base_color_factor.x + value.emissive.a, value.metallic_factor + value.alpha_cutoff,"
+      " float(value.flags) + float(value.uv_sets) * 100.0, value.uv_transform[9].y + value.occlusion_strength)",
+      materials);
+  for (std::size_t i = 0; i < materials.size(); ++i) {
+    const MaterialData& m = materials[i];
+    EXPECT_FLOAT_EQ(read[i].x, m.base_color_factor.x + m.emissive.a) << i;
+    EXPECT_FLOAT_EQ(read[i].y, m.metallic_factor + m.alpha_cutoff) << i;
+    EXPECT_FLOAT_EQ(read[i].z, static_cast<float>(m.flags) + static_cast<float>(m.uv_sets) * 100.0f) << i;
+    EXPECT_FLOAT_EQ(read[i].w, m.uv_transform[9].y + m.occlusion_strength) << i;
+  }
+  const auto flags = testing::evaluate_glsl<glm::uvec4, std::uint32_t>(
+      "#include \"common/material_data.glsl\"\n", "uint", "uvec4",
+      "value == 0u ? uvec4(kMaterialHasNormalTexture, kMaterialNormalXyOnly, kMaterialNormalGreenDown, kMaterialDoubleSided)"
+      " : uvec4(kMaterialUnlit, kMaterialAlphaMasked, 0u, 0u)",
+      std::vector<std::uint32_t>{0u, 1u});
+  EXPECT_EQ(flags[0], glm::uvec4(kMaterialHasNormalTexture, kMaterialNormalXyOnly, kMaterialNormalGreenDown, kMaterialDoubleSided));
+  EXPECT_EQ(flags[1], glm::uvec4(kMaterialUnlit, kMaterialAlphaMasked, 0u, 0u));
+}
+
+// Each batch's GL state, for counting distinct ones.
+auto state_of(const DrawBatch& b) { return std::tuple(b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored); }
+
+TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIsVisible) {
+  for (int view = 1; view <= 5; ++view) {
+    World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .view = view, .size = {160, 90}});
+    world.frame(0.0);
+    auto& registry = world.registry();
+    const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
+                                          registry.resource<assets::GpuAssets>(), registry.resource<ViewState>().view);
+    std::set<decltype(state_of(DrawBatch{}))> states;
+    std::size_t instances = 0, triangles = 0;
+    bool masked_seen = false;
+    for (const DrawBatch& batch : list.opaque) {
+      EXPECT_TRUE(states.insert(state_of(batch)).second) << "a state in two batches, view " << view;
+      // Masked materials come after every opaque one, never in one batch with
+      // them (depth-only passes draw the two with different programs).
+      const bool masked = batch.alpha_masked;
+      for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
+        const DrawCommand& command = list.commands[c];
+        const MaterialData& material = list.materials[list.instances[command.base_instance].material.x];
+        EXPECT_EQ((material.flags & kMaterialAlphaMasked) != 0u, masked) << "a batch mixing masked and opaque, view " << view;
+        if (c > batch.first_command) EXPECT_LE(list.command_depths[c - 1], list.command_depths[c]) << "front to back";
+        instances += command.instance_count;
+        triangles += static_cast<std::size_t>(command.count / 3) * command.instance_count;
+      }
+      EXPECT_TRUE(masked || !masked_seen) << "an opaque batch after a masked one, view " << view;
+      masked_seen = masked_seen || masked;
+    }
+    EXPECT_EQ(triangles, list.triangles_drawn) << "the built-in scene has no blended surface";
+    // One instance per primitive in view, or per run of meshlets in view.
+    std::size_t runs = 0;
+    registry.view<Visibility, WorldBounds>().each([&](const Visibility& visibility, const WorldBounds& bounds) {
+      if (!visibility.any) return;
+      for (std::uint32_t p = 0; p < visibility.primitives.size(); ++p) {
+        if (!(visibility.primitives[p] & seen::kInView)) continue;
+        const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
+        if (first == last) ++runs;
+        for (std::uint32_t m = first; m < last; ++m) {
+          const bool in_view = visibility.meshlets[m] & seen::kInView;
+          runs += in_view && (m == first || !(visibility.meshlets[m - 1] & seen::kInView));
+        }
+      }
+    });
+    EXPECT_EQ(instances, runs) << view;
+    EXPECT_EQ(list.draw_calls(), world.renderer().stats().draw_calls);
+    EXPECT_LE(list.draw_calls(), 10u) << "no more draws than the scene's 10 materials";
+  }
+}
+
+TEST_F(DrawListTest, BlendedDrawsComeFarthestFirstAndNeighboursOfOneStateShareADraw) {
+  // Five glass panes of one material at shuffled distances along the view axis.
+  assets::AssetManager manager;
+  assets::MeshAsset panes;
+  assets::Material glass;
+  glass.alpha_mode = assets::AlphaMode::Blend;
+  glass.base_color_factor = glm::vec4(0.2f, 0.5f, 1.0f, 0.4f);
+  panes.materials.push_back(glass);
+  panes.meshes.push_back({"pane", {assets::add_geometry(
+                                      panes, assets::shapes::grid(glm::vec3(-1, -1, 0), glm::vec3(2, 0, 0), glm::vec3(0, 2, 0), 1, 1, 1.0f), 0)}});
+  assets::SceneDescription scene;
+  const assets::MeshAssetHandle handle = manager.add_mesh_asset(std::move(panes));
+  for (const float z : {-3.0f, -9.0f, -1.0f, -7.0f, -5.0f}) {
+    Transform transform;
+    transform.position = glm::vec3(0.0f, 0.0f, z);
+    scene.instances.push_back({handle, 0, transform});
+  }
+  scene.views.push_back({"eye", glm::vec3(0.0f, 0.0f, 4.0f), 0.0f, 0.0f});
+  World world(std::move(manager), std::move(scene), WorldOptions{.scene = "", .lights = 0u, .mode = "forward", .size = {64, 36}});
+  world.frame(0.0);
+  auto& registry = world.registry();
+  const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
+                                        registry.resource<assets::GpuAssets>(), registry.resource<ViewState>().view);
+  EXPECT_TRUE(list.opaque.empty());
+  ASSERT_EQ(list.blended.size(), 1u) << "one state: one draw, its commands in order";
+  ASSERT_EQ(list.blended[0].command_count, 5u);
+  for (std::uint32_t c = 0; c < 5; ++c) {
+    EXPECT_EQ(list.commands[c].instance_count, 1u);
+    const float z = list.instances[list.commands[c].base_instance].model[3].z;
+    EXPECT_FLOAT_EQ(z, -9.0f + 2.0f * static_cast<float>(c)) << "farthest first";
+    EXPECT_FLOAT_EQ(list.command_depths[c], 4.0f - z);
+  }
+}
+
+}  // namespace
+}  // namespace atrium::lighting

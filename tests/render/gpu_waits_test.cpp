@@ -1,0 +1,107 @@
+// A steady frame never waits for the GPU: after warm-up, every mode makes no
+// call that could wait (gfx/gpu_waits.hpp counts them) with shadows, with
+// MSAA, and under every debug view (the heatmap's and the fragment view's
+// averages come back a frame late). Occlusion culling still
+// reads its depth tiles back on the CPU (issue 30 item 3), so it is off here.
+// And light lists fill without a read-back: a jump from 10 lights to many in
+// one frame draws what forward draws (the bins that overflowed shade every
+// light that reaches them), shows the overflow a frame later, and the grown
+// lists fit the frames after.
+#include <string>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
+#include "support/gl_test.hpp"
+#include "render/debug/debug_views.hpp"
+#include "render/techniques/technique.hpp"
+
+namespace atrium {
+namespace {
+
+using GpuWaits = testing::GlTest;
+constexpr glm::ivec2 kSize{64, 36};
+
+WorldOptions steady_options(const std::string& mode) {
+  WorldOptions options;
+  options.lights = 64u;
+  options.mode = mode;
+  options.size = kSize;
+  options.occlusion_culling = false;
+  return options;
+}
+
+// Frames until the lists have grown and the timer queries cycle, then one more.
+std::uint32_t waits_after_warm_up(World& world) {
+  for (int f = 0; f < 4; ++f) world.frame(1.0 / 60.0);
+  world.frame(1.0 / 60.0);
+  return world.renderer().stats().gpu_waits;
+}
+
+TEST_F(GpuWaits, NoSteadyFrameWaitsInAnyMode) {
+  for (const std::string& mode : lighting::mode_names()) {
+    World world(steady_options(mode));
+    EXPECT_EQ(waits_after_warm_up(world), 0u) << mode;
+    world.registry().resource<RendererSettings>().shadows = 4;
+    EXPECT_EQ(waits_after_warm_up(world), 0u) << mode << " with 4 shadowed lights";
+  }
+}
+
+TEST_F(GpuWaits, NoSteadyFrameWaitsWithMsaa) {
+  for (const std::string& mode : lighting::mode_names()) {
+    WorldOptions options = steady_options(mode);
+    options.technique_options.msaa = 4;
+    World world(options);
+    EXPECT_EQ(waits_after_warm_up(world), 0u) << mode << " with 4x MSAA";
+  }
+}
+
+TEST_F(GpuWaits, NoSteadyFrameWaitsUnderAnyDebugView) {
+  for (const std::string& mode : {std::string("forward"), std::string("tiled-deferred"), std::string("clustered-deferred"),
+                                  std::string("light-prepass")}) {
+    WorldOptions options = steady_options(mode);
+    options.shadows = 2;
+    World world(options);
+    for (const lighting::DebugView& row : lighting::debug_view_table()) {
+      const std::string_view view = row.name;
+      world.registry().resource<RendererSettings>().debug_view = std::string(view);
+      EXPECT_EQ(waits_after_warm_up(world), 0u) << mode << ", debug view " << view;
+    }
+  }
+}
+
+TEST_F(GpuWaits, AJumpToManyLightsDrawsEveryLightWithoutWaitingAndTheListsGrow) {
+  // llvmpipe ends a shader's loops after 65,535 iterations: an overflowed
+  // bin's pixels loop over every light, so the jump stays under that there.
+  const std::uint32_t many = gfx::shader_loop_limit() ? 60'000u : 100'000u;
+  for (const std::string mode : {"tiled-deferred", "clustered-deferred", "clustered-forward"}) {
+    WorldOptions options = steady_options("forward");
+    options.size = {48, 27};  // every pixel of the jump frame loops over every light (twice, with forward's)
+    options.lights = many;
+    options.light_radius = 0.5f;
+    World reference_world(options);
+    reference_world.frame(0.0);
+    const assets::Image reference = reference_world.renderer().read_output();
+
+    options.lights = 10u;
+    options.mode = mode;
+    World world(options);
+    for (int f = 0; f < 3; ++f) world.frame(0.0);
+    const std::uint32_t overflows = world.renderer().stats().light_list_overflows;
+    world.set_light_count(many);
+    world.frame(0.0);
+    EXPECT_EQ(world.renderer().stats().gpu_waits, 0u) << mode << ": the jump frame reads nothing back";
+    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << mode << ": the jump frame drops no light";
+    world.frame(0.0);
+    const std::uint32_t after_jump = world.renderer().stats().light_list_overflows;
+    EXPECT_GT(after_jump, overflows) << mode << ": the jump frame's overflow arrives a frame later";
+    world.frame(0.0);
+    world.frame(0.0);
+    EXPECT_EQ(world.renderer().stats().light_list_overflows, after_jump) << mode << ": the grown lists fit";
+    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << mode;
+  }
+}
+
+}  // namespace
+}  // namespace atrium
