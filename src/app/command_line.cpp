@@ -38,6 +38,9 @@ struct CommandSpec {
   std::string_view summary;
 };
 
+// The compare line of the commands below states kMinimumPsnr.
+static_assert(kMinimumPsnr == 40.0, "atrium compare --help states 40 dB");
+
 constexpr std::array kCommands{
     CommandSpec{Command::Window, "", "atrium [SCENE] [options]", "open the demo window"},
     CommandSpec{Command::Render, "render", "atrium render [SCENE] --out FILE.png [options]",

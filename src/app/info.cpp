@@ -49,8 +49,7 @@ SceneInfo gather_info(World& world, const std::string& scene) {
     else if (registry.has<SpotCone>(e)) ++info.spot_lights;
     else ++info.point_lights;
   });
-  info.bounds_min = world.scene().bounds_min;
-  info.bounds_max = world.scene().bounds_max;
+  info.bounds = world.scene().bounds;
   info.parse_seconds = world.load_report().timings.parse_seconds;
   info.decode_seconds = world.load_report().timings.decode_seconds;
   info.upload_seconds = world.upload_seconds();
@@ -63,8 +62,8 @@ std::string format_info_text(const SceneInfo& i) {
   if (i.empty()) {
     std::snprintf(bounds, sizeof bounds, "none: the scene is empty (nothing to draw)");
   } else {
-    std::snprintf(bounds, sizeof bounds, "(%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i.bounds_min.x, i.bounds_min.y, i.bounds_min.z,
-                  i.bounds_max.x, i.bounds_max.y, i.bounds_max.z);
+    std::snprintf(bounds, sizeof bounds, "(%.2f, %.2f, %.2f) to (%.2f, %.2f, %.2f)", i.bounds.min.x, i.bounds.min.y, i.bounds.min.z,
+                  i.bounds.max.x, i.bounds.max.y, i.bounds.max.z);
   }
   char buffer[2048];
   std::snprintf(buffer, sizeof buffer,
@@ -122,8 +121,8 @@ std::string format_info_json(const SceneInfo& i) {
       {"lights", {{"point", i.point_lights}, {"spot", i.spot_lights}, {"directional", i.directional_lights}}},
       {"empty", i.empty()},
       {"bounds", i.empty() ? nlohmann::json(nullptr)
-                           : nlohmann::json{{"min", {i.bounds_min.x, i.bounds_min.y, i.bounds_min.z}},
-                                            {"max", {i.bounds_max.x, i.bounds_max.y, i.bounds_max.z}}}},
+                           : nlohmann::json{{"min", {i.bounds.min.x, i.bounds.min.y, i.bounds.min.z}},
+                                            {"max", {i.bounds.max.x, i.bounds.max.y, i.bounds.max.z}}}},
       {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
       {"warnings", i.warnings},
       {"gl", {{"renderer", i.gl.renderer}, {"vendor", i.gl.vendor}, {"version", i.gl.version}, {"platform", i.gl.platform}}}};

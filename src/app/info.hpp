@@ -1,6 +1,8 @@
 // `atrium info SCENE [--json]`: what a scene holds and what loading it cost.
 #pragma once
 
+#include "base/box.hpp"
+
 #include <string>
 #include <vector>
 
@@ -22,7 +24,7 @@ struct SceneInfo {
   std::size_t materials_opaque = 0, materials_mask = 0, materials_blend = 0;
   std::size_t textures = 0, texture_bytes = 0;
   std::size_t point_lights = 0, spot_lights = 0, directional_lights = 0;
-  glm::vec3 bounds_min{0.0f}, bounds_max{0.0f};  // meaningless when empty()
+  Box bounds;  // the scene's as declared (assets::SceneDescription::bounds); meaningless when empty()
   double parse_seconds = 0, decode_seconds = 0, upload_seconds = 0;
   std::size_t warnings = 0;
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)

@@ -20,6 +20,7 @@
 #include "components/mesh_instance.hpp"
 #include "components/system_options.hpp"
 #include "render/contributors.hpp"
+#include "components/bounds.hpp"
 #include "systems/bounds.hpp"
 #include "systems/camera.hpp"
 #include "systems/fireflies/fireflies.hpp"
@@ -137,8 +138,8 @@ void World::start(const WorldOptions& options) {
 
   registry_.set_resource<Viewport>(Viewport{options.size});
   registry_.set_resource<ViewState>();
-  registry_.set_resource<SceneSettings>(
-      SceneSettings{scene_.bounds_min, scene_.bounds_max, scene_.ambient, scene_.background, scene_.exposure});
+  registry_.set_resource<SceneSettings>(SceneSettings{scene_.ambient, scene_.background, scene_.exposure});
+  registry_.set_resource<SceneBounds>(SceneBounds{scene_.bounds});
   registry_.set_resource<RendererSettings>();
   registry_.set_resource<LightAnimationSettings>();
   auto& system_options = registry_.set_resource<SystemOptions>();

@@ -269,9 +269,7 @@ class AssimpImporter {
       for (unsigned c = 0; c < node->mNumChildren; ++c) stack.emplace_back(node->mChildren[c], world);
     }
     if (skipped > 0) warn(std::to_string(skipped) + " instances have a transform with a zero or non-finite scale; they are skipped");
-    result_.bounds_min = bounds.min;
-    result_.bounds_max = bounds.max;
-    result_.empty = bounds.empty;
+    result_.bounds = bounds;
   }
 
   // --- materials and textures ----------------------------------------------

@@ -307,8 +307,8 @@ SceneDescription build_builtin_scene(AssetManager& assets, std::optional<std::ui
   scene.ambient = glm::vec3(0.03f);
   scene.background = glm::vec3(0.02f, 0.025f, 0.045f);
   scene.exposure = 2.0f;
-  scene.bounds_min = glm::vec3(-kHalfLength, 0.0f, -kHalfWidth);
-  scene.bounds_max = glm::vec3(kHalfLength, kWallHeight + kSlabThickness, kHalfWidth);
+  scene.bounds.add(glm::vec3(-kHalfLength, 0.0f, -kHalfWidth));
+  scene.bounds.add(glm::vec3(kHalfLength, kWallHeight + kSlabThickness, kHalfWidth));
   return scene;
 }
 

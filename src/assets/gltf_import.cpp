@@ -665,9 +665,7 @@ class Importer {
       if (node.light >= 0) add_light(node.light, world);
       for (auto child = node.children.rbegin(); child != node.children.rend(); ++child) stack.emplace_back(*child, world);
     }
-    result_.bounds_min = bounds_.min;
-    result_.bounds_max = bounds_.max;
-    result_.empty = bounds_.empty;
+    result_.bounds = bounds_;
     if (skipped_instances_.count > 0) {
       warn(skipped_instances_.where("nodes") + ": " + std::to_string(skipped_instances_.count) +
            " instances have a transform with a zero or non-finite scale; they are skipped");

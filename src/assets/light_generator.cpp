@@ -53,11 +53,11 @@ void resize_lights(SceneDescription& scene, std::uint32_t count) {
     // so that a single object, even a flat one, is lit from outside too. A light
     // is bright only well inside its radius (irradiance is 5/256 * (radius /
     // distance)^2), so radii of three diagonals light everything clearly.
-    const float diagonal = glm::length(scene.bounds_max - scene.bounds_min);
+    const float diagonal = glm::length(scene.bounds.max - scene.bounds.min);
     const glm::vec3 margin(0.25f * diagonal);
     const float radius = std::max(3.0f * diagonal, 1e-6f);
-    generator.box_min = scene.bounds_min - margin;
-    generator.box_max = scene.bounds_max + margin;
+    generator.box_min = scene.bounds.min - margin;
+    generator.box_max = scene.bounds.max + margin;
     generator.intensity_min = generator.intensity_max = radius * radius * 5.0f / 256.0f;
     generator.seed = 7;
   }

@@ -6,6 +6,8 @@
 // importer's file pair and one row; help and messages are built from the table.
 #pragma once
 
+#include "base/box.hpp"
+
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -47,11 +49,8 @@ struct ModelImport {
   // One per node and mesh it draws (and per EXT_mesh_gpu_instancing instance).
   std::vector<SceneInstance> instances;
   std::vector<SceneLight> lights;        // the file's lights, placed by their nodes
-  // Of every instance's triangles, world space; a zero box at the origin when
-  // the model has none (`empty`).
-  glm::vec3 bounds_min{0.0f};
-  glm::vec3 bounds_max{0.0f};
-  bool empty = true;
+  // Of every instance's triangles, world space (empty: it has none).
+  Box bounds;
   std::vector<std::string> warnings;     // each names the file
   ImportTimings timings;
   std::size_t images = 0;

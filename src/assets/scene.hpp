@@ -11,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "assets/handles.hpp"
+#include "base/box.hpp"
 #include "components/transform.hpp"
 
 namespace atrium::assets {
@@ -65,8 +66,9 @@ struct SceneDescription {
   glm::vec3 background{0.0f};      // linear HDR colour behind all geometry
   float exposure = 1.0f;
   std::string default_mode = "forward";
-  glm::vec3 bounds_min{0.0f};
-  glm::vec3 bounds_max{0.0f};
+  // Every instance's triangles, world space (empty: none); the World seeds
+  // the SceneBounds resource with it, which the bounds system keeps current.
+  Box bounds;
   // Fills the scene up to --lights N: the scene's own generator, or one over its bounds.
   std::optional<LightGenerator> fill_generator;
   // A scene file's "systems": settings of optional systems by name

@@ -112,7 +112,7 @@ class Reader {
 glm::vec3 read_point(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
   if (j.contains("position_in_bounds")) {
     const glm::vec3 f = r.vec3(j["position_in_bounds"], p + "/position_in_bounds", -10.0, 10.0);
-    return scene.bounds_min + f * (scene.bounds_max - scene.bounds_min);
+    return scene.bounds.min + f * (scene.bounds.max - scene.bounds.min);
   }
   if (!j.contains("position")) r.fail(p + "/position", "is missing (or give position_in_bounds)");
   return r.vec3(j["position"], p + "/position");
@@ -150,14 +150,14 @@ LightGenerator read_generator(const Reader& r, const json& j, const std::string&
                                                   ("a whole number from 0 to " + std::to_string(kMaxLights)).c_str()));
   if (j.contains("seed")) g.seed = static_cast<std::uint32_t>(r.number(j["seed"], p + "/seed", 0, 4294967295.0, "a whole number"));
   if (!j.contains("box") || (j["box"].is_string() && j["box"] == "bounds")) {
-    g.box_min = scene.bounds_min;
-    g.box_max = scene.bounds_max;
+    g.box_min = scene.bounds.min;
+    g.box_max = scene.bounds.max;
   } else {
     const json& box = j["box"];
     r.only_keys(box, p + "/box", {"min", "max", "min_in_bounds", "max_in_bounds"});
     auto corner = [&](const char* absolute, const char* relative) {
       if (box.contains(relative)) {
-        return scene.bounds_min + r.vec3(box[relative], p + "/box/" + relative, -10.0, 10.0) * (scene.bounds_max - scene.bounds_min);
+        return scene.bounds.min + r.vec3(box[relative], p + "/box/" + relative, -10.0, 10.0) * (scene.bounds.max - scene.bounds.min);
       }
       return r.vec3(r.member(box, p + "/box", absolute), p + "/box/" + absolute);
     };
@@ -183,14 +183,8 @@ NamedView read_view(const Reader& r, const json& j, const std::string& p, const 
   return view;
 }
 
-void grow_bounds(SceneDescription& scene, glm::vec3 lo, glm::vec3 hi, bool& any) {
-  scene.bounds_min = any ? glm::min(scene.bounds_min, lo) : lo;
-  scene.bounds_max = any ? glm::max(scene.bounds_max, hi) : hi;
-  any = true;
-}
-
 // Places an imported model's instances and lights under a model transform.
-void add_model(SceneDescription& scene, const ModelImport& model, const glm::mat4& placement, bool& any_bounds) {
+void add_model(SceneDescription& scene, const ModelImport& model, const glm::mat4& placement) {
   for (SceneInstance instance : model.instances) {
     instance.asset = model.asset;
     // Placement scales are positive (checked when read), so this decomposes.
@@ -204,11 +198,7 @@ void add_model(SceneDescription& scene, const ModelImport& model, const glm::mat
     light.direction = glm::normalize(glm::vec3(placement * glm::vec4(light.direction, 0.0f)));
     scene.lights.push_back(light);
   }
-  if (!model.empty) {
-    Box placed;
-    placed.add_box(placement, model.bounds_min, model.bounds_max);
-    grow_bounds(scene, placed.min, placed.max, any_bounds);
-  }
+  if (!model.bounds.empty) scene.bounds.add_box(placement, model.bounds.min, model.bounds.max);
 }
 
 void merge_report(LoadReport& report, const ModelImport& model) {
@@ -225,7 +215,8 @@ void merge_report(LoadReport& report, const ModelImport& model) {
 // the horizon), so a flat model in any axis plane is seen at 20 degrees or
 // more, never edge-on; each stands as close as lets the whole box fit a
 // 60-degree vertical field of view at 4:3 or wider, with a margin.
-std::vector<NamedView> framing_views(glm::vec3 lo, glm::vec3 hi) {
+std::vector<NamedView> framing_views(const Box& bounds) {
+  const glm::vec3 lo = bounds.min, hi = bounds.max;
   const glm::vec3 centre = 0.5f * (lo + hi);
   const glm::vec3 size = hi - lo;
   const float reach = std::max({size.x, size.y, size.z, 1e-6f});
@@ -311,7 +302,6 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
   // The mode name is checked against the technique table by the World.
   if (root.contains("default_mode")) scene.default_mode = r.string(root["default_mode"], "/default_mode");
 
-  bool any_bounds = false;
   std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
   std::optional<ModelImport> builtin;
   std::vector<NamedView> builtin_views;
@@ -340,14 +330,12 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
           builtin.emplace();
           builtin->asset = courtyard.instances.empty() ? MeshAssetHandle{} : courtyard.instances.front().asset;
           builtin->instances = courtyard.instances;
-          builtin->bounds_min = courtyard.bounds_min;
-          builtin->bounds_max = courtyard.bounds_max;
-          builtin->empty = courtyard.instances.empty();
+          builtin->bounds = courtyard.instances.empty() ? Box{} : courtyard.bounds;
           builtin_views = courtyard.views;
           scene.exposure = courtyard.exposure;
           scene.background = courtyard.background;
         }
-        add_model(scene, *builtin, placement, any_bounds);
+        add_model(scene, *builtin, placement);
         // Its views are in its own frame: they hold for a copy left where it was built.
         if (scene.views.empty() && placement == glm::mat4(1.0f)) scene.views = builtin_views;
         continue;
@@ -370,7 +358,7 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
         imported.emplace(key, import_model(model_path, assets, options));
         merge_report(report, imported.at(key));
       }
-      add_model(scene, imported.at(key), placement, any_bounds);
+      add_model(scene, imported.at(key), placement);
     }
   }
   // After the models: the file's settings win over a built-in model's.
@@ -402,7 +390,7 @@ SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, Loa
     scene.views.clear();
     for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], "/views/" + std::to_string(i), scene));
   } else if (scene.views.empty()) {
-    scene.views = framing_views(scene.bounds_min, scene.bounds_max);
+    scene.views = framing_views(scene.bounds);
   }
   return scene;
 }
@@ -415,9 +403,8 @@ SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, st
   merge_report(report, model);
   SceneDescription scene;
   scene.name = path.stem().string();
-  bool any_bounds = false;
-  add_model(scene, model, glm::mat4(1.0f), any_bounds);
-  scene.views = framing_views(scene.bounds_min, scene.bounds_max);
+  add_model(scene, model, glm::mat4(1.0f));
+  scene.views = framing_views(scene.bounds);
   resize_lights(scene, static_cast<std::uint32_t>(scene.lights.size()) + extra_lights);
   return scene;
 }

@@ -43,7 +43,7 @@ struct LoadReport {
 
 // Five views of a box: four from outside, looking at its centre obliquely
 // (front, side, corner, top), and one inside it (off the plane of a flat box).
-[[nodiscard]] std::vector<NamedView> framing_views(glm::vec3 bounds_min, glm::vec3 bounds_max);
+[[nodiscard]] std::vector<NamedView> framing_views(const Box& bounds);
 
 // A model file (glTF, OBJ, FBX, ...) as a scene: its instances and KHR_lights_punctual lights, five
 // views framing its bounds, and `extra_lights` generated lights inside them.

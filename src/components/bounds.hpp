@@ -40,7 +40,10 @@ struct WorldBounds : Box {
   std::uint32_t mesh = 0;
 };
 
-// Every instance's box together (empty: nothing in the scene draws a triangle).
+// Every instance's box together; while nothing draws a triangle, the box the
+// scene declared (empty when it declared none). The camera fits its depth
+// planes to it, the position view scales its colours to it, systems place
+// what they spawn in it.
 struct SceneBounds : Box {};
 
 }  // namespace atrium

@@ -26,8 +26,6 @@ struct ViewState {
 
 // Scene-wide lighting settings.
 struct SceneSettings {
-  glm::vec3 bounds_min{0.0f};
-  glm::vec3 bounds_max{0.0f};
   glm::vec3 ambient{0.03f};
   glm::vec3 background{0.0f};
   float exposure = 1.0f;

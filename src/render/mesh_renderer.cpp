@@ -4,6 +4,7 @@
 #include <limits>
 #include <stdexcept>
 
+#include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/visibility.hpp"
 #include "gfx/depth.hpp"
@@ -343,7 +344,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
       throw lighting::UnknownViewError("unknown debug view '" + settings.debug_view + "' (views: " + names + ")");
     }
   }
-  const lighting::DebugViewFrame view_frame{frame, frame_targets, graph_, scene.bounds_min, scene.bounds_max};
+  const auto* extent = registry.try_resource<SceneBounds>();
+  const lighting::DebugViewFrame view_frame{frame, frame_targets, graph_, extent ? extent->min : glm::vec3(0.0f),
+                                            extent ? extent->max : glm::vec3(1.0f)};
   const bool technique_gbuffer = lighting::GBuffer::find(graph_).has_value();
   thumbnails_drawn_ = settings.gbuffer_thumbnails && technique_gbuffer;
   if (thumbnails_drawn_) {

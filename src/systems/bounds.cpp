@@ -74,7 +74,10 @@ void update_bounds(ecs::Registry& registry) {
     }
     scene.add(bounds);
   });
-  registry.resource<SceneBounds>() = SceneBounds{scene};
+  // A scene that draws nothing keeps the box it declared (the World seeds
+  // SceneBounds with it), so that the camera and the systems placing things
+  // in it still have a scale.
+  if (!scene.empty) registry.resource<SceneBounds>() = SceneBounds{scene};
 }
 
 void register_bounds(ecs::Scheduler& scheduler) { scheduler.add(ecs::Phase::PostUpdate, "bounds", update_bounds); }

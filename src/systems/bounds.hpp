@@ -2,7 +2,10 @@
 // Transform + MeshInstance its WorldBounds (the boxes of its mesh's primitives,
 // transformed, and their union), recomputed when the entity's model matrix or
 // mesh changes, and sets the SceneBounds resource to their union each frame, so
-// boxes follow entities that move.
+// boxes follow entities that move. SceneBounds is the one notion of the
+// scene's extent at run time: the World seeds it with the box the scene
+// declares (assets::SceneDescription::bounds), which it keeps while nothing
+// draws a triangle.
 #pragma once
 
 #include "ecs/scheduler.hpp"

@@ -56,11 +56,8 @@ DepthPlanes settle_depth_planes(DepthPlanes previous, DepthPlanes fitted) {
 void register_camera(ecs::Scheduler& scheduler) {
   scheduler.add(ecs::Phase::PostUpdate, "camera", [](ecs::Registry& registry) {
     const glm::ivec2 size = registry.resource<Viewport>().size;
-    // The geometry's bounds when there is geometry, else what the scene declares.
-    const auto* drawn = registry.try_resource<SceneBounds>();
-    const auto& declared = registry.resource<SceneSettings>();
-    const glm::vec3 lo = drawn && !drawn->empty ? drawn->min : declared.bounds_min;
-    const glm::vec3 hi = drawn && !drawn->empty ? drawn->max : declared.bounds_max;
+    const auto* scene = registry.try_resource<SceneBounds>();
+    const glm::vec3 lo = scene ? scene->min : glm::vec3(0.0f), hi = scene ? scene->max : glm::vec3(0.0f);
     auto& state = registry.resource<ViewState>();
     registry.view<Transform, Camera>().each([&](const Transform& transform, const Camera& camera) {
       const float aspect = static_cast<float>(std::max(size.x, 1)) / static_cast<float>(std::max(size.y, 1));

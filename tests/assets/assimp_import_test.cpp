@@ -35,10 +35,10 @@ void expect_same_model(const fs::path& file, const fs::path& source, float toler
   const ModelImport model = import_model(file, assets);
   const ModelImport reference = import_gltf(source, assets);
   EXPECT_EQ(drawn_triangles(assets, model), drawn_triangles(assets, reference)) << file.filename();
-  const float size = glm::length(reference.bounds_max - reference.bounds_min);
+  const float size = glm::length(reference.bounds.max - reference.bounds.min);
   for (int axis = 0; axis < 3; ++axis) {
-    EXPECT_NEAR(model.bounds_min[axis], reference.bounds_min[axis], tolerance * size) << file.filename() << " axis " << axis;
-    EXPECT_NEAR(model.bounds_max[axis], reference.bounds_max[axis], tolerance * size) << file.filename() << " axis " << axis;
+    EXPECT_NEAR(model.bounds.min[axis], reference.bounds.min[axis], tolerance * size) << file.filename() << " axis " << axis;
+    EXPECT_NEAR(model.bounds.max[axis], reference.bounds.max[axis], tolerance * size) << file.filename() << " axis " << axis;
   }
 }
 

@@ -67,8 +67,8 @@ TEST_F(BuiltinScene, HasAtLeast128LightsAndFiveNamedViews) {
 
 TEST_F(BuiltinScene, LightsAreInsideTheCourtWithFiniteRadii) {
   for (const auto& light : scene_->lights) {
-    EXPECT_TRUE(glm::all(glm::greaterThanEqual(light.position, scene_->bounds_min))) << light.position.x;
-    EXPECT_TRUE(glm::all(glm::lessThanEqual(light.position, scene_->bounds_max))) << light.position.x;
+    EXPECT_TRUE(glm::all(glm::greaterThanEqual(light.position, scene_->bounds.min))) << light.position.x;
+    EXPECT_TRUE(glm::all(glm::lessThanEqual(light.position, scene_->bounds.max))) << light.position.x;
     const float radius = lighting::light_radius_from_intensity(light.color, light.intensity);
     EXPECT_GT(radius, 2.0f);
     EXPECT_LT(radius, 15.0f);

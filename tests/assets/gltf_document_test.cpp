@@ -102,7 +102,7 @@ TEST_F(GltfDocument, TheBaseFileLoads) {
   AssetManager assets;
   const ModelImport imported = import_gltf(write("triangle.gltf", triangle_gltf()), assets);
   EXPECT_EQ(imported.instances.size(), 1u);
-  EXPECT_FALSE(imported.empty);
+  EXPECT_FALSE(imported.bounds.empty);
 }
 
 TEST_F(GltfDocument, AnAccessorClaimingMoreThanItsViewHoldsIsRefusedBeforeAllocating) {
@@ -246,9 +246,9 @@ TEST_F(GltfDocument, AModelWithNoTrianglesIsEmptyWithWellDefinedBounds) {
   doc["meshes"][0]["primitives"][0]["mode"] = 0;  // points
   AssetManager assets;
   const ModelImport imported = import_gltf(write("points.gltf", doc), assets);
-  EXPECT_TRUE(imported.empty);
-  EXPECT_EQ(imported.bounds_min, glm::vec3(0.0f));
-  EXPECT_EQ(imported.bounds_max, glm::vec3(0.0f));
+  EXPECT_TRUE(imported.bounds.empty);
+  EXPECT_EQ(imported.bounds.min, glm::vec3(0.0f));
+  EXPECT_EQ(imported.bounds.max, glm::vec3(0.0f));
   EXPECT_THAT(imported.warnings.at(0), HasSubstr("meshes[0].primitives[0] draws points, not triangles, and is skipped"));
 }
 

@@ -76,7 +76,7 @@ TEST(GltfTestdata, InstancedMeshesBecomeOneInstancePerNode) {
   AssetManager assets;
   const ModelImport imported = import_gltf(testdata() / "blender-exports/subpass_scene_opaque.gltf", assets);
   EXPECT_GT(imported.instances.size(), assets.mesh_asset(imported.asset).meshes.size());
-  EXPECT_LT(imported.bounds_min.x, imported.bounds_max.x);
+  EXPECT_LT(imported.bounds.min.x, imported.bounds.max.x);
 }
 
 TEST(GltfTestdata, MaterialFactorsAreRead) {

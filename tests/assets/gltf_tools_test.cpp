@@ -81,9 +81,9 @@ TEST_P(ToolWritten, ImportsWithItsSourcesTrianglesAndNoWarningBeyondTheSources) 
   for (const std::string& warning : source.warnings) source_kinds.insert(kind(warning));
   for (const std::string& warning : fixture.warnings) EXPECT_TRUE(source_kinds.contains(kind(warning))) << warning;
   // The box the triangles fill survives compression (quantisation moves it by a step).
-  const float size = glm::length(source.bounds_max - source.bounds_min);
-  EXPECT_LT(glm::length(fixture.bounds_min - source.bounds_min), size * 2e-3f);
-  EXPECT_LT(glm::length(fixture.bounds_max - source.bounds_max), size * 2e-3f);
+  const float size = glm::length(source.bounds.max - source.bounds.min);
+  EXPECT_LT(glm::length(fixture.bounds.min - source.bounds.min), size * 2e-3f);
+  EXPECT_LT(glm::length(fixture.bounds.max - source.bounds.max), size * 2e-3f);
 }
 
 INSTANTIATE_TEST_SUITE_P(GltfTools, ToolWritten, ::testing::ValuesIn(tool_fixtures()), [](const auto& info) {

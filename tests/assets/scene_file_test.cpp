@@ -86,12 +86,12 @@ TEST_F(SceneFile, ReadsModelsLightsGeneratorsViewsAndSettings) {
   }
   ASSERT_EQ(scene.views.size(), 2u);
   EXPECT_EQ(scene.views[0].yaw_degrees, 10.0f);
-  EXPECT_NEAR(scene.views[1].position.x, 0.5f * (scene.bounds_min.x + scene.bounds_max.x), 1e-4f);
+  EXPECT_NEAR(scene.views[1].position.x, 0.5f * (scene.bounds.min.x + scene.bounds.max.x), 1e-4f);
   EXPECT_EQ(scene.ambient, glm::vec3(0.1f, 0.2f, 0.3f));
   EXPECT_EQ(scene.background, glm::vec3(0.05f));
   EXPECT_EQ(scene.exposure, 2.0f);
-  EXPECT_LT(scene.bounds_min.x, -9.0f);
-  EXPECT_GT(scene.bounds_max.x, 9.0f);
+  EXPECT_LT(scene.bounds.min.x, -9.0f);
+  EXPECT_GT(scene.bounds.max.x, 9.0f);
 }
 
 TEST_F(SceneFile, ResizingLightsKeepsListedOnesFirstThenUsesTheGenerator) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/gltf_import.hpp"
 #include "assets/image.hpp"
@@ -25,7 +26,7 @@ namespace atrium {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 const fs::path kFixtures = fs::path(ATRIUM_SOURCE_DIR) / "tests/data/gltf-tools";
 const fs::path kBlender = fs::path(ATRIUM_TESTDATA_DIR) / "gltf/blender-exports";
 
@@ -71,7 +72,7 @@ TEST_F(GltfRender, EveryToolWrittenFixtureDrawsItsSourcesPicture) {
     const auto actual = render_views(std::move(fixture_assets), fixture_scene, "forward", 4);
     for (std::size_t v = 0; v < expected.size(); ++v) {
       assets::write_png("gltf_tools_" + name + "_view" + std::to_string(v + 1) + ".png", actual[v]);
-      EXPECT_GE(assets::psnr(expected[v], actual[v]), 40.0) << name << " view " << v + 1;
+      EXPECT_GE(assets::psnr(expected[v], actual[v]), kMinimumPsnr) << name << " view " << v + 1;
     }
     ++compared;
   }
@@ -103,8 +104,8 @@ assets::SceneDescription coloured_quad(assets::AssetManager& manager, bool unlit
   }
   scene.lights.push_back({glm::vec3(0.0f), glm::vec3(1.0f), 1.0f, std::nullopt, assets::LightKind::Directional, glm::vec3(0, 0, -1)});
   scene.views.push_back({"front", glm::vec3(0.0f, 0.0f, 3.0f), 0.0f, 0.0f});
-  scene.bounds_min = glm::vec3(-4, -3, 0);
-  scene.bounds_max = glm::vec3(4, 3, 0);
+  scene.bounds.add(glm::vec3(-4, -3, 0));
+  scene.bounds.add(glm::vec3(4, 3, 0));
   scene.exposure = 1.0f;
   return scene;
 }
@@ -178,7 +179,7 @@ TEST_F(GltfRender, AModelFromOneCentimetreToTenKilometresDrawsTheSamePictureInEv
       const auto images = scaled_knot(scale, mode);
       for (std::size_t v = 0; v < images.size(); ++v) {
         assets::write_png("gltf_scaled_knot_" + std::to_string(scale) + "_" + mode + "_view" + std::to_string(v + 1) + ".png", images[v]);
-        EXPECT_GE(assets::psnr(reference[v], images[v]), 40.0) << "scale " << scale << " " << mode << " view " << v + 1;
+        EXPECT_GE(assets::psnr(reference[v], images[v]), kMinimumPsnr) << "scale " << scale << " " << mode << " view " << v + 1;
       }
     }
   }
@@ -207,7 +208,7 @@ TEST_F(GltfRender, BlendersGlassDrawsForwardsPictureInEveryMode) {
     const auto images = render_views(std::move(assets), scene, mode, 4);
     for (std::size_t v = 0; v < images.size(); ++v) {
       assets::write_png("gltf_glass_" + mode + "_view" + std::to_string(v + 1) + ".png", images[v]);
-      EXPECT_GE(assets::psnr(reference[v], images[v]), 40.0) << mode << " view " << v + 1;
+      EXPECT_GE(assets::psnr(reference[v], images[v]), kMinimumPsnr) << mode << " view " << v + 1;
     }
   }
 }
@@ -236,7 +237,7 @@ TEST_F(GltfRender, MirroredInstancesKeepTheirFrontFaces) {
   const assets::Image mirrored = render(glm::vec3(-1.0f, 1.0f, 1.0f));
   assets::write_png("gltf_mirrored.png", mirrored);
   EXPECT_GT(assets::luma(plain, kSize.x / 2, kSize.y / 2), 0.3);
-  EXPECT_GE(assets::psnr(plain, mirrored), 40.0) << "the mirrored quad is drawn, lit from the front";
+  EXPECT_GE(assets::psnr(plain, mirrored), kMinimumPsnr) << "the mirrored quad is drawn, lit from the front";
 }
 
 TEST_F(GltfRender, FlatModelsAreNeverSeenEdgeOn) {
@@ -252,9 +253,9 @@ TEST_F(GltfRender, FlatModelsAreNeverSeenEdgeOn) {
     asset.meshes.push_back({"plate", {assets::add_geometry(asset, assets::shapes::grid(glm::vec3(0), edge_u, edge_v, 4, 4, 1.0f), 0)}});
     assets::SceneDescription scene;
     scene.instances.push_back({manager.add_mesh_asset(std::move(asset)), 0, Transform{}});
-    scene.bounds_min = glm::min(glm::vec3(0), edge_u + edge_v);
-    scene.bounds_max = glm::max(glm::vec3(0), edge_u + edge_v);
-    scene.views = assets::framing_views(scene.bounds_min, scene.bounds_max);
+    scene.bounds.add(glm::vec3(0));
+    scene.bounds.add(edge_u + edge_v);
+    scene.views = assets::framing_views(scene.bounds);
     const auto images = render_views(std::move(manager), std::move(scene), "forward", 5);
     for (std::size_t v = 0; v < images.size(); ++v) {
       assets::write_png("gltf_flat_" + std::to_string(static_cast<int>(edge_u.x)) + std::to_string(static_cast<int>(edge_v.y)) + "_view" +

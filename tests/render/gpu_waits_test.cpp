@@ -9,6 +9,7 @@
 // lists fit the frames after.
 #include <string>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
@@ -92,14 +93,14 @@ TEST_F(GpuWaits, AJumpToManyLightsDrawsEveryLightWithoutWaitingAndTheListsGrow) 
     world.set_light_count(many);
     world.frame(0.0);
     EXPECT_EQ(world.renderer().stats().gpu_waits, 0u) << mode << ": the jump frame reads nothing back";
-    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << mode << ": the jump frame drops no light";
+    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << mode << ": the jump frame drops no light";
     world.frame(0.0);
     const std::uint32_t after_jump = world.renderer().stats().light_list_overflows;
     EXPECT_GT(after_jump, overflows) << mode << ": the jump frame's overflow arrives a frame later";
     world.frame(0.0);
     world.frame(0.0);
     EXPECT_EQ(world.renderer().stats().light_list_overflows, after_jump) << mode << ": the grown lists fit";
-    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << mode;
+    EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << mode;
   }
 }
 

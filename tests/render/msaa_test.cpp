@@ -19,7 +19,7 @@
 namespace atrium {
 namespace {
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 constexpr int kSamples = 4;  // llvmpipe's most
 
 lighting::TechniqueOptions with_msaa(int samples, lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {

@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "render/gpu_assets.hpp"
 #include "assets/image.hpp"
@@ -28,7 +29,7 @@ namespace atrium {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 const fs::path kSponza = fs::path(ATRIUM_TESTDATA_DIR) / "scenes/sponza-crytek";
 
 // A folder laid out like the repository after `scripts/fetch-scenes.sh sponza`.
@@ -105,7 +106,7 @@ TEST_F(SponzaScene, EveryModeDrawsForwardsPictureFromEveryView) {
   World world(options());
   testing::compare_every_mode_with_forward(world, [](const std::string& mode, int view, const assets::Image& reference,
                                                       const assets::Image& image) {
-    EXPECT_GE(assets::psnr(reference, image), 40.0) << mode << " view " << view;
+    EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << mode << " view " << view;
   });
 }
 

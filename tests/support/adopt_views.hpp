@@ -9,8 +9,7 @@ namespace atrium::testing {
 inline void adopt_views_and_lights(assets::SceneDescription& scene, const assets::SceneDescription& like) {
   scene.views = like.views;
   scene.lights = like.lights;
-  scene.bounds_min = like.bounds_min;
-  scene.bounds_max = like.bounds_max;
+  scene.bounds = like.bounds;
 }
 
 }  // namespace atrium::testing

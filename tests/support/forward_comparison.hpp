@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "support/modes.hpp"
@@ -58,7 +59,7 @@ inline void expect_forward_picture_from_every_view(World& world, const std::stri
     world.frame(0.0);
     const assets::Image image = world.renderer().read_output();
     assets::write_png("compare_" + name + "_view" + std::to_string(view) + ".png", image);
-    EXPECT_GE(assets::psnr(reference, image), 40.0) << name << " view " << view;
+    EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << name << " view " << view;
     EXPECT_LE(share_differing(reference, image, 8), allowed_share) << name << " view " << view;
   }
 }

@@ -4,9 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/glm.hpp>
+
 #include "gfx/debug_output.hpp"
 
 namespace atrium::testing {
+
+// The size picture tests render at unless they need another: small enough
+// for llvmpipe, large enough to see the scene (the README's smallest test size).
+inline constexpr glm::ivec2 kSize{160, 90};
 
 class GlTest : public ::testing::Test {
  protected:

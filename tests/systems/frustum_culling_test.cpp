@@ -3,6 +3,7 @@
 // the camera cannot see, follows entities that move, and keeps draw calls from
 // growing with copies of the scene; meshlets facing away are dropped only where
 // the transform keeps their normal cones true (not mirrored, not stretched).
+#include "app/cli.hpp"
 #include "systems/frustum_culling.hpp"
 
 #include <limits>
@@ -50,7 +51,7 @@ TEST(FrustumOf, ANonFiniteMatrixKeepsEveryBox) {
 
 using FrustumCulling = testing::GlTest;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 TEST_F(FrustumCulling, ChangesNoPixelOfAnyViewOrModeAndDropsWhatIsOutOfView) {
   WorldOptions culled_options{.scene = "atrium", .lights = 48u, .mode = "forward", .size = kSize};
@@ -194,7 +195,7 @@ TEST_F(FrustumCulling, TheGridSceneDrawsTheForwardPictureInClusteredModes) {
   for (const std::string mode : {"clustered-deferred", "clustered-forward", "tiled-deferred"}) {
     grid.set_mode(mode);
     grid.frame(0.0);
-    EXPECT_GE(assets::psnr(reference, grid.renderer().read_output()), 40.0) << mode;
+    EXPECT_GE(assets::psnr(reference, grid.renderer().read_output()), kMinimumPsnr) << mode;
   }
 }
 

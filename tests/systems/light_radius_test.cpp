@@ -15,7 +15,7 @@ namespace {
 
 using LightRadiusTest = testing::GlTest;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 assets::Image render(World& world) {
   world.frame(0.0);

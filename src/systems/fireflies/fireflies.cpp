@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "components/system_options.hpp"
@@ -38,15 +39,15 @@ void update_fireflies(ecs::Registry& registry) {
   std::vector<ecs::Entity> existing;
   registry.view<Firefly>().each([&](ecs::Entity e, const Firefly&) { existing.push_back(e); });
   for (std::size_t i = static_cast<std::size_t>(wanted); i < existing.size(); ++i) registry.destroy(existing[i]);
-  const SceneSettings& scene = registry.resource<SceneSettings>();
-  const glm::vec3 extent = glm::max(scene.bounds_max - scene.bounds_min, glm::vec3(1.0f));
+  const SceneBounds& scene = registry.resource<SceneBounds>();
+  const glm::vec3 extent = glm::max(scene.max - scene.min, glm::vec3(1.0f));
   // Sized to the scene: a reach of a few percent of its diagonal.
   const float reach = std::clamp(0.04f * glm::length(extent), 0.4f, 4.0f);
   for (int k = static_cast<int>(existing.size()); k < wanted; ++k) {
     Firefly firefly;
     // The lower two thirds of the scene, where its floors and walls are.
     const glm::vec3 at = spread(k) * glm::vec3(1.0f, 0.66f, 1.0f);
-    firefly.home = scene.bounds_min + at * extent;
+    firefly.home = scene.min + at * extent;
     firefly.range = 0.5f * reach;
     firefly.phase = kGoldenAngle * static_cast<float>(k);
     firefly.size = 0.06f * reach;

@@ -73,7 +73,7 @@ TEST(DepthPyramid, KeepsBoxesAtTheNearPlaneBehindTheCameraOrOffScreen) {
 
 using OcclusionCulling = testing::GlTest;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 const std::string kGrid = std::string(ATRIUM_SOURCE_DIR) + "/scenes/courtyard-grid.json";
 
 void set_occlusion_culling(World& world, bool on) { world.registry().resource<RendererSettings>().occlusion_culling = on; }

@@ -19,7 +19,7 @@
 namespace atrium {
 namespace {
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 using DebugViewRender = testing::GlTest;
 

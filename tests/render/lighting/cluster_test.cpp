@@ -6,6 +6,7 @@
 #include <array>
 #include <map>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/camera.hpp"
@@ -182,7 +183,7 @@ TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
         options.z_slicing = slicing;
         options.cluster_bounds = bounds;
         world.frame(0.0);
-        EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0)
+        EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr)
             << mode << " " << name_of(slicing) << (bounds == lighting::ClusterBounds::Grid ? " grid" : " pixels");
       }
     }
@@ -196,13 +197,13 @@ TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
   const assets::Image reference = world.renderer().read_output();
   world.set_mode("clustered-deferred");
   world.frame(0.0);
-  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0) << "no light was lost in the frame that overflowed";
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << "no light was lost in the frame that overflowed";
   // The first frame's total arrives in the second, which grows the list first.
   world.frame(0.0);
   const lighting::ClusterGrid& grid = grid_of(world);
   EXPECT_GE(grid.list().overflow_frames(), 1u) << "1024 lights overfill the initial list";
   EXPECT_GE(grid.list().capacity(), grid.list().last_total());
-  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), 40.0);
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr);
   const std::uint32_t overflows = grid.list().overflow_frames();
   world.frame(0.0);
   world.frame(0.0);

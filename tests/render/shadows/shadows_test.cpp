@@ -28,7 +28,7 @@ namespace {
 
 using Shadows = testing::GlTest;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 constexpr float kHalf = 10.0f;
 constexpr float kAmbient = 0.03f, kExposure = 1.3f;
 // The wall: 8 m wide, 3 m tall, 0.3 m thick, across the floor at z = 0.

@@ -28,7 +28,7 @@ struct Case {
   std::optional<float> radius;
 };
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 constexpr float kHalf = 10.0f;
 
 std::unique_ptr<World> plane_world(const Case& c, const char* mode) {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string_view>
 
+#include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "assets/mesh_builder.hpp"
@@ -20,7 +21,7 @@
 namespace atrium {
 namespace {
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 struct EdgeCase {
   const char* name;
@@ -172,7 +173,7 @@ TEST_P(VolumeEdgeCase, MatchesForward) {
   ASSERT_GT(lit, kSize.x * kSize.y * 0.02) << c.name << ": the light must visibly reach the scene";
   const assets::Image image = render(c, mode, layout);
   assets::write_png(std::string("edge_") + c.name + "_" + name + ".png", image);
-  EXPECT_GE(assets::psnr(reference, image), 40.0) << name << " " << c.name;
+  EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << name << " " << c.name;
   EXPECT_LE(assets::max_channel_difference(reference, image), 8) << name << " " << c.name;
 }
 

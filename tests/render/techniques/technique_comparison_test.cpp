@@ -16,7 +16,7 @@
 namespace atrium {
 namespace {
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 class TechniqueMatchesForward : public testing::GlTest,
                                 public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};

@@ -28,7 +28,7 @@ namespace atrium {
 namespace {
 namespace fs = std::filesystem;
 
-constexpr glm::ivec2 kSize{160, 90};
+using testing::kSize;
 
 using FirefliesTest = testing::GlTest;
 
@@ -74,7 +74,7 @@ TEST_F(FirefliesTest, TheyChangeTheFrameVisiblyAndEveryModeDrawsThemAsForwardDoe
   for (const std::string& mode : testing::non_forward_modes()) {
     const assets::Image image = render(96, mode);
     assets::write_png("fireflies_" + mode + ".png", image);
-    EXPECT_GE(assets::psnr(with, image), 40.0) << mode;
+    EXPECT_GE(assets::psnr(with, image), kMinimumPsnr) << mode;
   }
 }
 
