@@ -222,8 +222,6 @@ std::vector<ViewableResource> FrameGraph::viewable() const {
   return resources;
 }
 
-const TextureDesc& FrameGraph::texture_desc(ResourceId resource) const { return resources_.at(resource.index).texture; }
-
 void FrameGraph::compile() {
   const std::size_t count = passes_.size();
   // Culling, from the last pass back: a pass is needed when it keeps itself,

@@ -170,8 +170,6 @@ class FrameGraph {
   [[nodiscard]] ResourceId find(const std::string& name) const;
   // Every resource declared with a ViewKind, in the order declared.
   [[nodiscard]] std::vector<ViewableResource> viewable() const;
-  // A texture resource's description (size, format, samples).
-  [[nodiscard]] const TextureDesc& texture_desc(ResourceId resource) const;
 
   // What a contributor tells the frame's later passes beyond its resources
   // (how its light lists map pixels to bins, say): one value per type, kept

@@ -3,7 +3,12 @@
 // itself or writes a long-lived resource; transient targets whose lifetimes do
 // not overlap share one GL object, and the memory report says so; a use after
 // a storage write gets the barrier its access needs, and only then; pooled
-// objects are reused frame after frame; every timed pass is timed.
+// objects are reused frame after frame; every timed pass is timed; resources
+// declared with a view kind are listed for the debug views; what a pass
+// publishes is found by later ones until the next frame; a framebuffer on an
+// imported target is made once and made again after forget_imports().
+#include <vector>
+
 #include <gtest/gtest.h>
 
 #include "render/frame_graph.hpp"
@@ -164,6 +169,54 @@ TEST_F(FrameGraphTest, PassesDrawIntoTheirTargetsAndAreTimed) {
     EXPECT_EQ(timer.latest()[0].name, "clear");
     EXPECT_EQ(timer.latest()[1].name, "copy");
   }
+}
+
+TEST_F(FrameGraphTest, ViewableResourcesArePublishedValuesAndCachedFramebuffersFollowTheFrame) {
+  gfx::Texture depth = gfx::create_render_target(GL_DEPTH32F_STENCIL8, 64, 32);
+  FrameGraph graph;
+  struct Note {
+    int value;
+  };
+  ResourceId colour;  // set by the setup, read by the execute
+  auto build = [&] {
+    graph.reset();
+    const ResourceId d = graph.import_texture("depth", depth.id(), {GL_DEPTH32F_STENCIL8, {64, 32}, 1}, ViewKind::Depth);
+    graph.import_buffer("lights", 0, {16});
+    graph.add_pass("draws", [&](PassBuilder& b) {
+      colour = b.create("colour", kColour, ViewKind::Color);
+      b.create("scratch", kColour);
+      b.write(d, Access::Attachment);
+    }, [&, d](const PassResources& res) {
+      const GLuint framebuffer = res.framebuffer({colour}, d);
+      EXPECT_EQ(res.framebuffer({colour}, d), framebuffer) << "made once";
+      glClearNamedFramebufferfi(framebuffer, GL_DEPTH_STENCIL, 0, 0.25f, 0);
+    });
+    graph.publish(Note{7});
+  };
+  build();
+  const std::vector<ViewableResource> viewable = graph.viewable();
+  ASSERT_EQ(viewable.size(), 2u);
+  EXPECT_EQ(viewable[0].name, "depth");
+  EXPECT_EQ(viewable[0].kind, ViewKind::Depth);
+  EXPECT_EQ(viewable[1].name, "colour");
+  EXPECT_EQ(viewable[1].kind, ViewKind::Color);
+  ASSERT_NE(graph.published<Note>(), nullptr);
+  EXPECT_EQ(graph.published<Note>()->value, 7);
+  EXPECT_EQ(graph.published<int>(), nullptr);
+  graph.execute(nullptr);
+  graph.reset();
+  EXPECT_EQ(graph.published<Note>(), nullptr) << "a new frame starts with nothing published";
+  // The owner remakes its depth target (a resize; GL may give the new one
+  // the old one's name) and says so: the next frame's framebuffer draws into
+  // the new one.
+  depth = {};
+  depth = gfx::create_render_target(GL_DEPTH32F_STENCIL8, 64, 32);
+  graph.forget_imports();
+  build();
+  graph.execute(nullptr);
+  std::vector<float> texels(64 * 32, 0.0f);
+  glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
+  EXPECT_EQ(texels[0], 0.25f) << "the pass cleared the owner's current depth target";
 }
 
 }  // namespace
