@@ -1,5 +1,5 @@
 // Shadows for every mode: how much of a light reaches a surface past the
-// casters in its shadow maps. The ShadowAtlas (src/systems/shadows/) draws the
+// casters in its shadow maps. The ShadowAtlas (src/render/shadows/) draws the
 // maps of this frame's shadowed lights into tiles of one depth texture and
 // points each such light's spot.z at its first view; other lights are unshadowed.
 // Compiled in only with SHADOWS (the renderer's global define while --shadows

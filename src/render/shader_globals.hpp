@@ -1,9 +1,9 @@
 // The defines every shader of a frame is compiled with. Each is declared by
 // the part of the renderer that needs it, as a row that decides it from the
-// frame's settings: the shading model (lighting/shading_model.hpp), the debug
-// views' counters (lighting/debug_views.hpp), the G-buffer layout
-// (lighting/gbuffer.hpp), the light-sum targets and MSAA (the renderer's
-// targets) and shadows (shadows/shadow_atlas.hpp). The renderer recompiles
+// frame's settings: the shading model (render/lighting/shading_model.hpp), the debug
+// views' counters (render/debug/debug_views.hpp), the G-buffer layout
+// (render/lighting/gbuffer.hpp), the light-sum targets and MSAA (the renderer's
+// targets) and shadows (render/shadows/shadow_atlas.hpp). The renderer recompiles
 // when the rows' defines change.
 #pragma once
 

@@ -2,8 +2,9 @@
 // that names them. A technique contributes the passes that draw the frame's lit,
 // linear HDR image into the renderer's colour target (with depth in its
 // depth-stencil target) to the frame graph; the renderer's own passes then
-// tone-map it. Adding a technique is one file pair here, one shader folder, and
-// one row in technique_table.cpp.
+// tone-map it. Adding a technique is one folder beside this file (its C++;
+// CMake finds it), the shaders/ folder of the same name, and one row in
+// technique_table.cpp.
 #pragma once
 
 #include <functional>
