@@ -217,7 +217,15 @@ ResourceId FrameGraph::find(const std::string& name) const {
 std::vector<ViewableResource> FrameGraph::viewable() const {
   std::vector<ViewableResource> resources;
   for (std::uint32_t i = 0; i < resources_.size(); ++i) {
-    if (resources_[i].view != ViewKind::None) resources.push_back({resources_[i].name, resources_[i].view, {i}});
+    if (resources_[i].view == ViewKind::None) continue;
+    std::string writer;
+    for (const Pass& pass : passes_) {
+      if (std::any_of(pass.uses.begin(), pass.uses.end(), [&](const Use& u) { return u.write && u.resource == i; })) {
+        writer = pass.name;
+        break;
+      }
+    }
+    resources.push_back({resources_[i].name, resources_[i].view, {i}, writer});
   }
   return resources;
 }

@@ -83,6 +83,7 @@ struct ViewableResource {
   std::string name;
   ViewKind kind;
   ResourceId id;
+  std::string written_by;  // the first pass that writes it; empty: none (an imported one only read)
 };
 
 // What a pass declares about itself while the graph is built.

@@ -200,6 +200,7 @@ TEST_F(FrameGraphTest, ViewableResourcesArePublishedValuesAndCachedFramebuffersF
   EXPECT_EQ(viewable[0].kind, ViewKind::Depth);
   EXPECT_EQ(viewable[1].name, "colour");
   EXPECT_EQ(viewable[1].kind, ViewKind::Color);
+  EXPECT_EQ(viewable[1].written_by, "draws");
   ASSERT_NE(graph.published<Note>(), nullptr);
   EXPECT_EQ(graph.published<Note>()->value, 7);
   EXPECT_EQ(graph.published<int>(), nullptr);

@@ -145,7 +145,8 @@ std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const Te
   for (const render::ViewableResource& resource : graph.viewable()) {
     const Visualiser* visualiser = visualiser_for(resource.kind);
     if (!visualiser || find_debug_view(resource.name)) continue;
-    views.push_back({resource.name, std::string(visualiser->shows)});
+    views.push_back({resource.name, std::string(visualiser->shows) +
+                                        (resource.written_by.empty() ? "" : " (written by the " + resource.written_by + " pass)")});
   }
   return views;
 }
