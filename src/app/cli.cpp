@@ -136,6 +136,7 @@ int run_info(const CliOptions& options) {
 
 // Every mode at every view against forward: PSNR and largest channel difference.
 int run_compare(const CliOptions& options) {
+  const std::string below = "  < " + std::to_string(static_cast<int>(kMinimumPsnr)) + " dB";
   const auto context = gfx::HeadlessContext::create();
   WorldOptions compared = world_options(options);
   compared.mode = "forward";
@@ -150,7 +151,6 @@ int run_compare(const CliOptions& options) {
     const std::string view_name = std::to_string(view) + " " + world.scene().views[static_cast<std::size_t>(view - 1)].name;
     for (const auto& technique : lighting::technique_table()) {
       if (technique.name == "forward") continue;
-      static const std::string below = "  < " + std::to_string(static_cast<int>(kMinimumPsnr)) + " dB";
       world.set_mode(std::string(technique.name));
       world.frame(0.0);
       const assets::Image image = world.renderer().read_output();

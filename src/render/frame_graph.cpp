@@ -336,6 +336,17 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
 
 std::size_t FrameGraph::pooled_objects() const { return pool_->textures.size() + pool_->buffers.size(); }
 
+ViewKind FrameGraph::view_kind(ResourceId resource) const {
+  return resource.valid() && resource.index < resources_.size() ? resources_[resource.index].view : ViewKind::None;
+}
+
+ResourceId FrameGraph::first_of(ViewKind kind) const {
+  for (std::uint32_t i = 0; i < resources_.size(); ++i) {
+    if (resources_[i].view == kind) return {i};
+  }
+  return {};
+}
+
 GLuint FrameGraph::framebuffer(std::span<const ResourceId> colors, ResourceId depth) const {
   std::vector<GLuint> key;
   for (const ResourceId c : colors) key.push_back(resources_.at(c.index).object);

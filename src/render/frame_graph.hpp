@@ -169,8 +169,14 @@ class FrameGraph {
   void add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed = true);
 
   [[nodiscard]] ResourceId find(const std::string& name) const;
-  // Every resource declared with a ViewKind, in the order declared.
+  // Every resource declared with a ViewKind, in the order declared, with the
+  // pass that writes it (for listings).
   [[nodiscard]] std::vector<ViewableResource> viewable() const;
+  // A resource's ViewKind (None for an invalid id), and the first resource
+  // declared with `kind` (invalid when none): the lookups a frame's debug
+  // view makes, without building the listing.
+  [[nodiscard]] ViewKind view_kind(ResourceId resource) const;
+  [[nodiscard]] ResourceId first_of(ViewKind kind) const;
 
   // What a contributor tells the frame's later passes beyond its resources
   // (how its light lists map pixels to bins, say): one value per type, kept

@@ -46,14 +46,11 @@ const Visualiser* visualiser_for(render::ViewKind kind) {
   return it == std::end(kVisualisers) ? nullptr : &*it;
 }
 
-// The resource a row shows through its kind's visualiser: by name, or the
-// first of the row's kind; invalid when the frame has none.
+// The resource a row shows: by name, or the first of the row's kind; invalid
+// when the frame has none or the row names none.
 render::ResourceId resource_of(const DebugView& row, const render::FrameGraph& graph) {
   if (!row.resource.empty()) return graph.find(std::string(row.resource));
-  for (const render::ViewableResource& r : graph.viewable()) {
-    if (r.kind == row.kind) return r.id;
-  }
-  return {};
+  return row.kind == render::ViewKind::None ? render::ResourceId{} : graph.first_of(row.kind);
 }
 
 bool always(const render::FrameGraph&, const TechniqueOptions&) { return true; }
@@ -62,10 +59,7 @@ template <const char* kName>
 bool has_resource(const render::FrameGraph& graph, const TechniqueOptions&) {
   return graph.find(kName).valid();
 }
-bool has_light_bins(const render::FrameGraph& graph, const TechniqueOptions&) {
-  const std::vector<render::ViewableResource> resources = graph.viewable();
-  return std::any_of(resources.begin(), resources.end(), [](const auto& r) { return r.kind == render::ViewKind::LightBins; });
-}
+bool has_light_bins(const render::FrameGraph& graph, const TechniqueOptions&) { return graph.first_of(render::ViewKind::LightBins).valid(); }
 
 template <const char* kTarget>
 void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
@@ -152,11 +146,9 @@ std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const Te
 }
 
 std::optional<SelectedView> select_view(std::string_view name, const render::FrameGraph& graph) {
-  if (const DebugView* row = find_debug_view(name)) return SelectedView{row, row->draw ? render::ResourceId{} : resource_of(*row, graph)};
+  if (const DebugView* row = find_debug_view(name)) return SelectedView{row, resource_of(*row, graph)};
   const render::ResourceId id = graph.find(std::string(name));
-  for (const render::ViewableResource& resource : graph.viewable()) {
-    if (resource.id == id && visualiser_for(resource.kind)) return SelectedView{nullptr, id};
-  }
+  if (visualiser_for(graph.view_kind(id))) return SelectedView{nullptr, id};
   return std::nullopt;
 }
 
@@ -194,9 +186,9 @@ void DebugViews::add_gbuffer_pass(render::FrameGraph& graph, const FrameContext&
 void DebugViews::add_counting_pass(render::FrameGraph& graph, const DebugViewNeeds& needs) {
   // The counters outlive the frame (their sums go back through sums_), so
   // they are the views' own, imported.
-  counts_resource_ = graph.import_texture(needs.count_fragments ? "fragment-counts" : "light-counts", counts_.id(), {GL_R32UI, size_, 1},
-                                          render::ViewKind::Counts);
-  graph.add_pass("clear counters", [&](render::PassBuilder& pass) { pass.write(counts_resource_, render::Access::Transfer); },
+  const render::ResourceId counts = graph.import_texture(needs.count_fragments ? "fragment-counts" : "light-counts", counts_.id(),
+                                                         {GL_R32UI, size_, 1}, render::ViewKind::Counts);
+  graph.add_pass("clear counters", [&](render::PassBuilder& pass) { pass.write(counts, render::Access::Transfer); },
                  [this, fragments = needs.count_fragments](const render::PassResources&) {
                    const GLuint zero = 0;
                    glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -212,10 +204,7 @@ void DebugViews::declare_reads(const SelectedView& view, render::PassBuilder& pa
       for (std::size_t i = 0; i < found->count; ++i) pass.read(found->resources[i], render::Access::Sampled);
     }
   }
-  // A row that derives its picture may still show a resource (the light sums).
-  render::ResourceId shown = view.resource;
-  if (view.row && !view.row->resource.empty()) shown = graph.find(std::string(view.row->resource));
-  if (shown.valid()) pass.read(shown, render::Access::Sampled);
+  if (view.resource.valid()) pass.read(view.resource, render::Access::Sampled);
 }
 
 void DebugViews::declare_thumbnail_reads(render::PassBuilder& pass, const render::FrameGraph& graph, const FrameContext& frame) {
@@ -228,12 +217,7 @@ void DebugViews::draw_into_viewport(const SelectedView& view, const DebugViewFra
     view.row->draw(*this, frame, res, origin, scale);
     return;
   }
-  const Visualiser* visualiser = nullptr;
-  if (view.resource.valid()) {
-    for (const render::ViewableResource& resource : frame.graph.viewable()) {
-      if (resource.id == view.resource) visualiser = visualiser_for(resource.kind);
-    }
-  }
+  const Visualiser* visualiser = visualiser_for(frame.graph.view_kind(view.resource));
   if (visualiser) visualiser->draw(*this, view.resource, frame, res, origin, scale);
   else show_nothing();  // the frame lacks what the view shows
 }

@@ -109,7 +109,7 @@ class UnknownViewError : public std::invalid_argument {
 // resource of `graph`; nullopt when it names neither.
 struct SelectedView {
   const DebugView* row = nullptr;
-  render::ResourceId resource;  // without a row: the resource shown
+  render::ResourceId resource;  // the resource it shows (a row's by name or kind); invalid: none
 };
 [[nodiscard]] std::optional<SelectedView> select_view(std::string_view name, const render::FrameGraph& graph);
 
@@ -208,7 +208,6 @@ class DebugViews {
   FullscreenTriangle fullscreen_;
   gfx::Sampler depth_sampler_;  // the shadow atlas read as depth values, comparison off
   gfx::Texture counts_;
-  render::ResourceId counts_resource_;       // this frame's "light-counts" or "fragment-counts"
   gfx::Buffer block_sums_;                   // one uint per 16x16 block of counts_
   std::unique_ptr<gfx::ReadbackRing> sums_;  // block_sums_ on their way back, tagged with what they counted
   gfx::Texture thumbnails_;
