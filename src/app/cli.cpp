@@ -65,9 +65,9 @@ int run_render(const CliOptions& options) {
   World world(world_options(options));
   world.frame(0.0);
   // The first frame sizes the light lists (and shows them as overflowed);
-  // the light-lists view is meant to show them as they settle, once the
-  // first frame's total has come back.
-  if (options.debug_view == "light-lists") {
+  // a view of the lists (light-lists, or a list resource by its name) is
+  // meant to show them as they settle, once the first frame's total has come back.
+  if (world.renderer().shown_kind() == render::ViewKind::LightBins) {
     world.renderer().settle();
     world.frame(0.0);
   }
