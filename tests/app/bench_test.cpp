@@ -1,5 +1,6 @@
 // atrium bench: a tiny sweep through the real command writes well-formed CSV,
-// markdown and PNG; and the efficiency counters are exact on a hand-built
+// markdown and PNG; `atrium render` settles light lists under either view
+// name; and the efficiency counters are exact on a hand-built
 // scene where the answer is known.
 #include <cstdlib>
 #include <filesystem>
@@ -202,6 +203,30 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   row.evaluated_per_pixel = 6.0;
   row.reaching_per_pixel = 2.0;
   EXPECT_DOUBLE_EQ(row.efficiency(), 1.0 / 3.0);
+}
+
+// `atrium render` shows light lists as they settle (after the first frame's
+// total has come back) whether the view is named light-lists or is the list
+// resource by its own name: the two pictures are the same, and neither is the
+// first frame's overflow (magenta bins).
+TEST(RenderCommand, ALightListViewByEitherNameShowsTheSettledLists) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_lists_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  std::vector<assets::Image> images;
+  for (const std::string view : {"light-lists", "cluster-light-lists"}) {
+    const fs::path out = folder / (view + ".png");
+    const std::string command = std::string(ATRIUM_BINARY) + " render --mode clustered-deferred --size 96x54 --debug-view " + view +
+                                " --out " + out.string() + " > " + (folder / "stdout.txt").string();
+    ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+    images.push_back(assets::read_png(out));
+  }
+  ASSERT_EQ(images[0].rgba, images[1].rgba) << "one picture under both names";
+  int magenta = 0;
+  for (std::size_t i = 0; i + 3 < images[0].rgba.size(); i += 4) {
+    magenta += images[0].rgba[i] > 200 && images[0].rgba[i + 1] < 60 && images[0].rgba[i + 2] > 200;
+  }
+  EXPECT_EQ(magenta, 0) << "no bin overflowed once the lists settled";
+  fs::remove_all(folder);
 }
 
 }  // namespace
