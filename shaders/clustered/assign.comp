@@ -1,21 +1,14 @@
 #version 450 core
-// Clustered light assignment in three dispatches over (cluster, light chunk)
-// pairs: COUNT tests a chunk of lights against a cluster's view-space box and
-// stores how many touch it; RESERVE (one invocation per cluster) turns the
-// chunks' counts into offsets and reserves the cluster's range of the global
-// list with one atomic add; WRITE tests again and writes the indices. Chunking
-// bounds the loop any one invocation runs (llvmpipe ends a shader's loops after
-// 65,535 iterations in all) and spreads a million lights over many invocations.
-// No cap per cluster: when the list is too small the C++ side grows it and runs
-// the three steps again. With PIXEL_BOUNDS (the default) each cluster is tested
-// by the box of the pixels it holds (mark_active.comp), padded by a millimetre
-// per metre for the lighting passes' own reconstruction of those positions;
-// clusters without pixels get no lights. With ACTIVE_ONLY, the grid's boxes,
-// and clusters that hold no visible pixel get no lights.
-layout(local_size_x = 64) in;
-
-#include "common/frame.glsl"
-#include "common/lights.glsl"
+// Clustered light assignment (common/light_scatter.glsl): each light visits
+// only the clusters its sphere may reach, the slices its depth range spans
+// and, in each, the run of columns and of rows whose boxes overlap it
+// (computed, not searched), and passes those whose box it touches; so the cost follows the clusters each light covers,
+// not every light for every cluster. With PIXEL_BOUNDS (the default) a
+// cluster's box is that of the pixels it holds (mark_active.comp), padded by a
+// millimetre per metre for the lighting passes' own reconstruction of those
+// positions, and clusters without pixels get no lights. Otherwise the grid's
+// boxes, and with ACTIVE_ONLY clusters that hold no visible pixel get none.
+#include "common/light_scatter.glsl"
 #include "common/clusters.glsl"
 
 struct ClusterBounds {
@@ -28,134 +21,88 @@ layout(std430, binding = 6) readonly buffer Active { uint u_active[]; };
 #endif
 #ifdef PIXEL_BOUNDS
 layout(std430, binding = 6) readonly buffer PixelBounds { uvec4 u_pixel_bounds[]; };
+#endif
 
-// The box of the cluster's pixels; false when it holds none.
-bool pixel_box(uint cluster, out ClusterBounds box) {
+float pixel_pad(float view_depth) { return 1e-3 * (1.0 + max(view_depth, 0.0)); }
+
+// The box lights are tested against; false when the cluster gets no lights.
+bool cluster_box(uint cluster, out ClusterBounds box) {
+#ifdef PIXEL_BOUNDS
   uvec4 lo = u_pixel_bounds[cluster], hi = u_pixel_bounds[u_grid.w + cluster];
+  box = ClusterBounds(vec4(0.0), vec4(0.0));
   if (lo.x > hi.x) return false;
   vec3 l = vec3(ordered_to_float(lo.x), ordered_to_float(lo.y), ordered_to_float(lo.z));
   vec3 h = vec3(ordered_to_float(hi.x), ordered_to_float(hi.y), ordered_to_float(hi.z));
-  vec3 pad = vec3(1e-3 * (1.0 + max(-l.z, 0.0)));
+  vec3 pad = vec3(pixel_pad(-l.z));
   box = ClusterBounds(vec4(l - pad, 0.0), vec4(h + pad, 0.0));
   return true;
-}
-#endif
-// Per chunk and cluster (chunk-major): COUNT writes the count, RESERVE
-// replaces it with the chunk's offset within the cluster's range.
-layout(std430, binding = 7) buffer ChunkCounts { uint u_chunk_counts[]; };
-
-uint chunk_count() { return (u_light_count + LIGHT_CHUNK - 1u) / LIGHT_CHUNK; }
-
-#ifdef STEP_RESERVE
-void main() {
-  uint cluster = gl_GlobalInvocationID.x;
-  if (cluster >= u_grid.w) return;
-  uint total = 0u;
-  for (uint chunk = 0u; chunk < chunk_count(); ++chunk) {
-    uint slot = chunk * u_grid.w + cluster;
-    uint count = u_chunk_counts[slot];
-    u_chunk_counts[slot] = total;
-    total += count;
-  }
-  u_light_ranges[cluster] = LightRange(reserve_light_range(total), total);
-}
 #else
-// Lights are staged through shared memory in batches of 1024, sixteen per
-// invocation. Each invocation keeps, in its own segment, only those that touch
-// the box around the work group's 64 clusters, so a small light far from these
-// clusters costs one test per work group, not 64; reading the segments in
-// order keeps the lists in light order (the same sums, the same pixels).
-const uint kPerInvocation = 16u;
-const uint kBatch = 64u * kPerInvocation;
-shared vec4 s_lights[kBatch];  // view-space centre, radius; radius < 0: reaches everything
-shared uint s_ids[kBatch];
-shared uint s_kept[64];
-shared ClusterBounds s_group;
-
-bool touches(vec4 light, ClusterBounds box);
-
-void load_group_bounds() {
-  if (gl_LocalInvocationIndex == 0u) {
-    uint first = gl_WorkGroupID.x * 64u, last = min(first + 64u, u_grid.w);
-    ClusterBounds group = ClusterBounds(vec4(1e30), vec4(-1e30));
-    for (uint c = first; c < last; ++c) {
-      group.lo = min(group.lo, u_bounds[c].lo);
-      group.hi = max(group.hi, u_bounds[c].hi);
-    }
-    s_group = group;
-  }
-  barrier();
-}
-
-// Fills each invocation's segment of s_lights with the lights of [base, end) that reach the group.
-void load_batch(uint base, uint end) {
-  uint local = gl_LocalInvocationIndex, segment = local * kPerInvocation, kept = 0u;
-  for (uint k = 0u; k < kPerInvocation; ++k) {
-    uint l = base + segment + k;
-    if (l >= end) break;
-    Light light = u_lights[l];
-    bool everywhere = uint(light.color_kind.w) == kLightDirectional;
-    vec4 sphere = vec4((u_view * vec4(light.position_radius.xyz, 1.0)).xyz, everywhere ? -1.0 : light.position_radius.w);
-    if (touches(sphere, s_group)) {
-      s_lights[segment + kept] = sphere;
-      s_ids[segment + kept] = l;
-      ++kept;
-    }
-  }
-  s_kept[local] = kept;
-  barrier();
-}
-
-bool touches(vec4 light, ClusterBounds box) {
-  if (light.w < 0.0) return true;
-  vec3 nearest = clamp(light.xyz, box.lo.xyz, box.hi.xyz) - light.xyz;
-  return dot(nearest, nearest) <= light.w * light.w;
-}
-
-void main() {
-  uint cluster = gl_GlobalInvocationID.x;
-  uint chunk = gl_WorkGroupID.y;
-  bool assign = cluster < u_grid.w;
-  ClusterBounds box = assign ? u_bounds[cluster] : ClusterBounds(vec4(0.0), vec4(0.0));
+  box = u_bounds[cluster];
 #ifdef ACTIVE_ONLY
-  assign = assign && u_active[cluster] != 0u;
+  return u_active[cluster] != 0u;
+#else
+  return true;
 #endif
-#ifdef PIXEL_BOUNDS
-  assign = assign && pixel_box(cluster, box);
 #endif
-  uint first = chunk * LIGHT_CHUNK, end = min(first + LIGHT_CHUNK, u_light_count);
-  uint slot = chunk * u_grid.w + cluster;
-#ifdef STEP_WRITE
-  uint next = 0u, last = 0u;
-  if (assign) {
-    LightRange range = u_light_ranges[cluster];
-    next = range.offset + u_chunk_counts[slot];
-    last = range.offset + range.count;
+}
+
+bool touches(vec4 sphere, ClusterBounds box) {
+  if (sphere.w < 0.0) return true;
+  vec3 nearest = clamp(sphere.xyz, box.lo.xyz, box.hi.xyz) - sphere.xyz;
+  return dot(nearest, nearest) <= sphere.w * sphere.w;
+}
+
+uint cluster_at(uint x, uint y, uint z) { return (z * u_grid.y + y) * u_grid.x + x; }
+
+// The first and last of `cells` columns (or rows) whose grid boxes between
+// view depths d0 and d1 reach [lo, hi] (view-space metres), `scale` metres
+// per unit of NDC at depth 1 (the grid's frustum is symmetric, as
+// gfx::perspective makes it). A cell spanning NDC [a, b] has a box from
+// min(a d0, a d1) to max(b d0, b d1) times `scale`, both growing with a and
+// b, so each end is one division away; one cell more on each side for rounding.
+uvec2 cell_run(float lo, float hi, float d0, float d1, float scale, uint cells) {
+  float t = lo / scale, u = hi / scale;
+  float least_right = t >= 0.0 ? t / d1 : t / d0;  // a cell's right edge (NDC) must reach this
+  float most_left = u >= 0.0 ? u / d0 : u / d1;    // and its left edge must not pass this
+  float n = float(cells);
+  float first = clamp(ceil((least_right + 1.0) * 0.5 * n) - 2.0, 0.0, n - 1.0);
+  float last = clamp(floor((most_left + 1.0) * 0.5 * n) + 1.0, 0.0, n - 1.0);
+  return uvec2(first, last);
+}
+
+uint for_each_bin(vec4 sphere) {
+  bool everywhere = sphere.w < 0.0;
+  uint first_slice = 0u, last_slice = u_grid.z - 1u;
+  // How far a box may reach past its grid box: pixel boxes are padded.
+  float reach = sphere.w;
+  if (!everywhere) {
+    float near_depth = -sphere.z - sphere.w, far_depth = -sphere.z + sphere.w;
+    reach = sphere.w + 2.0 * pixel_pad(far_depth);
+    // One slice more on each side: rounding at slice boundaries and the pad.
+    first_slice = uint(max(int(cluster_slice(near_depth)) - 1, 0));
+    last_slice = min(cluster_slice(far_depth) + 1u, u_grid.z - 1u);
   }
-#else
-  uint count = 0u;
-#endif
-  // The loop stays uniform across the work group: barrier() needs that.
-  load_group_bounds();
-  for (uint base = first; base < end; base += kBatch) {
-    load_batch(base, end);
-    if (assign) {
-      for (uint segment = 0u; segment < 64u; ++segment) {
-        for (uint i = segment * kPerInvocation, stop = i + s_kept[segment]; i < stop; ++i) {
-          if (!touches(s_lights[i], box)) continue;
-#ifdef STEP_WRITE
-          if (next < last && next < u_list_info.x) u_light_indices[next] = s_ids[i];
-          ++next;
-#else
-          ++count;
-#endif
-        }
+  uint visited = 0u;
+  for (uint z = first_slice; z <= last_slice; ++z) {
+    uvec2 lo = uvec2(0u), hi = u_grid.xy - 1u;
+    if (!everywhere) {
+      // The slice's depths, from any of its boxes.
+      ClusterBounds slice = u_bounds[cluster_at(0u, 0u, z)];
+      float d0 = -slice.hi.z, d1 = -slice.lo.z;
+      uvec2 columns = cell_run(sphere.x - reach, sphere.x + reach, d0, d1, 1.0 / u_projection[0][0], u_grid.x);
+      uvec2 rows = cell_run(sphere.y - reach, sphere.y + reach, d0, d1, 1.0 / u_projection[1][1], u_grid.y);
+      lo = uvec2(columns.x, rows.x);
+      hi = uvec2(columns.y, rows.y);
+    }
+    for (uint y = lo.y; y <= hi.y; ++y) {
+      for (uint x = lo.x; x <= hi.x; ++x) {
+        uint cluster = cluster_at(x, y, z);
+        ClusterBounds box;
+        if (!cluster_box(cluster, box) || !touches(sphere, box)) continue;
+        visit_bin(cluster);
+        ++visited;
       }
     }
-    barrier();
   }
-#ifndef STEP_WRITE
-  if (cluster < u_grid.w) u_chunk_counts[slot] = count;
-#endif
+  return visited;
 }
-#endif

@@ -7,7 +7,6 @@
 layout(std140, binding = 1) uniform ClusterBlock {
   uvec4 u_grid;             // xyz clusters per axis, w total
   vec4 u_slicing;           // x first slice's far depth, y scale, z bias, w 1 = uniform (else log)
-  uvec4 u_list_info;        // x index list capacity
 };
 
 #include "light_lists.glsl"

@@ -15,3 +15,11 @@ struct Light {
 layout(std430, binding = 0) readonly buffer LightBlock {
   Light u_lights[];
 };
+
+// Whether a light can contribute at `position`: directional lights always,
+// point and spot lights within their radius (beyond it the falloff is zero).
+bool light_reaches(Light light, vec3 position) {
+  if (uint(light.color_kind.w) == kLightDirectional) return true;
+  vec3 d = light.position_radius.xyz - position;
+  return dot(d, d) < light.position_radius.w * light.position_radius.w;
+}

@@ -29,14 +29,6 @@ vec3 incoming_light(Surface s, Light light, out vec3 l, bool shadowed) {
   return light.color_kind.rgb * attenuation;
 }
 
-// Whether a light can contribute at `position`: directional lights always,
-// point and spot lights within their radius (beyond it the falloff is zero).
-bool light_reaches(Light light, vec3 position) {
-  if (uint(light.color_kind.w) == kLightDirectional) return true;
-  vec3 d = light.position_radius.xyz - position;
-  return dot(d, d) < light.position_radius.w * light.position_radius.w;
-}
-
 // The heatmap debug view compiles every lighting shader with COUNT_LIGHTS:
 // each evaluation of a light for a fragment adds one to the fragment's pixel.
 #ifdef COUNT_LIGHTS

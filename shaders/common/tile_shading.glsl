@@ -4,10 +4,9 @@
 #include "list_shading.glsl"
 
 uniform uvec2 u_tiles;
-uniform uint u_list_capacity;
 
 // The sum of the lights in the tile of `s` (the unlit terms are the caller's).
 LightSum shade_tile_lights(Surface s, vec2 frag_coord) {
   uvec2 tile = uvec2(frag_coord) / 16u;
-  return shade_listed_lights(s, u_light_ranges[tile.y * u_tiles.x + tile.x], u_list_capacity);
+  return shade_listed_lights(s, u_light_ranges[tile.y * u_tiles.x + tile.x]);
 }

@@ -1,21 +1,34 @@
 #version 450 core
 // Debug views of the tiled and clustered modes' binning, from the depth buffer
 // and the technique's light lists: LIGHT_BINS 1 colours each pixel by the light
-// count of its tile, 2 by that of its cluster (black for none, magenta for a bin
-// that did not fit this frame's list, whose pixels shaded every light);
+// count of its tile, 2 by that of its cluster (black for none, magenta where a
+// light that did not fit this frame's lists reaches: those pixels shaded it
+// outside their lists);
 // DEPTH_SLICES colours each pixel by its cluster depth slice.
 #include "common/frame.glsl"
 #include "common/colour_map.glsl"
 #include "common/clusters.glsl"
 #include "common/msaa.glsl"
+#include "common/lights.glsl"
 
 layout(binding = 5) uniform target2D u_depth;  // with MSAA: sample 0
 uniform uvec2 u_tiles;
 uniform uint u_tile_size;
 uniform float u_scale_max;
-uniform uint u_list_capacity;  // entries this frame's list holds (LightIndexList::capacity)
 
 layout(location = 0) out vec4 out_color;
+
+#ifdef LIGHT_BINS
+// Whether a light of this frame's overflow list reaches the surface at `depth`.
+bool reached_by_overflow(float depth) {
+  if (u_overflow_count == 0u || depth <= kDepthFar) return false;
+  vec4 point = u_inverse_view_projection * vec4(gl_FragCoord.xy / u_viewport_size * 2.0 - 1.0, depth, 1.0);
+  for (uint o = 0u; o < u_overflow_count; ++o) {
+    if (light_reaches(u_lights[u_overflow_lights[o]], point.xyz / point.w)) return true;
+  }
+  return false;
+}
+#endif
 
 void main() {
   float depth = fetch_sample(u_depth, ivec2(gl_FragCoord.xy), 0).r;
@@ -31,8 +44,7 @@ void main() {
 #else
   LightRange range = u_light_ranges[cluster_index(gl_FragCoord.xy, u_viewport_size, view_depth)];
 #endif
-  bool overflowed = range.count > u_list_capacity || range.offset > u_list_capacity - range.count;
-  vec3 color = overflowed ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
+  vec3 color = reached_by_overflow(depth) ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
 #endif
   // The background reads no list; it is drawn dimmed grey to set it apart.
   out_color = vec4(depth > kDepthFar ? color : vec3(0.15), 1.0);

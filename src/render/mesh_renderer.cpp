@@ -344,7 +344,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
       throw lighting::UnknownViewError("unknown debug view '" + settings.debug_view + "' (views: " + names + ")");
     }
   }
-  shown_kind_ = debug_view ? graph_.view_kind(debug_view->resource) : render::ViewKind::None;
   const auto* extent = registry.try_resource<SceneBounds>();
   const lighting::DebugViewFrame view_frame{frame, frame_targets, graph_, extent ? extent->min : glm::vec3(0.0f),
                                             extent ? extent->max : glm::vec3(1.0f)};

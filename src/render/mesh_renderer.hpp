@@ -89,9 +89,6 @@ class MeshRenderer {
   // contributors' passes made what they show), and whether it offered `view`.
   [[nodiscard]] const std::vector<lighting::OfferedView>& offered_views() const { return offered_views_; }
   [[nodiscard]] bool offers(std::string_view view) const;
-  // The kind of the resource the last frame's debug view showed (None: no
-  // view, or one derived from the frame such as the G-buffer's quantities).
-  [[nodiscard]] render::ViewKind shown_kind() const { return shown_kind_; }
   // The last frame's graph: its passes, resources and render-target memory.
   [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
   // The shadow maps of the last frame (RendererSettings::shadows).
@@ -138,7 +135,6 @@ class MeshRenderer {
   bool split_lighting_ = false;  // the light-sum targets exist (shaders compiled with SPLIT_LIGHTING)
   std::unique_ptr<lighting::DebugViews> debug_views_;
   std::vector<lighting::OfferedView> offered_views_;  // the last frame's
-  render::ViewKind shown_kind_ = render::ViewKind::None;
   bool thumbnails_drawn_ = false;
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;

@@ -205,11 +205,11 @@ TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   EXPECT_DOUBLE_EQ(row.efficiency(), 1.0 / 3.0);
 }
 
-// `atrium render` shows light lists as they settle (after the first frame's
-// total has come back) whether the view is named light-lists or is the list
-// resource by its own name: the two pictures are the same, and neither is the
-// first frame's overflow (magenta bins).
-TEST(RenderCommand, ALightListViewByEitherNameShowsTheSettledLists) {
+// `atrium render` shows whole light lists in its one frame (a list's first
+// frame sizes itself) whether the view is named light-lists or is the list
+// resource by its own name: the two pictures are the same, and neither shows
+// lights that overflowed (magenta).
+TEST(RenderCommand, ALightListViewByEitherNameShowsWholeLists) {
   const fs::path folder = fs::temp_directory_path() / ("atrium_lists_" + std::to_string(::getpid()));
   fs::create_directories(folder);
   std::vector<assets::Image> images;
@@ -225,7 +225,7 @@ TEST(RenderCommand, ALightListViewByEitherNameShowsTheSettledLists) {
   for (std::size_t i = 0; i + 3 < images[0].rgba.size(); i += 4) {
     magenta += images[0].rgba[i] > 200 && images[0].rgba[i + 1] < 60 && images[0].rgba[i + 2] > 200;
   }
-  EXPECT_EQ(magenta, 0) << "no bin overflowed once the lists settled";
+  EXPECT_EQ(magenta, 0) << "no light overflowed the lists";
   fs::remove_all(folder);
 }
 

@@ -363,19 +363,18 @@ void DebugViews::show_depth_slices(const DebugViewFrame& frame) {
   fullscreen_.draw();
 }
 
-void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res) {
+void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources&) {
   const LightBins* bins = frame.graph.published<LightBins>();
   if (!bins || bins->lists != lists) {
     show_nothing();  // lists whose technique did not say how pixels map to them
     return;
   }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightRangesBinding, res.buffer(lists));
+  bins->list->bind();
   if (bins->binning == LightBins::Binning::Clusters) glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, bins->grid_uniforms);
   gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"},
                                                    {{"LIGHT_BINS", bins->binning == LightBins::Binning::Tiles ? "1" : "2"}});
   program.set("u_tiles", bins->tiles);
   program.set("u_tile_size", bins->tile_size);
-  program.set("u_list_capacity", bins->list->capacity());
   // A bin can hold every light: the map tops out there.
   program.set("u_scale_max", static_cast<float>(std::max<std::size_t>(frame.frame.lights.size(), 1)));
   glBindTextureUnit(5, frame.targets.depth_stencil);

@@ -9,18 +9,14 @@
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kBoundsBinding = 4, kPerClusterBinding = 6, kChunkCountsBinding = 7;
+constexpr GLuint kBoundsBinding = 4, kPerClusterBinding = 6;
 }  // namespace
 
-ClusterAssignPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only) {
-  auto step = [&](const char* name) -> gfx::ShaderProgram& {
-    std::vector<gfx::ShaderDefine> defines{{"LIGHT_CHUNK", std::to_string(kAssignLightChunk) + "u"}};
-    if (name[0] != '\0') defines.push_back({name});
-    if (bounds == ClusterBounds::Pixels) defines.push_back({"PIXEL_BOUNDS"});
-    else if (active_only) defines.push_back({"ACTIVE_ONLY"});
-    return shaders.get({"clustered/assign.comp"}, defines);
-  };
-  return {step(""), step("STEP_RESERVE"), step("STEP_WRITE")};
+LightScatterPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only) {
+  std::vector<gfx::ShaderDefine> defines;
+  if (bounds == ClusterBounds::Pixels) defines.push_back({"PIXEL_BOUNDS"});
+  else if (active_only) defines.push_back({"ACTIVE_ONLY"});
+  return LightIndexList::programs(shaders, "clustered/assign.comp", defines);
 }
 
 ClusterGrid::ClusterGrid(glm::uvec3 dims, ZSlicing slicing)
@@ -48,7 +44,6 @@ void ClusterGrid::clear_pixel_bounds() const {
 }
 
 void ClusterGrid::upload_uniforms() {
-  uniforms_.list_info = glm::uvec4(list_.capacity(), 0, 0, 0);
   glNamedBufferSubData(uniform_buffer_.id(), 0, sizeof(ClusterUniforms), &uniforms_);
 }
 
@@ -124,31 +119,12 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
   return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
 }
 
-void ClusterGrid::assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
-  const std::uint32_t chunks = std::max<std::uint32_t>((light_count + kAssignLightChunk - 1) / kAssignLightChunk, 1);
-  if (chunks > chunk_capacity_) {
-    chunk_capacity_ = chunks;
-    chunk_counts_ = gfx::create_buffer();
-    glNamedBufferStorage(chunk_counts_.id(), static_cast<GLsizeiptr>(std::uint64_t{chunks} * cluster_count() * sizeof(std::uint32_t)), nullptr, 0);
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkCountsBinding, chunk_counts_.id());
-  if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, per_cluster);
-  const GLuint groups = (cluster_count() + 63) / 64;
-  list_.assign(
-      light_count,
-      [&] {
-        bind();
-        programs.count.use();
-        glDispatchCompute(groups, chunks, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        programs.reserve.use();
-        glDispatchCompute(groups, 1, 1);
-        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-        programs.write.use();
-        glDispatchCompute(groups, chunks, 1);
-      },
-      [&](std::uint32_t) { upload_uniforms(); });
+void ClusterGrid::assign(const LightScatterPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
+  list_.assign(light_count, programs, [&] {
+    glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
+    if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, per_cluster);
+  });
 }
 
 void ClusterGrid::bind() const {

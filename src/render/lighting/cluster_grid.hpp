@@ -2,8 +2,9 @@
 // screen tiles and depth slices (ZSlicing: by default a first slice from the
 // near plane, then logarithmic slices to the far plane), each cluster's view-space bounds
 // (rebuilt only when the projection changes), and the light assignment
-// (count, reserve, write over cluster and light-chunk pairs) that fills one
-// global light index list (LightIndexList: no cap per cluster).
+// (shaders/clustered/assign.comp: each light visits the clusters it may
+// reach) that fills one global light index list (LightIndexList: no cap per
+// cluster).
 // GLSL twin: shaders/common/clusters.glsl.
 #pragma once
 
@@ -27,25 +28,14 @@ inline constexpr unsigned kClusterUniformBinding = 1;
 struct ClusterUniforms {
   glm::uvec4 grid;      // xyz clusters per axis, w total
   glm::vec4 slicing;    // x first slice's far depth, y scale, z bias, w 1 = uniform (else log)
-  glm::uvec4 list_info; // x index list capacity
 };
-static_assert(sizeof(ClusterUniforms) == 48, "must match ClusterBlock in shaders/common/clusters.glsl");
+static_assert(sizeof(ClusterUniforms) == 32, "must match ClusterBlock in shaders/common/clusters.glsl");
 
 struct ClusterBox {
   glm::vec4 lo;  // view space
   glm::vec4 hi;
 };
 static_assert(sizeof(ClusterBox) == 32, "must match ClusterBounds in shaders/clustered/assign.comp");
-
-// Lights one assignment invocation tests (LIGHT_CHUNK in shaders/clustered/assign.comp).
-inline constexpr std::uint32_t kAssignLightChunk = 16384;
-
-// The three steps of shaders/clustered/assign.comp.
-struct ClusterAssignPrograms {
-  gfx::ShaderProgram& count;
-  gfx::ShaderProgram& reserve;
-  gfx::ShaderProgram& write;
-};
 
 class ClusterGrid {
  public:
@@ -55,14 +45,14 @@ class ClusterGrid {
   // box of their pixels (pixel_bounds_buffer(), filled by
   // shaders/clustered/mark_active.comp); else by the grid's boxes, and with
   // `active_only` clusters flagged inactive get no lights.
-  [[nodiscard]] static ClusterAssignPrograms assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only);
+  [[nodiscard]] static LightScatterPrograms assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only);
 
   // Recomputes the slicing and the clusters' bounds if the projection changed.
   void update(const glm::mat4& projection, float near_plane, float far_plane);
   // Assigns the first `light_count` lights of the bound light buffer; `per_cluster`
   // is the buffer of per-cluster flags or pixel boxes the programs read, or 0.
   // Throws gfx::ResourceLimitError when the lists cannot fit.
-  void assign(const ClusterAssignPrograms& programs, std::uint32_t light_count, GLuint per_cluster = 0);
+  void assign(const LightScatterPrograms& programs, std::uint32_t light_count, GLuint per_cluster = 0);
   // Binds the uniform block and the range and index buffers for shading.
   void bind() const;
   // The grid's uniform block (common/clusters.glsl), for passes that bind it themselves.
@@ -83,7 +73,7 @@ class ClusterGrid {
   void clear_pixel_bounds() const;
 
   // The assignment done on the CPU with the same boxes and test, and the GPU's
-  // lists read back: both as sorted light indices per cluster (for tests).
+  // lists read back: both as light indices per cluster, in light order (for tests).
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const;
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> read_lists() const { return list_.read(); }
 
@@ -97,8 +87,6 @@ class ClusterGrid {
   glm::mat4 projection_{0.0f};
   float near_ = 0.0f, far_ = 0.0f;
   gfx::Buffer uniform_buffer_, bounds_, active_, pixel_bounds_;
-  gfx::Buffer chunk_counts_;  // per light chunk and cluster
-  std::uint32_t chunk_capacity_ = 0;
   LightIndexList list_;
   std::uint32_t rebuilds_ = 0;
 };

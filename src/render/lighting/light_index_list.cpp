@@ -1,6 +1,7 @@
 #include "render/lighting/light_index_list.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <string>
 
@@ -9,24 +10,60 @@
 #include "gfx/limits.hpp"
 
 namespace atrium::lighting {
+namespace {
+constexpr GLuint kScatterGroup = 64, kSortGroupBins = 64, kMaxGroups = 65535;
+// LongBins in shaders/common/light_list_sort.glsl: the dispatch's size, then the count.
+constexpr std::size_t kLongBinsHeader = 4;
+}  // namespace
 
 LightIndexList::LightIndexList(std::uint32_t bins)
-    : bins_(bins),
+    : bins_(std::max<std::uint32_t>(bins, 1)),
       max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
       loop_limit_(gfx::shader_loop_limit()),
       ranges_(gfx::create_buffer()),
       total_(gfx::create_buffer()),
+      bin_counts_(gfx::create_buffer()),
+      long_bins_(gfx::create_buffer()),
       totals_(sizeof(Total)) {
-  static_assert(sizeof(Total) == 12, "must match LightTotal in shaders/common/light_lists.glsl");
-  glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(bins, 1) * 2 * sizeof(std::uint32_t)), nullptr, 0);
+  static_assert(sizeof(Total) == 20, "must match LightTotal in shaders/common/light_lists.glsl");
+  glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * 2 * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(bin_counts_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kLongBinsHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr,
+                       GL_DYNAMIC_STORAGE_BIT);
+  // Until a frame runs, the lists are empty and nothing overflowed.
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(ranges_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  const Total none;
+  glNamedBufferSubData(total_.id(), 0, sizeof none, &none);
   resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
+  reserve_lights(1);
+}
+
+LightScatterPrograms LightIndexList::programs(gfx::ShaderLibrary& shaders, const std::string& source, std::vector<gfx::ShaderDefine> defines) {
+  auto step = [&](const char* name) -> gfx::ShaderProgram& {
+    std::vector<gfx::ShaderDefine> with_step = defines;
+    with_step.push_back({name});
+    return shaders.get({source}, with_step);
+  };
+  return {step("STEP_COUNT"), step("STEP_WRITE"), shaders.get({"common/light_list_scan.comp"}),
+          shaders.get({"common/light_list_sort.comp"}, {{"SHORT"}}), shaders.get({"common/light_list_sort.comp"})};
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
   capacity_ = capacity;
   indices_ = gfx::create_buffer();
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(capacity, 1) * sizeof(std::uint32_t)), nullptr, 0);
+}
+
+void LightIndexList::reserve_lights(std::uint32_t light_count) {
+  if (light_count <= light_capacity_ && fits_) return;
+  light_capacity_ = std::max(light_count, light_capacity_ + light_capacity_ / 2);
+  const auto bytes = static_cast<GLsizeiptr>(std::size_t{light_capacity_} * sizeof(std::uint32_t));
+  overflow_ = gfx::create_buffer();
+  fits_ = gfx::create_buffer();
+  glNamedBufferStorage(overflow_.id(), bytes, nullptr, 0);
+  glNamedBufferStorage(fits_.id(), bytes, nullptr, 0);
 }
 
 void LightIndexList::check(const Total& total) const {
@@ -45,61 +82,102 @@ void LightIndexList::check(const Total& total) const {
   }
 }
 
-void LightIndexList::grow_for(std::uint32_t entries, const std::function<void(std::uint32_t)>& on_resize) {
+void LightIndexList::take(const Total& total, std::uint32_t light_count, bool drawn) {
+  check(total);
+  last_total_ = total.entries;
+  last_overflow_lights_ = drawn ? total.overflow_lights : 0;
+  if (drawn && total.overflow_lights > 0) ++overflow_frames_;
+  wanted_ = std::max(wanted_, total.entries);
+  arrived_ = true;
+  if (light_count > 0) entries_per_light_ = static_cast<double>(total.entries) / light_count;
+}
+
+void LightIndexList::grow_for(std::uint64_t entries) {
   if (entries <= capacity_) return;
   // Room to spare: lights that move change the total a little every frame.
-  resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(std::uint64_t{entries} + entries / 4 + 64, max_entries_)));
-  on_resize(capacity_);
+  resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(entries + entries / 4 + 64, max_entries_)));
 }
 
 void LightIndexList::poll() {
-  totals_.poll([&](const void* data, std::size_t, std::uint64_t capacity) {
+  totals_.poll([&](const void* data, std::size_t, std::uint64_t light_count) {
     Total total;
     std::memcpy(&total, data, sizeof total);
-    check(total);
-    last_total_ = total.entries;
-    if (total.entries > capacity) ++overflow_frames_;
-    wanted_ = std::max(wanted_, total.entries);
+    take(total, static_cast<std::uint32_t>(light_count), true);
   });
 }
 
-void LightIndexList::assign(std::uint32_t light_count, const std::function<void()>& dispatch,
-                            const std::function<void(std::uint32_t)>& on_resize) {
+void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& programs, const std::function<void()>& bind_inputs) {
+  Total start;
+  start.capacity = capacity_;
+  glNamedBufferSubData(total_.id(), 0, sizeof start, &start);
+  const std::uint32_t zero = 0;
+  glClearNamedBufferData(bin_counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  const std::uint32_t no_long_bins[kLongBinsHeader] = {0, 1, 1, 0};
+  glNamedBufferSubData(long_bins_.id(), 0, sizeof no_long_bins, no_long_bins);
+  bind();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLongBinsBinding, long_bins_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinCountsBinding, bin_counts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightFitsBinding, fits_.id());
+  bind_inputs();
+  const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (light_groups > 0) {
+    programs.count.use();
+    glDispatchCompute(light_groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+  programs.scan.use();
+  programs.scan.set("u_bins", bins_);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  if (light_groups > 0) {
+    programs.write.use();
+    glDispatchCompute(light_groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const GLuint sort_groups = (bins_ + kSortGroupBins - 1) / kSortGroupBins;
+    programs.sort_short.use();
+    programs.sort_short.set("u_bins", bins_);
+    glDispatchCompute(std::min(sort_groups, kMaxGroups), (sort_groups + kMaxGroups - 1) / kMaxGroups, 1);
+    // The long lists, as many work groups as the scan found (no read-back).
+    programs.sort_long.use();
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, long_bins_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void LightIndexList::assign(std::uint32_t light_count, const LightScatterPrograms& programs, const std::function<void()>& bind_inputs) {
   poll();
-  grow_for(wanted_, on_resize);
+  // This frame's lights at the entries per light last seen: a jump in the
+  // light count is met in the frame it happens, not one later.
+  grow_for(std::max<std::uint64_t>(wanted_, static_cast<std::uint64_t>(std::ceil(entries_per_light_ * light_count))));
   wanted_ = 0;
-  auto run = [&] {
-    const Total zero;
-    glNamedBufferSubData(total_.id(), 0, sizeof zero, &zero);
-    bind();
-    dispatch();
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  };
-  run();
-  if (loop_limit_ && light_count > loop_limit_) {
-    // An overflowed bin's pixels would loop over more lights than the driver
-    // allows: size the list in this frame instead.
+  reserve_lights(light_count);
+  run(light_count, programs, bind_inputs);
+  if (!arrived_ || (loop_limit_ && light_count > loop_limit_)) {
+    // Nothing to size the first frame by, or an overflow list that could hold
+    // more lights than a pixel may loop over: size the array in this frame.
     Total total;
     gfx::read_buffer(total_.id(), 0, sizeof total, &total);
-    check(total);
-    last_total_ = total.entries;
-    if (total.entries <= capacity_) return;
-    ++overflow_frames_;
-    grow_for(total.entries, on_resize);
-    run();
+    take(total, light_count, total.overflow_lights == 0);
+    if (total.overflow_lights == 0) return;
+    grow_for(total.entries);
+    run(light_count, programs, bind_inputs);
     return;
   }
-  (void)totals_.copy(total_.id(), 0, sizeof(Total), capacity_);
+  (void)totals_.copy(total_.id(), 0, sizeof(Total), light_count);
 }
 
 void LightIndexList::bind() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightRangesBinding, ranges_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightIndicesBinding, indices_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightTotalBinding, total_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowLightsBinding, overflow_.id());
 }
 
 render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const std::string& name, render::ViewKind view) const {
-  const std::size_t bytes = (static_cast<std::size_t>(bins_) * 2 + capacity_ + 1) * sizeof(std::uint32_t);
+  const std::size_t bytes = (static_cast<std::size_t>(bins_) * 3 + capacity_ + 2 * std::size_t{light_capacity_}) * sizeof(std::uint32_t) + sizeof(Total);
   return graph.import_buffer(name, ranges_.id(), {bytes}, view);
 }
 
@@ -112,9 +190,18 @@ std::vector<std::vector<std::uint32_t>> LightIndexList::read() const {
   for (std::uint32_t b = 0; b < bins_; ++b) {
     const std::uint32_t offset = ranges[b * 2], count = ranges[b * 2 + 1];
     for (std::uint32_t i = 0; i < count && offset + i < capacity_; ++i) lists[b].push_back(indices[offset + i]);
-    std::sort(lists[b].begin(), lists[b].end());
   }
   return lists;
+}
+
+std::vector<std::uint32_t> LightIndexList::read_overflow() const {
+  Total total;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gfx::read_buffer(total_.id(), 0, sizeof total, &total);
+  std::vector<std::uint32_t> lights(std::min(total.overflow_lights, light_capacity_));
+  if (!lights.empty()) gfx::read_buffer(overflow_.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(std::uint32_t)), lights.data());
+  std::sort(lights.begin(), lights.end());
+  return lights;
 }
 
 }  // namespace atrium::lighting

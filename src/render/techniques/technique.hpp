@@ -83,7 +83,8 @@ class LightingTechnique {
   // Technique-specific controls for the overlay; most techniques have none.
   virtual void draw_ui() {}
   // Techniques with light lists report their size and how many frames' lists
-  // did not fit (their overflowed bins shaded every light; the list grew), as
+  // did not fit (the lights that did not fit were shaded wherever they reach;
+  // the list grew), as
   // far as the GPU has reported them: asking takes in what has arrived and
   // never waits.
   struct ListStats {

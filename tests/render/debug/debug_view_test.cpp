@@ -255,8 +255,8 @@ INSTANTIATE_TEST_SUITE_P(Modes, LightListView, ::testing::Values("tiled-deferred
                            return name;
                          });
 
-TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
-  World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .size = kSize});
+TEST_F(DebugViewRender, LightListViewMarksWhereLightsThatOverflowedReach) {
+  World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .size = kSize, .light_radius = 0.25f});
   world.registry().resource<RendererSettings>().debug_view = "light-lists";
   auto magenta_pixels = [&] {
     const assets::Image image = world.renderer().read_output();
@@ -266,9 +266,13 @@ TEST_F(DebugViewRender, LightListViewMarksTheBinsThatOverflowedThisFrame) {
     }
     return magenta;
   };
-  world.frame(0.0);  // the list starts small: this frame's lists overflow it
+  world.frame(0.0);
+  world.frame(0.0);
+  EXPECT_EQ(magenta_pixels(), 0);
+  world.set_light_radius(4.0f);  // the lists were sized for small lights: many overflow this frame
+  world.frame(0.0);
   EXPECT_GT(magenta_pixels(), 0);
-  world.frame(0.0);  // the first frame's total has arrived: the list grew before this one
+  world.frame(0.0);  // the overflowed frame's total has arrived: the list grew before this one
   EXPECT_EQ(world.renderer().stats().light_list_overflows, 1u);
   EXPECT_EQ(magenta_pixels(), 0);
 }

@@ -1,7 +1,7 @@
 // The cluster grid: the GPU's light lists equal a CPU computation of the same
 // grid (as sets), every depth maps to a valid slice in GLSL and C++ alike and
-// each --z-slicing scheme cuts where it says, lists grow instead of dropping
-// lights, and --active-clusters changes no pixel.
+// each --z-slicing scheme cuts where it says, a list's first frame sizes it
+// without losing a light, and --active-clusters changes no pixel.
 #include <algorithm>
 #include <array>
 #include <map>
@@ -106,21 +106,23 @@ TEST_F(ClusterGridTest, EachSlicingSchemeCutsDepthWhereItSays) {
   }
 }
 
-TEST_F(ClusterGridTest, AssignmentOverSeveralLightChunksEqualsTheCpuInLightOrder) {
-  // More lights than one assignment invocation tests (kAssignLightChunk), small
-  // enough to keep the lists short: the chunks' ranges must join up in order.
-  constexpr std::uint32_t kLights = 2 * lighting::kAssignLightChunk + 5000;
+TEST_F(ClusterGridTest, ManyLightsEqualTheCpuInLightOrder) {
+  // Lights in hundreds of work groups write themselves into the lists in
+  // whatever order their atomics run; the lists must still equal the CPU's,
+  // light order included (the sort), long and short lists alike.
+  constexpr std::uint32_t kLights = 40000;
   World world({.scene = "atrium", .lights = kLights, .mode = "clustered-forward", .size = {96, 54}, .light_radius = 0.4f});
   world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   draw_settled(world);
-  std::size_t from_last_chunk = 0;
+  std::size_t longest = 0, late_lights = 0;
   for (const auto& list : expect_lists_equal_cpu(world)) {
     EXPECT_TRUE(std::is_sorted(list.begin(), list.end())) << "a cluster lists its lights in order";
-    from_last_chunk += static_cast<std::size_t>(
-        std::count_if(list.begin(), list.end(), [](std::uint32_t l) { return l >= 2 * lighting::kAssignLightChunk; }));
+    longest = std::max(longest, list.size());
+    late_lights += static_cast<std::size_t>(std::count_if(list.begin(), list.end(), [](std::uint32_t l) { return l >= kLights - 5000; }));
   }
-  EXPECT_GT(from_last_chunk, 100u) << "the third chunk's lights reach clusters too";
+  EXPECT_GT(longest, 48u) << "some lists are long enough for the group sort";
+  EXPECT_GT(late_lights, 100u) << "the last lights reach clusters too";
 }
 
 TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
@@ -190,24 +192,27 @@ TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
   }
 }
 
-TEST_F(ClusterGridTest, ListsGrowInsteadOfDroppingLights) {
+TEST_F(ClusterGridTest, AListsFirstFrameSizesItAndLosesNoLight) {
+  // 1024 lights need far more entries than the first guess (four per light):
+  // with no earlier total to go by, the first frame reads its own back (one
+  // counted wait) and runs again; the frames after never wait.
   constexpr glm::ivec2 kSize{96, 54};
-  World world({.scene = "atrium", .lights = 1024u, .mode = "forward", .size = kSize});
+  // Occlusion culling still reads depth back (issue 30 item 3): off, to count the lists' waits alone.
+  World world({.scene = "atrium", .lights = 1024u, .mode = "forward", .size = kSize, .occlusion_culling = false});
   world.frame(0.0);
   const assets::Image reference = world.renderer().read_output();
   world.set_mode("clustered-deferred");
   world.frame(0.0);
-  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << "no light was lost in the frame that overflowed";
-  // The first frame's total arrives in the second, which grows the list first.
-  world.frame(0.0);
+  EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << "no light was lost in the first frame";
+  EXPECT_EQ(world.renderer().stats().gpu_waits, 1u) << "the first frame sized its lists itself";
   const lighting::ClusterGrid& grid = grid_of(world);
-  EXPECT_GE(grid.list().overflow_frames(), 1u) << "1024 lights overfill the initial list";
+  EXPECT_GT(grid.list().last_total(), 1024u * lighting::kFirstEntriesPerLight);
   EXPECT_GE(grid.list().capacity(), grid.list().last_total());
+  world.frame(0.0);
+  world.frame(0.0);
+  EXPECT_EQ(world.renderer().stats().gpu_waits, 0u);
+  EXPECT_EQ(grid_of(world).list().overflow_frames(), 0u) << "nothing overflowed";
   EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr);
-  const std::uint32_t overflows = grid.list().overflow_frames();
-  world.frame(0.0);
-  world.frame(0.0);
-  EXPECT_EQ(grid_of(world).list().overflow_frames(), overflows) << "the grown list fits the next frames";
 }
 
 TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {

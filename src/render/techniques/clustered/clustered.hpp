@@ -39,7 +39,7 @@ class ClusteredTechnique final : public LightingTechnique {
   bool pixel_bounds_;
   bool active_only_;
   ClusterGrid grid_;
-  ClusterAssignPrograms assign_;
+  LightScatterPrograms assign_;
   gfx::ShaderProgram& mark_;
   gfx::ShaderProgram& mark_blended_;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches

@@ -4,13 +4,17 @@
 #include "render/frame/scene_passes.hpp"
 
 namespace atrium::lighting {
+namespace {
+constexpr GLuint kTileBoundsBinding = 4;
+}  // namespace
 
 TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
     : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
-      assign_(gpu.shaders().get({"tiled/assign.comp"})),
+      bounds_(gpu.shaders().get({"tiled/tile_bounds.comp"})),
+      assign_(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp")),
       lighting_(gpu.shaders(), {"post/fullscreen.vert", "tiled/lighting.frag"}, {}, options.msaa),
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
-      assign_blended_(gpu.shaders().get({"tiled/assign.comp"}, {{"BLENDED"}})),
+      blended_bounds_(gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
@@ -18,26 +22,18 @@ void TiledTechnique::resize(const FrameTargets& targets) {
   tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
   list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
   blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
-  for (gfx::ShaderProgram* program : {&assign_, &assign_blended_, &blended_}) program->set("u_tiles", tiles_);
+  tile_bounds_ = gfx::create_buffer();
+  glNamedBufferStorage(tile_bounds_.id(), static_cast<GLsizeiptr>(std::size_t{tiles_.x} * tiles_.y * sizeof(TileBounds)), nullptr, 0);
+  for (gfx::ShaderProgram* program : {&bounds_, &blended_bounds_, &assign_.count, &assign_.write, &blended_}) program->set("u_tiles", tiles_);
   lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
-  set_capacity(list_->capacity());
-  set_blended_capacity(blended_list_->capacity());
 }
 
-void TiledTechnique::set_capacity(std::uint32_t capacity) {
-  assign_.set("u_list_capacity", capacity);
-  lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_list_capacity", capacity); });
-}
-
-void TiledTechnique::set_blended_capacity(std::uint32_t capacity) {
-  assign_blended_.set("u_list_capacity", capacity);
-  blended_.set("u_list_capacity", capacity);
-}
-
-void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
-                                   const std::function<void(std::uint32_t)>& set_capacity) {
-  assign.use();
-  list.assign(light_count, [&] { glDispatchCompute(tiles_.x, tiles_.y, 1); }, set_capacity);
+void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& bounds, std::uint32_t light_count) {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id());
+  bounds.use();
+  glDispatchCompute(tiles_.x, tiles_.y, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  list.assign(light_count, assign_, [&] { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id()); });
 }
 
 void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
@@ -50,7 +46,7 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
     pass.write(lists, render::Access::Storage);
   }, [this, &frame](const render::PassResources& res) {
     gbuffer_.bind_textures(res);
-    assign_lights(*list_, assign_, static_cast<std::uint32_t>(frame.lights.size()), [&](std::uint32_t capacity) { set_capacity(capacity); });
+    assign_lights(*list_, bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   });
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
@@ -90,8 +86,7 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
     draw_items(frame.draws.blended);
     glBindTextureUnit(0, targets.depth_stencil);
     glBindTextureUnit(1, res.texture(front_depth_));
-    assign_lights(*blended_list_, assign_blended_, static_cast<std::uint32_t>(frame.lights.size()),
-                  [&](std::uint32_t capacity) { set_blended_capacity(capacity); });
+    assign_lights(*blended_list_, blended_bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   }
 }
 

@@ -1,12 +1,12 @@
 // Tiled deferred shading (mode `tiled-deferred`): after the G-buffer pass, a
-// compute pass over 16x16-pixel tiles takes each tile's depth bounds from the
-// G-buffer's positions (the points the lighting pass shades), culls the lights against the tile's frustum and writes per-tile
-// light lists; the lighting pass shades each pixel with its tile's lights.
+// compute pass over 16x16-pixel tiles takes each tile's frustum and depth
+// bounds from the G-buffer's positions (the points the lighting pass shades),
+// then each light writes itself into the lists of the tiles it touches; the
+// lighting pass shades each pixel with its tile's lights.
 // Blended surfaces get lists of their own, bounded by the depths of the glass in
 // front of each tile's opaque surfaces, and are shaded forward from them.
 #pragma once
 
-#include <functional>
 #include <memory>
 
 #include "render/lighting/gbuffer.hpp"
@@ -16,6 +16,13 @@
 namespace atrium::lighting {
 
 inline constexpr int kTileSize = 16;
+
+// std430 twin of TileBounds in shaders/tiled/tiles.glsl.
+struct TileBounds {
+  glm::vec4 planes[4];  // side planes through the eye, normals inward (view space)
+  glm::vec4 depths;     // x nearest, y farthest view depth; z 1 when the tile holds nothing
+};
+static_assert(sizeof(TileBounds) == 80, "must match TileBounds in shaders/tiled/tiles.glsl");
 
 class TiledTechnique final : public LightingTechnique {
  public:
@@ -31,26 +38,24 @@ class TiledTechnique final : public LightingTechnique {
   [[nodiscard]] ListStats light_lists() override;
 
  private:
-  // Give the programs that read the opaque (blended) list its new capacity.
-  void set_capacity(std::uint32_t capacity);
-  void set_blended_capacity(std::uint32_t capacity);
-  // Culls `light_count` lights into `list` with `assign`; `set_capacity` keeps
-  // the programs that read the list in step when it grows.
-  void assign_lights(LightIndexList& list, gfx::ShaderProgram& assign, std::uint32_t light_count,
-                     const std::function<void(std::uint32_t)>& set_capacity);
+  // Takes the tiles' bounds with `bounds` (its inputs bound), then culls
+  // `light_count` lights into `list` against them.
+  void assign_lights(LightIndexList& list, gfx::ShaderProgram& bounds, std::uint32_t light_count);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
   // then their lists (their forward shading reads those lists).
   void cull_for_blended(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
 
   gfx::ShaderProgram& geometry_;
-  gfx::ShaderProgram& assign_;
+  gfx::ShaderProgram& bounds_;          // tiled/tile_bounds.comp, from the G-buffer
+  LightScatterPrograms assign_;
   SampleRatePrograms lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
-  gfx::ShaderProgram& assign_blended_;
+  gfx::ShaderProgram& blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
   gfx::ShaderProgram& blended_;         // forward shading from the blended lists
   GBuffer gbuffer_;
   glm::uvec2 tiles_{0};
   std::unique_ptr<LightIndexList> list_, blended_list_;
+  gfx::Buffer tile_bounds_;             // per tile: TileBounds (shaders/tiled/tiles.glsl)
   bool blended_listed_ = false;         // this frame filled blended_list_
   render::ResourceId front_depth_;      // this frame's opaque depth with blended surfaces drawn over it
 };
