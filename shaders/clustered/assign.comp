@@ -77,6 +77,8 @@ uint for_each_bin(vec4 sphere) {
   float reach = sphere.w;
   if (!everywhere) {
     float near_depth = -sphere.z - sphere.w, far_depth = -sphere.z + sphere.w;
+    // Wholly behind the near plane (less a pixel box's pad): no box is there.
+    if (far_depth < u_near * 0.5) return 0u;
     reach = sphere.w + 2.0 * pixel_pad(far_depth);
     // One slice more on each side: rounding at slice boundaries and the pad.
     first_slice = uint(max(int(cluster_slice(near_depth)) - 1, 0));

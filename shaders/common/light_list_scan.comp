@@ -1,7 +1,7 @@
 #version 450 core
-// Reads each bin's light count (light_scatter.glsl's STEP_COUNT), writes each
+// Reads each bin's light count (light_scatter.glsl's count step), writes each
 // bin's range of the light index array (exclusive prefix sums: bins follow
-// each other) and turns the counts into the cursors STEP_WRITE advances; also
+// each other) and turns the counts into the cursors its write step advances; also
 // the longest list, and lists the bins too long for one invocation to sort
 // (light_list_sort.comp). One work group: bins number thousands, not millions.
 layout(local_size_x = 256) in;

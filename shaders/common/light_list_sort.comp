@@ -1,6 +1,6 @@
 #version 450 core
 // Puts each bin's range of the light index array in light order after
-// light_scatter.glsl's STEP_WRITE filled it in whatever order its atomics
+// light_scatter.glsl's write step filled it in whatever order its atomics
 // ran: shading then sums a bin's lights in the order forward shading does
 // (the same pictures, run after run), and the shadowed lights, which the
 // ShadowAtlas moved to the front, come first as shading's loops expect.

@@ -1,15 +1,18 @@
 // Light assignment that costs what the lights touch, not lights times bins:
 // one invocation per light visits only the bins its sphere may reach (the
 // including shader's for_each_bin, which calls visit_bin for every bin whose
-// test the light passes) in two dispatches around a scan (LightIndexList):
-//   STEP_COUNT  adds one to the count of each bin the light touches, then
+// test the light passes) in two dispatches of one program around a scan
+// (LightIndexList), told apart by u_step, so that both visit exactly the same
+// bins (two compilations could round a test differently):
+//   count step  adds one to the count of each bin the light touches, then
 //               reserves that many entries of the array with one atomic add
 //               (the demand); a light whose entries would end past the
 //               array's capacity takes its counts back and goes to the
 //               overflow list instead, shaded wherever it reaches
 //               (common/list_shading.glsl), so none is lost.
-//   STEP_WRITE  writes the light into each bin's range at the bin's cursor
-//               (light_list_scan.comp turned counts into cursors);
+//   write step  writes the light into each bin's range at the bin's cursor
+//               (light_list_scan.comp turned counts into cursors), never
+//               past the bin's range;
 //               light_list_sort.comp then puts each range in light order.
 layout(local_size_x = 64) in;
 
@@ -17,10 +20,13 @@ layout(local_size_x = 64) in;
 #include "common/lights.glsl"
 #include "common/light_lists.glsl"
 
-// Per bin: STEP_COUNT's count, turned by the scan into the cursor STEP_WRITE advances.
+// Per bin: the count step's count, turned by the scan into the cursor the write step advances.
 layout(std430, binding = 7) buffer BinCounts { uint u_bin_counts[]; };
-// Per light: 1 where its entries fit this frame's array (STEP_COUNT decides, STEP_WRITE reads).
+// Per light: 1 where its entries fit this frame's array (the count step decides, the write step reads).
 layout(std430, binding = 14) buffer LightFits { uint u_light_fits[]; };
+
+const uint kStepCount = 0u, kStepWrite = 1u;
+uniform uint u_step;
 
 const uint kVisitAdd = 0u, kVisitTakeBack = 1u, kVisitWrite = 2u;
 uint g_visit = kVisitAdd;
@@ -32,7 +38,9 @@ void visit_bin(uint bin) {
   } else if (g_visit == kVisitTakeBack) {
     atomicAdd(u_bin_counts[bin], 0xffffffffu);
   } else {
-    u_light_indices[atomicAdd(u_bin_counts[bin], 1u)] = g_light;
+    uint slot = atomicAdd(u_bin_counts[bin], 1u);
+    LightRange range = u_light_ranges[bin];
+    if (slot - range.offset < range.count) u_light_indices[slot] = g_light;
   }
 }
 
@@ -51,11 +59,12 @@ void main() {
   if (light >= u_light_count) return;
   vec4 sphere = view_sphere(u_lights[light]);
   g_light = light;
-#ifdef STEP_WRITE
-  if (u_light_fits[light] == 0u) return;
-  g_visit = kVisitWrite;
-  for_each_bin(sphere);
-#else
+  if (u_step == kStepWrite) {
+    if (u_light_fits[light] == 0u) return;
+    g_visit = kVisitWrite;
+    for_each_bin(sphere);
+    return;
+  }
   g_visit = kVisitAdd;
   uint bins = for_each_bin(sphere);
   bool fits = true;
@@ -72,5 +81,4 @@ void main() {
     for_each_bin(sphere);
     u_overflow_lights[atomicAdd(u_overflow_count, 1u)] = light;
   }
-#endif
 }

@@ -18,11 +18,13 @@ bool touches(vec4 sphere, TileBounds tile) {
 
 // The tiles under the screen rectangle of the sphere's view-space box (one
 // tile more on each side, for rounding), or every tile when the box reaches
-// the eye's plane, where projection no longer bounds it.
-void tile_rect(vec4 sphere, out uvec2 lo, out uvec2 hi) {
+// the eye's plane, where projection no longer bounds it; false for a sphere
+// wholly behind the eye, which no tile's depth bounds (never negative) admit.
+bool tile_rect(vec4 sphere, out uvec2 lo, out uvec2 hi) {
   lo = uvec2(0u);
   hi = u_tiles - 1u;
-  if (sphere.w < 0.0 || !(sphere.z + sphere.w < -1e-4)) return;
+  if (sphere.w >= 0.0 && sphere.z - sphere.w > 0.0) return false;
+  if (sphere.w < 0.0 || !(sphere.z + sphere.w < -1e-4)) return true;
   vec2 ndc_lo = vec2(1e30), ndc_hi = vec2(-1e30);
   for (int corner = 0; corner < 8; ++corner) {
     vec3 offset = vec3((corner & 1) != 0 ? 1.0 : -1.0, (corner & 2) != 0 ? 1.0 : -1.0, (corner & 4) != 0 ? 1.0 : -1.0);
@@ -31,17 +33,18 @@ void tile_rect(vec4 sphere, out uvec2 lo, out uvec2 hi) {
     ndc_lo = min(ndc_lo, ndc);
     ndc_hi = max(ndc_hi, ndc);
   }
-  if (any(isnan(ndc_lo)) || any(isnan(ndc_hi))) return;
+  if (any(isnan(ndc_lo)) || any(isnan(ndc_hi))) return true;
   vec2 tiles = vec2(u_tiles);
   vec2 first = clamp(floor((ndc_lo * 0.5 + 0.5) * u_viewport_size / 16.0) - 1.0, vec2(0.0), tiles - 1.0);
   vec2 last = clamp(floor((ndc_hi * 0.5 + 0.5) * u_viewport_size / 16.0) + 1.0, vec2(0.0), tiles - 1.0);
   lo = uvec2(first);
   hi = uvec2(last);
+  return true;
 }
 
 uint for_each_bin(vec4 sphere) {
   uvec2 lo, hi;
-  tile_rect(sphere, lo, hi);
+  if (!tile_rect(sphere, lo, hi)) return 0u;
   uint visited = 0u;
   for (uint y = lo.y; y <= hi.y; ++y) {
     for (uint x = lo.x; x <= hi.x; ++x) {

@@ -199,7 +199,15 @@ int run_bench_command(const CliOptions& options) {
       char time[32];
       std::snprintf(time, sizeof time, "%.2f ms", row.median_ms);
       outcome = time + (", " + std::to_string(row.gpu_waits) + " GPU waits");
-      if (!row.stopped.empty()) outcome += " (stopped: " + row.stopped + ")";
+      if (!row.stopped.empty()) {
+        // Where the slow frame went, should the sweep not live to write its tables.
+        std::string passes;
+        for (const gfx::PassTime& pass : row.pass_medians) {
+          std::snprintf(time, sizeof time, " %.1f ms", pass.milliseconds);
+          passes += (passes.empty() ? "" : ", ") + pass.name + time;
+        }
+        outcome += " (stopped: " + row.stopped + "; passes: " + passes + ")";
+      }
     }
     std::fprintf(stderr, "bench %zu/%zu: %s, %u lights, view %d: %s\n", done, total, row.mode.c_str(), row.lights, row.view, outcome.c_str());
   });

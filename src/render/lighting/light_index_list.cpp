@@ -12,6 +12,8 @@
 namespace atrium::lighting {
 namespace {
 constexpr GLuint kScatterGroup = 64, kSortGroupBins = 64, kMaxGroups = 65535;
+// u_step in shaders/common/light_scatter.glsl.
+constexpr std::uint32_t kStepCount = 0, kStepWrite = 1;
 // LongBins in shaders/common/light_list_sort.glsl: the dispatch's size, then the count.
 constexpr std::size_t kLongBinsHeader = 4;
 }  // namespace
@@ -41,12 +43,8 @@ LightIndexList::LightIndexList(std::uint32_t bins)
 }
 
 LightScatterPrograms LightIndexList::programs(gfx::ShaderLibrary& shaders, const std::string& source, std::vector<gfx::ShaderDefine> defines) {
-  auto step = [&](const char* name) -> gfx::ShaderProgram& {
-    std::vector<gfx::ShaderDefine> with_step = defines;
-    with_step.push_back({name});
-    return shaders.get({source}, with_step);
-  };
-  return {step("STEP_COUNT"), step("STEP_WRITE"), shaders.get({"common/light_list_scan.comp"}),
+  gfx::ShaderProgram& scatter = shaders.get({source}, defines);
+  return {scatter, shaders.get({"common/light_list_scan.comp"}),
           shaders.get({"common/light_list_sort.comp"}, {{"SHORT"}}), shaders.get({"common/light_list_sort.comp"})};
 }
 
@@ -122,7 +120,8 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   if (light_groups > 0) {
-    programs.count.use();
+    programs.scatter.use();
+    programs.scatter.set("u_step", kStepCount);
     glDispatchCompute(light_groups, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -131,7 +130,8 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   if (light_groups > 0) {
-    programs.write.use();
+    programs.scatter.use();
+    programs.scatter.set("u_step", kStepWrite);
     glDispatchCompute(light_groups, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     const GLuint sort_groups = (bins_ + kSortGroupBins - 1) / kSortGroupBins;

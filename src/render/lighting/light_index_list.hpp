@@ -55,12 +55,11 @@ struct LightBins {
   GLuint grid_uniforms = 0;        // Clusters: the grid's uniform block (kClusterUniformBinding)
 };
 
-// A technique's two assignment steps (its shader with STEP_COUNT and
-// STEP_WRITE, including common/light_scatter.glsl) and the list's own scan
-// and sorts (shaders/common/light_list_*.comp).
+// A technique's assignment shader (including common/light_scatter.glsl: one
+// program run twice, its count and write steps) and the list's own scan and
+// sorts (shaders/common/light_list_*.comp).
 struct LightScatterPrograms {
-  gfx::ShaderProgram& count;
-  gfx::ShaderProgram& write;
+  gfx::ShaderProgram& scatter;
   gfx::ShaderProgram& scan;
   gfx::ShaderProgram& sort_short;
   gfx::ShaderProgram& sort_long;
