@@ -70,41 +70,69 @@ uvec2 cell_run(float lo, float hi, float d0, float d1, float scale, uint cells) 
   return uvec2(first, last);
 }
 
-uint for_each_bin(vec4 sphere) {
-  bool everywhere = sphere.w < 0.0;
-  uint first_slice = 0u, last_slice = u_grid.z - 1u;
-  // How far a box may reach past its grid box: pixel boxes are padded.
-  float reach = sphere.w;
-  if (!everywhere) {
-    float near_depth = -sphere.z - sphere.w, far_depth = -sphere.z + sphere.w;
-    // Wholly behind the near plane (less a pixel box's pad): no box is there.
-    if (far_depth < u_near * 0.5) return 0u;
-    reach = sphere.w + 2.0 * pixel_pad(far_depth);
-    // One slice more on each side: rounding at slice boundaries and the pad.
-    first_slice = uint(max(int(cluster_slice(near_depth)) - 1, 0));
-    last_slice = min(cluster_slice(far_depth) + 1u, u_grid.z - 1u);
-  }
-  uint visited = 0u;
+// The slices a light spans, and how far a box may reach past its grid box
+// (pixel boxes are padded); false when no cluster can hold it.
+bool slice_range(vec4 sphere, out uint first_slice, out uint last_slice, out float reach) {
+  first_slice = 0u;
+  last_slice = u_grid.z - 1u;
+  reach = sphere.w;
+  if (sphere.w < 0.0) return true;
+  float near_depth = -sphere.z - sphere.w, far_depth = -sphere.z + sphere.w;
+  // Wholly behind the near plane (less a pixel box's pad): no box is there.
+  if (far_depth < u_near * 0.5) return false;
+  reach = sphere.w + 2.0 * pixel_pad(far_depth);
+  // One slice more on each side: rounding at slice boundaries and the pad.
+  first_slice = uint(max(int(cluster_slice(near_depth)) - 1, 0));
+  last_slice = min(cluster_slice(far_depth) + 1u, u_grid.z - 1u);
+  return true;
+}
+
+// The columns (x) and rows (y) of slice z whose boxes the light may reach.
+void slice_cells(vec4 sphere, float reach, uint z, out uvec2 lo, out uvec2 hi) {
+  lo = uvec2(0u);
+  hi = u_grid.xy - 1u;
+  if (sphere.w < 0.0) return;
+  // The slice's depths, from any of its boxes.
+  ClusterBounds slice = u_bounds[cluster_at(0u, 0u, z)];
+  float d0 = -slice.hi.z, d1 = -slice.lo.z;
+  uvec2 columns = cell_run(sphere.x - reach, sphere.x + reach, d0, d1, 1.0 / u_projection[0][0], u_grid.x);
+  uvec2 rows = cell_run(sphere.y - reach, sphere.y + reach, d0, d1, 1.0 / u_projection[1][1], u_grid.y);
+  lo = uvec2(columns.x, rows.x);
+  hi = uvec2(columns.y, rows.y);
+}
+
+uint cells_in(uvec2 lo, uvec2 hi) { return lo.x > hi.x || lo.y > hi.y ? 0u : (hi.x - lo.x + 1u) * (hi.y - lo.y + 1u); }
+
+// The candidates are each slice's run of columns and rows, numbered slice by
+// slice and row by row. Their count is bounded by the slices times the first
+// slice's cells: the nearest slice sees the light widest.
+uint candidate_count(vec4 sphere) {
+  uint first_slice, last_slice;
+  float reach;
+  if (!slice_range(sphere, first_slice, last_slice, reach)) return 0u;
+  uvec2 lo, hi;
+  slice_cells(sphere, reach, first_slice, lo, hi);
+  return (last_slice - first_slice + 1u) * cells_in(lo, hi);
+}
+
+uint for_each_bin(vec4 sphere, uint first, uint stride) {
+  uint first_slice, last_slice;
+  float reach;
+  if (!slice_range(sphere, first_slice, last_slice, reach)) return 0u;
+  uint visited = 0u, base = 0u;  // base: the number of the slice's first candidate
   for (uint z = first_slice; z <= last_slice; ++z) {
-    uvec2 lo = uvec2(0u), hi = u_grid.xy - 1u;
-    if (!everywhere) {
-      // The slice's depths, from any of its boxes.
-      ClusterBounds slice = u_bounds[cluster_at(0u, 0u, z)];
-      float d0 = -slice.hi.z, d1 = -slice.lo.z;
-      uvec2 columns = cell_run(sphere.x - reach, sphere.x + reach, d0, d1, 1.0 / u_projection[0][0], u_grid.x);
-      uvec2 rows = cell_run(sphere.y - reach, sphere.y + reach, d0, d1, 1.0 / u_projection[1][1], u_grid.y);
-      lo = uvec2(columns.x, rows.x);
-      hi = uvec2(columns.y, rows.y);
+    uvec2 lo, hi;
+    slice_cells(sphere, reach, z, lo, hi);
+    uint width = hi.x - lo.x + 1u, count = cells_in(lo, hi);
+    // This slice's first candidate numbered first + k * stride.
+    for (uint c = (first + stride - base % stride) % stride; c < count; c += stride) {
+      uint cluster = cluster_at(lo.x + c % width, lo.y + c / width, z);
+      ClusterBounds box;
+      if (!cluster_box(cluster, box) || !touches(sphere, box)) continue;
+      visit_bin(cluster);
+      ++visited;
     }
-    for (uint y = lo.y; y <= hi.y; ++y) {
-      for (uint x = lo.x; x <= hi.x; ++x) {
-        uint cluster = cluster_at(x, y, z);
-        ClusterBounds box;
-        if (!cluster_box(cluster, box) || !touches(sphere, box)) continue;
-        visit_bin(cluster);
-        ++visited;
-      }
-    }
+    base += count;
   }
   return visited;
 }

@@ -42,17 +42,23 @@ bool tile_rect(vec4 sphere, out uvec2 lo, out uvec2 hi) {
   return true;
 }
 
-uint for_each_bin(vec4 sphere) {
+// The candidates are the rectangle's tiles, numbered row by row.
+uint candidate_count(vec4 sphere) {
   uvec2 lo, hi;
   if (!tile_rect(sphere, lo, hi)) return 0u;
+  return (hi.x - lo.x + 1u) * (hi.y - lo.y + 1u);
+}
+
+uint for_each_bin(vec4 sphere, uint first, uint stride) {
+  uvec2 lo, hi;
+  if (!tile_rect(sphere, lo, hi)) return 0u;
+  uint width = hi.x - lo.x + 1u, count = width * (hi.y - lo.y + 1u);
   uint visited = 0u;
-  for (uint y = lo.y; y <= hi.y; ++y) {
-    for (uint x = lo.x; x <= hi.x; ++x) {
-      uint tile = y * u_tiles.x + x;
-      if (!touches(sphere, u_tile_bounds[tile])) continue;
-      visit_bin(tile);
-      ++visited;
-    }
+  for (uint c = first; c < count; c += stride) {
+    uint tile = (lo.y + c / width) * u_tiles.x + lo.x + c % width;
+    if (!touches(sphere, u_tile_bounds[tile])) continue;
+    visit_bin(tile);
+    ++visited;
   }
   return visited;
 }

@@ -13,9 +13,11 @@ namespace atrium::lighting {
 namespace {
 constexpr GLuint kScatterGroup = 64, kSortGroupBins = 64, kMaxGroups = 65535;
 // u_step in shaders/common/light_scatter.glsl.
-constexpr std::uint32_t kStepCount = 0, kStepWrite = 1;
-// LongBins in shaders/common/light_list_sort.glsl: the dispatch's size, then the count.
-constexpr std::size_t kLongBinsHeader = 4;
+constexpr std::uint32_t kStepCount = 0, kStepCountLarge = 1, kStepWrite = 2, kStepWriteLarge = 3;
+// LongBins in shaders/common/light_list_sort.glsl and BigLights in
+// light_scatter.glsl: the dispatch's size, then the count, then the list.
+constexpr std::size_t kListHeader = 4;
+constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
 }  // namespace
 
 LightIndexList::LightIndexList(std::uint32_t bins)
@@ -31,7 +33,7 @@ LightIndexList::LightIndexList(std::uint32_t bins)
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * 2 * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(bin_counts_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kLongBinsHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr,
+  glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kListHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr,
                        GL_DYNAMIC_STORAGE_BIT);
   // Until a frame runs, the lists are empty and nothing overflowed.
   const std::uint32_t zero = 0;
@@ -44,7 +46,8 @@ LightIndexList::LightIndexList(std::uint32_t bins)
 
 LightScatterPrograms LightIndexList::programs(gfx::ShaderLibrary& shaders, const std::string& source, std::vector<gfx::ShaderDefine> defines) {
   gfx::ShaderProgram& scatter = shaders.get({source}, defines);
-  return {scatter, shaders.get({"common/light_list_scan.comp"}),
+  defines.push_back({"LARGE_LIGHTS"});
+  return {scatter, shaders.get({source}, defines), shaders.get({"common/light_list_scan.comp"}),
           shaders.get({"common/light_list_sort.comp"}, {{"SHORT"}}), shaders.get({"common/light_list_sort.comp"})};
 }
 
@@ -60,8 +63,10 @@ void LightIndexList::reserve_lights(std::uint32_t light_count) {
   const auto bytes = static_cast<GLsizeiptr>(std::size_t{light_capacity_} * sizeof(std::uint32_t));
   overflow_ = gfx::create_buffer();
   fits_ = gfx::create_buffer();
+  big_lights_ = gfx::create_buffer();
   glNamedBufferStorage(overflow_.id(), bytes, nullptr, 0);
   glNamedBufferStorage(fits_.id(), bytes, nullptr, 0);
+  glNamedBufferStorage(big_lights_.id(), bytes + static_cast<GLsizeiptr>(kListHeader * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 void LightIndexList::check(const Total& total) const {
@@ -110,19 +115,30 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   glNamedBufferSubData(total_.id(), 0, sizeof start, &start);
   const std::uint32_t zero = 0;
   glClearNamedBufferData(bin_counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  const std::uint32_t no_long_bins[kLongBinsHeader] = {0, 1, 1, 0};
-  glNamedBufferSubData(long_bins_.id(), 0, sizeof no_long_bins, no_long_bins);
+  glNamedBufferSubData(long_bins_.id(), 0, sizeof kEmptyList, kEmptyList);
+  glNamedBufferSubData(big_lights_.id(), 0, sizeof kEmptyList, kEmptyList);
   bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLongBinsBinding, long_bins_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinCountsBinding, bin_counts_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightFitsBinding, fits_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBigLightsBinding, big_lights_.id());
   bind_inputs();
   const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The large lights, a work group each: as many as the count step listed (no read-back).
+  auto large_lights = [&](std::uint32_t step) {
+    programs.scatter_large.use();
+    programs.scatter_large.set("u_step", step);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, big_lights_.id());
+    glDispatchComputeIndirect(0);
+    glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  };
   if (light_groups > 0) {
     programs.scatter.use();
     programs.scatter.set("u_step", kStepCount);
     glDispatchCompute(light_groups, 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    large_lights(kStepCountLarge);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   programs.scan.use();
@@ -133,6 +149,7 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
     programs.scatter.use();
     programs.scatter.set("u_step", kStepWrite);
     glDispatchCompute(light_groups, 1, 1);
+    large_lights(kStepWriteLarge);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     const GLuint sort_groups = (bins_ + kSortGroupBins - 1) / kSortGroupBins;
     programs.sort_short.use();
@@ -177,7 +194,8 @@ void LightIndexList::bind() const {
 }
 
 render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const std::string& name, render::ViewKind view) const {
-  const std::size_t bytes = (static_cast<std::size_t>(bins_) * 3 + capacity_ + 2 * std::size_t{light_capacity_}) * sizeof(std::uint32_t) + sizeof(Total);
+  const std::size_t bytes =
+      (static_cast<std::size_t>(bins_) * 4 + capacity_ + 3 * std::size_t{light_capacity_} + 2 * kListHeader) * sizeof(std::uint32_t) + sizeof(Total);
   return graph.import_buffer(name, ranges_.id(), {bytes}, view);
 }
 

@@ -37,7 +37,7 @@
 namespace atrium::lighting {
 
 inline constexpr GLuint kLightRangesBinding = 2, kLightIndicesBinding = 3, kLightTotalBinding = 5, kBinCountsBinding = 7,
-                        kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
+                        kBigLightsBinding = 12, kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
 
 // Entries per light the array is first sized for, before any total has arrived.
 inline constexpr std::uint32_t kFirstEntriesPerLight = 4;
@@ -56,10 +56,11 @@ struct LightBins {
 };
 
 // A technique's assignment shader (including common/light_scatter.glsl: one
-// program run twice, its count and write steps) and the list's own scan and
-// sorts (shaders/common/light_list_*.comp).
+// program for most lights' steps, one for large lights') and the list's own scan and sorts
+// (shaders/common/light_list_*.comp).
 struct LightScatterPrograms {
   gfx::ShaderProgram& scatter;
+  gfx::ShaderProgram& scatter_large;  // the same with LARGE_LIGHTS
   gfx::ShaderProgram& scan;
   gfx::ShaderProgram& sort_short;
   gfx::ShaderProgram& sort_long;
@@ -125,8 +126,8 @@ class LightIndexList {
   std::uint32_t bins_;
   std::uint64_t max_entries_;  // what GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows
   std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest loop a pixel may run
-  gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_;
-  std::uint32_t light_capacity_ = 0;  // lights overflow_ and fits_ hold
+  gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_, big_lights_;
+  std::uint32_t light_capacity_ = 0;  // lights overflow_, fits_ and big_lights_ hold
   gfx::ReadbackRing totals_;  // each frame's Total on its way back, tagged with its light count
   std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, last_overflow_lights_ = 0;
   std::uint32_t wanted_ = 0;      // the largest total arrived since the array last grew

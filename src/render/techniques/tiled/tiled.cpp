@@ -24,7 +24,7 @@ void TiledTechnique::resize(const FrameTargets& targets) {
   blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
   tile_bounds_ = gfx::create_buffer();
   glNamedBufferStorage(tile_bounds_.id(), static_cast<GLsizeiptr>(std::size_t{tiles_.x} * tiles_.y * sizeof(TileBounds)), nullptr, 0);
-  for (gfx::ShaderProgram* program : {&bounds_, &blended_bounds_, &assign_.scatter, &blended_}) program->set("u_tiles", tiles_);
+  for (gfx::ShaderProgram* program : {&bounds_, &blended_bounds_, &assign_.scatter, &assign_.scatter_large, &blended_}) program->set("u_tiles", tiles_);
   lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
 }
 
