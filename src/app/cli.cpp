@@ -99,8 +99,8 @@ int run_render(const CliOptions& options) {
                 stats.shadows.atlas_size, stats.shadows.atlas_size);
   }
   if (stats.light_list_entries > 0) {
-    std::printf("light lists: %u entries, %u overflowed frames (their lights that did not fit were shaded wherever they reach; the list grew)\n",
-                stats.light_list_entries, stats.light_list_overflows);
+    std::printf("light lists: %u entries, %u overflowed frames%s\n", stats.light_list_entries, stats.light_list_overflows,
+                stats.light_list_overflows > 0 ? " (their lights that did not fit were shaded wherever they reach; the list grew)" : "");
   }
   return kExitOk;
 }
