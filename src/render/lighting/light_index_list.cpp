@@ -124,7 +124,6 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBigLightsBinding, big_lights_.id());
   bind_inputs();
   const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   // The large lights, a work group each: as many as the count step listed (no read-back).
   auto large_lights = [&](std::uint32_t step) {
     programs.scatter_large.use();
