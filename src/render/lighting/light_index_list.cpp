@@ -88,7 +88,6 @@ void LightIndexList::check(const Total& total) const {
 void LightIndexList::take(const Total& total, std::uint32_t light_count, bool drawn) {
   check(total);
   last_total_ = total.entries;
-  last_overflow_lights_ = drawn ? total.overflow_lights : 0;
   if (drawn && total.overflow_lights > 0) ++overflow_frames_;
   wanted_ = std::max(wanted_, total.entries);
   arrived_ = true;
@@ -209,16 +208,6 @@ std::vector<std::vector<std::uint32_t>> LightIndexList::read() const {
     for (std::uint32_t i = 0; i < count && offset + i < capacity_; ++i) lists[b].push_back(indices[offset + i]);
   }
   return lists;
-}
-
-std::vector<std::uint32_t> LightIndexList::read_overflow() const {
-  Total total;
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  gfx::read_buffer(total_.id(), 0, sizeof total, &total);
-  std::vector<std::uint32_t> lights(std::min(total.overflow_lights, light_capacity_));
-  if (!lights.empty()) gfx::read_buffer(overflow_.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(std::uint32_t)), lights.data());
-  std::sort(lights.begin(), lights.end());
-  return lights;
 }
 
 }  // namespace atrium::lighting

@@ -97,11 +97,8 @@ class LightIndexList {
   [[nodiscard]] std::uint32_t last_total() const { return last_total_; }
   // Frames whose lists did not fit, counted as their totals arrive.
   [[nodiscard]] std::uint32_t overflow_frames() const { return overflow_frames_; }
-  // Lights that overflowed in the newest frame whose total arrived.
-  [[nodiscard]] std::uint32_t last_overflow_lights() const { return last_overflow_lights_; }
-  // The lists read back, per bin (for tests; they are in light order), and the overflow list.
+  // The lists read back, per bin (for tests; they are in light order).
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> read() const;
-  [[nodiscard]] std::vector<std::uint32_t> read_overflow() const;
 
  private:
   // The demand, a flag the pass sets when it wrapped past 2^32, the longest
@@ -129,7 +126,7 @@ class LightIndexList {
   gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_, big_lights_;
   std::uint32_t light_capacity_ = 0;  // lights overflow_, fits_ and big_lights_ hold
   gfx::ReadbackRing totals_;  // each frame's Total on its way back, tagged with its light count
-  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0, last_overflow_lights_ = 0;
+  std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0;
   std::uint32_t wanted_ = 0;      // the largest total arrived since the array last grew
   double entries_per_light_ = kFirstEntriesPerLight;  // of the newest total that arrived
   bool arrived_ = false;          // a total has arrived: the list no longer sizes itself in the frame
