@@ -28,7 +28,7 @@ bool store_draco_values(const draco::PointAttribute& attribute, std::size_t poin
 std::vector<std::uint8_t> decode_meshopt(const Document& document, std::size_t view_index, const MemoryBudget& budget) {
   const BufferView& view = document.buffer_views[view_index];
   const MeshoptSource& m = *view.meshopt;
-  const std::string where = "bufferViews[" + std::to_string(view_index) + "] (EXT_meshopt_compression)";
+  const std::string where = (element("bufferViews", view_index) / "extensions" / "EXT_meshopt_compression").str();
   const std::size_t size = m.count * m.byte_stride;  // == view.byte_length, checked when read
   if (size / kMeshoptMaxExpansion > m.byte_length + 4096) {
     throw ImportError(file_of(document) + ": " + where + " decodes to " + format_bytes(static_cast<double>(size)) + " from " +
@@ -56,7 +56,7 @@ std::vector<std::uint8_t> decode_meshopt(const Document& document, std::size_t v
 DecodedDraco decode_draco(const Document& document, const Primitive& primitive, std::span<const std::uint8_t> stream,
                           const std::string& where, const MemoryBudget& budget) {
   const std::string file = file_of(document);
-  const std::string what = where + " (KHR_draco_mesh_compression)";
+  const std::string what = where + "/extensions/KHR_draco_mesh_compression";
   auto fail = [&](const std::string& problem) -> void { throw ImportError(file + ": " + what + " " + problem); };
   const DracoPrimitive& draco_primitive = *primitive.draco;
 

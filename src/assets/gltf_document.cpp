@@ -21,133 +21,6 @@ constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
 constexpr std::uint32_t kChunkJson = 0x4E4F534A;     // "JSON"
 constexpr std::uint32_t kChunkBinary = 0x004E4942;   // "BIN\0"
 
-// Reads typed members of the JSON with the JSON path of each in its errors.
-class Reader {
- public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
-
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const {
-    throw ImportError(file_ + ": " + where + (problem.empty() ? "" : " " + problem));
-  }
-
-  const Json* member(const Json& object, const char* key) const {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-  }
-
-  const Json& object(const Json& j, const std::string& where) const {
-    if (!j.is_object()) fail(where, "is not an object");
-    return j;
-  }
-
-  const Json& array(const Json& j, const std::string& where) const {
-    if (!j.is_array()) fail(where, "is not an array");
-    return j;
-  }
-
-  const Json& object_member(const Json& object, const char* key, const std::string& where) const {
-    const Json* j = member(object, key);
-    if (!j) fail(where + "." + key, "is missing");
-    return this->object(*j, where + "." + key);
-  }
-
-  // An optional array member; empty when absent.
-  const Json& array_member(const Json& object, const char* key, const std::string& where) const {
-    static const Json kEmpty = Json::array();
-    const Json* j = member(object, key);
-    return j ? array(*j, where + "." + key) : kEmpty;
-  }
-
-  std::string string(const Json& object, const char* key, const std::string& where, const std::string& fallback = {}) const {
-    const Json* j = member(object, key);
-    if (!j) return fallback;
-    if (!j->is_string()) fail(where + "." + key, "is not a string");
-    return j->get<std::string>();
-  }
-
-  double number(const Json& object, const char* key, const std::string& where, double fallback) const {
-    const Json* j = member(object, key);
-    if (!j) return fallback;
-    if (!j->is_number()) fail(where + "." + key, "is not a number");
-    const double value = j->get<double>();
-    if (!std::isfinite(value)) fail(where + "." + key, "is not a finite number");
-    return value;
-  }
-
-  bool boolean(const Json& object, const char* key, const std::string& where, bool fallback) const {
-    const Json* j = member(object, key);
-    if (!j) return fallback;
-    if (!j->is_boolean()) fail(where + "." + key, "is not true or false");
-    return j->get<bool>();
-  }
-
-  // A whole number in [min, max]; `fallback` when absent.
-  std::size_t count(const Json& j, const std::string& where, std::size_t min, std::size_t max) const {
-    if (!j.is_number()) fail(where, "is not a number");
-    const double value = j.get<double>();
-    if (!(value >= static_cast<double>(min)) || !(value <= static_cast<double>(max)) || value != std::floor(value)) {
-      fail(where, "is " + j.dump() + ", expected a whole number from " + with_commas(min) + " to " + with_commas(max));
-    }
-    return static_cast<std::size_t>(value);
-  }
-
-  std::size_t count_member(const Json& object, const char* key, const std::string& where, std::size_t min, std::size_t max,
-                           std::optional<std::size_t> fallback = std::nullopt) const {
-    const Json* j = member(object, key);
-    if (!j) {
-      if (!fallback) fail(where + "." + key, "is missing");
-      return *fallback;
-    }
-    return count(*j, where + "." + key, min, max);
-  }
-
-  // An index into an array of `size` elements named `target` ("accessors");
-  // -1 when the member is absent and not required.
-  int index(const Json& object, const char* key, const std::string& where, std::size_t size, const char* target,
-            bool required = false) const {
-    const Json* j = member(object, key);
-    if (!j) {
-      if (required) fail(where + "." + key, "is missing");
-      return -1;
-    }
-    return index_value(*j, where + "." + key, size, target);
-  }
-
-  int index_value(const Json& j, const std::string& where, std::size_t size, const char* target) const {
-    if (!j.is_number()) fail(where, "is not an index");
-    const double value = j.get<double>();
-    if (!(value >= 0.0) || value != std::floor(value) || value >= static_cast<double>(size)) {
-      fail(where, "refers to " + std::string(target) + "[" + j.dump() + "], which does not exist (the file has " +
-                      std::to_string(size) + ")");
-    }
-    return static_cast<int>(value);
-  }
-
-  template <std::size_t N>
-  std::array<double, N> numbers(const Json& object, const char* key, const std::string& where, std::array<double, N> fallback) const {
-    const Json* j = member(object, key);
-    if (!j) return fallback;
-    if (!j->is_array() || j->size() != N) fail(where + "." + key, "is not an array of " + std::to_string(N) + " numbers");
-    std::array<double, N> out{};
-    for (std::size_t i = 0; i < N; ++i) {
-      if (!(*j)[i].is_number() || !std::isfinite((*j)[i].get<double>())) fail(where + "." + key, "holds something other than finite numbers");
-      out[i] = (*j)[i].get<double>();
-    }
-    return out;
-  }
-
-  Json extensions(const Json& object, const std::string& where) const {
-    const Json* j = member(object, "extensions");
-    if (!j) return Json::object();
-    return this->object(*j, where + ".extensions");
-  }
-
-  const std::string& file() const { return file_; }
-
- private:
-  std::string file_;
-};
-
 int base64_value(unsigned char c) {
   if (c >= 'A' && c <= 'Z') return c - 'A';
   if (c >= 'a' && c <= 'z') return c - 'a' + 26;
@@ -243,9 +116,9 @@ class DocumentReader {
 
   Document read() {
     std::error_code ec;
-    if (!fs::is_regular_file(doc_.path, ec)) r_.fail("no such file", "");
+    if (!fs::is_regular_file(doc_.path, ec)) refuse("no such file");
     const std::uintmax_t file_size = fs::file_size(doc_.path, ec);
-    if (ec) r_.fail("cannot be read", "");
+    if (ec) refuse("cannot be read");
     std::ifstream in(doc_.path, std::ios::binary);
     std::uint32_t magic = 0;
     in.read(reinterpret_cast<char*>(&magic), 4);
@@ -258,19 +131,14 @@ class DocumentReader {
   }
 
  private:
-  [[noreturn]] void fail(const std::string& where, const std::string& problem) const { r_.fail(where, problem); }
-  void warn(const std::string& problem) { doc_.warnings.push_back(r_.file() + ": " + problem); }
+  // The file as a whole is refused ("box.glb: is a truncated binary glTF").
+  [[noreturn]] void refuse(const std::string& problem) const { throw ImportError(r_.file() + ": " + problem); }
+  [[noreturn]] void fail(const JsonPointer& where, const std::string& problem) const { r_.fail(where, problem); }
+  void warn(const JsonPointer& where, const std::string& problem) { doc_.warnings.push_back(r_.file() + ": " + where.str() + ": " + problem); }
 
   void parse_json(const char* text, std::size_t size) {
-    try {
-      root_ = Json::parse(text, text + size);
-    } catch (const Json::exception& e) {
-      // parse_error, and out_of_range for numbers beyond a double (1e400).
-      const std::string what = e.what();
-      const std::size_t tag = what.find("] ");
-      fail("not valid JSON (" + (tag == std::string::npos ? what : what.substr(tag + 2)) + ")", "");
-    }
-    if (!root_.is_object()) fail("is not a glTF file (its JSON is not an object)", "");
+    root_ = r_.parse(std::string_view(text, size));
+    if (!root_.is_object()) refuse("is not a glTF file (its JSON is not an object)");
   }
 
   void read_json_text(std::ifstream& in, std::uintmax_t file_size) {
@@ -284,10 +152,10 @@ class DocumentReader {
   void read_glb(std::ifstream& in, std::uintmax_t file_size) {
     std::uint32_t header[3] = {};
     in.read(reinterpret_cast<char*>(header), sizeof header);
-    if (in.gcount() != sizeof header) fail("is a truncated binary glTF (no 12-byte header)", "");
-    if (header[1] != 2) fail("is binary glTF version " + std::to_string(header[1]) + "; Atrium reads version 2", "");
+    if (in.gcount() != sizeof header) refuse("is a truncated binary glTF (no 12-byte header)");
+    if (header[1] != 2) refuse("is binary glTF version " + std::to_string(header[1]) + "; Atrium reads version 2");
     if (header[2] > file_size) {
-      fail("declares a length of " + with_commas(header[2]) + " bytes, but the file has " + with_commas(file_size) + " (truncated?)", "");
+      refuse("declares a length of " + with_commas(header[2]) + " bytes, but the file has " + with_commas(file_size) + " (truncated?)");
     }
     std::size_t offset = 12;
     bool json = false;
@@ -297,10 +165,10 @@ class DocumentReader {
       in.read(reinterpret_cast<char*>(chunk), sizeof chunk);
       const std::size_t length = chunk[0];
       if (length > header[2] - offset - 8) {
-        fail("has a chunk at byte " + with_commas(offset) + " of " + with_commas(length) + " bytes, past the end of the file", "");
+        refuse("has a chunk at byte " + with_commas(offset) + " of " + with_commas(length) + " bytes, past the end of the file");
       }
       if (!json) {
-        if (chunk[1] != kChunkJson) fail("is binary glTF whose first chunk is not JSON", "");
+        if (chunk[1] != kChunkJson) refuse("is binary glTF whose first chunk is not JSON");
         budget_.require(length * 8, "the JSON chunk (" + format_bytes(static_cast<double>(length)) + ")");
         std::string text(length, '\0');
         in.read(text.data(), static_cast<std::streamsize>(length));
@@ -310,39 +178,38 @@ class DocumentReader {
         budget_.require(length, "the BIN chunk");
         binary_chunk_.emplace(length);
         in.read(reinterpret_cast<char*>(binary_chunk_->data()), static_cast<std::streamsize>(length));
-        if (static_cast<std::size_t>(in.gcount()) != length) fail("cannot read its BIN chunk", "");
+        if (static_cast<std::size_t>(in.gcount()) != length) refuse("cannot read its BIN chunk");
       }
       offset += 8 + ((length + 3) & ~std::size_t{3});
     }
-    if (!json) fail("is binary glTF without a JSON chunk", "");
+    if (!json) refuse("is binary glTF without a JSON chunk");
   }
 
   void parse() {
     const Json& root = root_;
-    // Every glTF names its version in asset.version; JSON without it is some
+    const JsonPointer top;
+    // Every glTF names its version in /asset/version; JSON without it is some
     // other document saved as .gltf, refused rather than shown as an empty scene.
     // (An empty version, as tinygltf's issue-416 case writes, is let through.)
-    const Json* asset = r_.member(root, "asset");
-    if (!asset || !asset->is_object() || !r_.member(*asset, "version")) {
-      fail("is not a glTF file: its JSON has no asset.version (every glTF names its version there)", "");
+    const Json* asset = r_.find(root, "asset");
+    if (!asset || !r_.find(*asset, "version")) {
+      refuse("is not a glTF file: its JSON has no /asset/version (every glTF names its version there)");
     }
-    const std::string version = r_.string(*asset, "version", "asset");
-    if (!version.empty() && version[0] != '2') fail("is glTF version " + version + "; Atrium reads glTF 2.0", "");
+    const std::string version = r_.string(*r_.find(*asset, "version"), top / "asset" / "version");
+    if (!version.empty() && version[0] != '2') refuse("is glTF version " + version + "; Atrium reads glTF 2.0");
     for (const char* key : {"extensionsUsed", "extensionsRequired"}) {
       auto& out = std::string(key) == "extensionsUsed" ? doc_.extensions_used : doc_.extensions_required;
-      for (const Json& name : r_.array_member(root, key, "")) {
-        if (!name.is_string()) fail(std::string(key), "holds something other than names");
-        out.push_back(name.get<std::string>());
-      }
+      const Json& names = r_.array_or_empty(root, top, key);
+      for (std::size_t i = 0; i < names.size(); ++i) out.push_back(r_.string(names[i], top / key / i));
     }
     // The sizes of every array first, so that references can be checked as they are read.
-    auto size_of = [&](const char* key) { return r_.array_member(root, key, "").size(); };
-    counts_ = {{"buffers", size_of("buffers")},     {"bufferViews", size_of("bufferViews")}, {"accessors", size_of("accessors")},
-               {"meshes", size_of("meshes")},       {"materials", size_of("materials")},     {"textures", size_of("textures")},
-               {"images", size_of("images")},       {"samplers", size_of("samplers")},       {"nodes", size_of("nodes")},
-               {"scenes", size_of("scenes")}};
-    const Json extensions = r_.extensions(root, "");
-    if (extensions.contains("KHR_lights_punctual")) read_lights(r_.object(extensions["KHR_lights_punctual"], "extensions.KHR_lights_punctual"));
+    for (const char* key : {"buffers", "bufferViews", "accessors", "meshes", "materials", "textures", "images", "samplers", "nodes", "scenes"}) {
+      counts_[key] = r_.array_or_empty(root, top, key).size();
+    }
+    const Json extensions = r_.object_or_empty(root, top, "extensions");
+    if (extensions.contains("KHR_lights_punctual")) {
+      read_lights(r_.object(extensions["KHR_lights_punctual"], top / "extensions" / "KHR_lights_punctual"));
+    }
     read_buffers();
     read_buffer_views();
     read_accessors();
@@ -356,21 +223,31 @@ class DocumentReader {
   }
 
   std::size_t count(const char* key) const { return counts_.at(key); }
+  // A reference into a top-level array; -1 when absent and not required.
+  int index(const Json& object, const JsonPointer& where, const char* key, const char* target, bool required = false) const {
+    const Json* value = r_.find(object, key);
+    if (!value && required) r_.required(object, where, key);
+    return value ? static_cast<int>(r_.index(*value, where / key, count(target), JsonPointer() / target)) : -1;
+  }
+  std::size_t required_index(const Json& object, const JsonPointer& where, const char* key, const char* target) const {
+    return static_cast<std::size_t>(index(object, where, key, target, true));
+  }
 
   // --- buffers ---------------------------------------------------------------
 
   void read_buffers() {
-    const Json& buffers = r_.array_member(root_, "buffers", "");
+    const Json& buffers = r_.array_or_empty(root_, {}, "buffers");
     doc_.buffers.resize(buffers.size());
     for (std::size_t b = 0; b < buffers.size(); ++b) {
-      const std::string where = "buffers[" + std::to_string(b) + "]";
+      const JsonPointer where = element("buffers", b);
       const Json& j = r_.object(buffers[b], where);
       Buffer& buffer = doc_.buffers[b];
-      buffer.byte_length = r_.count_member(j, "byteLength", where, 0, std::numeric_limits<std::uint64_t>::max() / 2);
-      const Json ext = r_.extensions(j, where);
-      const bool fallback = ext.contains("EXT_meshopt_compression") && ext["EXT_meshopt_compression"].is_object() &&
-                            r_.boolean(ext["EXT_meshopt_compression"], "fallback", where + ".extensions.EXT_meshopt_compression", false);
-      if (!r_.member(j, "uri")) {
+      buffer.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 0, std::numeric_limits<std::uint64_t>::max() / 2);
+      const Json ext = r_.object_or_empty(j, where, "extensions");
+      const bool fallback = ext.contains("EXT_meshopt_compression") &&
+                            r_.boolean_or(r_.object(ext["EXT_meshopt_compression"], where / "extensions" / "EXT_meshopt_compression"),
+                                          where / "extensions" / "EXT_meshopt_compression", "fallback", false);
+      if (!r_.find(j, "uri")) {
         if (b == 0 && binary_chunk_) {
           if (buffer.byte_length > binary_chunk_->size()) {
             fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but the BIN chunk holds " +
@@ -387,13 +264,13 @@ class DocumentReader {
         if (buffer.byte_length == 0) continue;
         fail(where, "has no uri and is not the BIN chunk of a binary glTF, so it holds no data");
       }
-      const std::string uri = r_.string(j, "uri", where);
+      const std::string uri = r_.string(j["uri"], where / "uri");
       if (const auto payload = data_uri_payload(uri)) {
         if (base64_size(*payload) < buffer.byte_length) {
           fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but its data URI holds " +
                           with_commas(base64_size(*payload)) + " bytes");
         }
-        budget_.require(base64_size(*payload), where + " (data URI)");
+        budget_.require(base64_size(*payload), where.str() + " (data URI)");
         if (!base64_decode(*payload, buffer.data)) fail(where, "has a data URI that is not valid base64");
         buffer.data.resize(buffer.byte_length);
         continue;
@@ -408,77 +285,83 @@ class DocumentReader {
         fail(where, "declares byteLength " + with_commas(buffer.byte_length) + ", but " + file.filename().string() + " has " +
                         with_commas(ec ? 0 : size) + " bytes");
       }
-      budget_.require(buffer.byte_length, where + " (" + file.filename().string() + ")");
+      budget_.require(buffer.byte_length, where.str() + " (" + file.filename().string() + ")");
       std::string error;
       if (!read_file_prefix(file, buffer.byte_length, buffer.data, error)) fail(where, error);
     }
   }
 
   void read_buffer_views() {
-    const Json& views = r_.array_member(root_, "bufferViews", "");
+    const Json& views = r_.array_or_empty(root_, {}, "bufferViews");
     doc_.buffer_views.resize(views.size());
     for (std::size_t v = 0; v < views.size(); ++v) {
-      const std::string where = "bufferViews[" + std::to_string(v) + "]";
+      const JsonPointer where = element("bufferViews", v);
       const Json& j = r_.object(views[v], where);
       BufferView& view = doc_.buffer_views[v];
-      view.buffer = static_cast<std::size_t>(r_.index(j, "buffer", where, count("buffers"), "buffers", true));
+      view.buffer = required_index(j, where, "buffer", "buffers");
       constexpr std::size_t kMax = std::numeric_limits<std::uint64_t>::max() / 4;
-      view.byte_offset = r_.count_member(j, "byteOffset", where, 0, kMax, 0);
-      view.byte_length = r_.count_member(j, "byteLength", where, 1, kMax);
-      if (r_.member(j, "byteStride")) {
-        view.byte_stride = r_.count_member(j, "byteStride", where, 4, 252);
-        if (view.byte_stride % 4 != 0) fail(where + ".byteStride", "is " + std::to_string(view.byte_stride) + ", not a multiple of 4");
+      view.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMax, 0);
+      view.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMax);
+      if (r_.find(j, "byteStride")) {
+        view.byte_stride = r_.whole(j["byteStride"], where / "byteStride", 4, 252);
+        if (view.byte_stride % 4 != 0) fail(where / "byteStride", "expected a multiple of 4, got " + std::to_string(view.byte_stride));
       }
       const Buffer& buffer = doc_.buffers[view.buffer];
       if (view.byte_offset > buffer.byte_length || view.byte_length > buffer.byte_length - view.byte_offset) {
-        fail(where, "covers bytes " + with_commas(view.byte_offset) + " to " + with_commas(view.byte_offset + view.byte_length) +
-                        " of buffers[" + std::to_string(view.buffer) + "], which has " + with_commas(buffer.byte_length));
+        fail(where, "covers bytes " + with_commas(view.byte_offset) + " to " + with_commas(view.byte_offset + view.byte_length) + " of " +
+                        element("buffers", view.buffer).str() + ", which has " + with_commas(buffer.byte_length));
       }
-      const Json ext = r_.extensions(j, where);
+      const Json ext = r_.object_or_empty(j, where, "extensions");
       if (ext.contains("EXT_meshopt_compression")) {
-        view.meshopt = read_meshopt(r_.object(ext["EXT_meshopt_compression"], where + ".extensions.EXT_meshopt_compression"),
-                                    where + ".extensions.EXT_meshopt_compression", view);
+        const JsonPointer mw = where / "extensions" / "EXT_meshopt_compression";
+        view.meshopt = read_meshopt(r_.object(ext["EXT_meshopt_compression"], mw), mw, view);
       } else if (buffer.fallback_only) {
-        fail(where, "points into buffers[" + std::to_string(view.buffer) +
-                        "], which holds no data (an EXT_meshopt_compression fallback), and is not compressed");
+        fail(where, "points into " + element("buffers", view.buffer).str() +
+                        ", which holds no data (an EXT_meshopt_compression fallback), and is not compressed");
       }
     }
   }
 
-  MeshoptSource read_meshopt(const Json& j, const std::string& where, const BufferView& view) {
+  MeshoptSource read_meshopt(const Json& j, const JsonPointer& where, const BufferView& view) {
     MeshoptSource m;
-    m.buffer = static_cast<std::size_t>(r_.index(j, "buffer", where, count("buffers"), "buffers", true));
-    m.byte_offset = r_.count_member(j, "byteOffset", where, 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
-    m.byte_length = r_.count_member(j, "byteLength", where, 1, std::numeric_limits<std::uint64_t>::max() / 4);
-    m.byte_stride = r_.count_member(j, "byteStride", where, 1, 256);
-    m.count = r_.count_member(j, "count", where, 1, std::numeric_limits<std::uint32_t>::max());
-    const std::string mode = r_.string(j, "mode", where);
-    const std::string filter = r_.string(j, "filter", where, "NONE");
+    constexpr std::size_t kMax = std::numeric_limits<std::uint64_t>::max() / 4;
+    m.buffer = required_index(j, where, "buffer", "buffers");
+    m.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMax, 0);
+    m.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMax);
+    m.byte_stride = r_.whole(r_.required(j, where, "byteStride"), where / "byteStride", 1, 256);
+    m.count = r_.whole(r_.required(j, where, "count"), where / "count", 1, std::numeric_limits<std::uint32_t>::max());
+    const std::string mode = r_.string(r_.required(j, where, "mode"), where / "mode");
+    const std::string filter = r_.string_or(j, where, "filter", "NONE");
     if (mode == "ATTRIBUTES") m.mode = MeshoptSource::Mode::Attributes;
     else if (mode == "TRIANGLES") m.mode = MeshoptSource::Mode::Triangles;
     else if (mode == "INDICES") m.mode = MeshoptSource::Mode::Indices;
-    else fail(where + ".mode", "is '" + mode + "', expected ATTRIBUTES, TRIANGLES or INDICES");
+    else fail(where / "mode", "expected ATTRIBUTES, TRIANGLES or INDICES, got \"" + mode + "\"");
     if (filter == "OCTAHEDRAL") m.filter = MeshoptSource::Filter::Octahedral;
     else if (filter == "QUATERNION") m.filter = MeshoptSource::Filter::Quaternion;
     else if (filter == "EXPONENTIAL") m.filter = MeshoptSource::Filter::Exponential;
-    else if (filter != "NONE") fail(where + ".filter", "is '" + filter + "', expected NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL");
+    else if (filter != "NONE") fail(where / "filter", "expected NONE, OCTAHEDRAL, QUATERNION or EXPONENTIAL, got \"" + filter + "\"");
     // The decoders' own preconditions (meshoptimizer asserts them).
     const std::size_t s = m.byte_stride;
-    if (m.mode == MeshoptSource::Mode::Attributes && s % 4 != 0) fail(where + ".byteStride", "is " + std::to_string(s) + "; ATTRIBUTES needs a multiple of 4");
-    if (m.mode != MeshoptSource::Mode::Attributes && s != 2 && s != 4) fail(where + ".byteStride", "is " + std::to_string(s) + "; index modes need 2 or 4");
-    if (m.mode == MeshoptSource::Mode::Triangles && m.count % 3 != 0) fail(where + ".count", "is " + with_commas(m.count) + ", not a multiple of 3 (TRIANGLES)");
-    if (m.filter != MeshoptSource::Filter::None && m.mode != MeshoptSource::Mode::Attributes) fail(where + ".filter", "is " + filter + ", but only ATTRIBUTES take a filter");
-    if (m.filter == MeshoptSource::Filter::Octahedral && s != 4 && s != 8) fail(where + ".byteStride", "is " + std::to_string(s) + "; OCTAHEDRAL needs 4 or 8");
-    if (m.filter == MeshoptSource::Filter::Quaternion && s != 8) fail(where + ".byteStride", "is " + std::to_string(s) + "; QUATERNION needs 8");
+    const std::string got = ", got " + std::to_string(s);
+    if (m.mode == MeshoptSource::Mode::Attributes && s % 4 != 0) fail(where / "byteStride", "expected a multiple of 4 for ATTRIBUTES" + got);
+    if (m.mode != MeshoptSource::Mode::Attributes && s != 2 && s != 4) fail(where / "byteStride", "expected 2 or 4 for index modes" + got);
+    if (m.mode == MeshoptSource::Mode::Triangles && m.count % 3 != 0) {
+      fail(where / "count", "expected a multiple of 3 for TRIANGLES, got " + with_commas(m.count));
+    }
+    if (m.filter != MeshoptSource::Filter::None && m.mode != MeshoptSource::Mode::Attributes) {
+      fail(where / "filter", "expected NONE (only ATTRIBUTES take a filter), got \"" + filter + "\"");
+    }
+    if (m.filter == MeshoptSource::Filter::Octahedral && s != 4 && s != 8) fail(where / "byteStride", "expected 4 or 8 for OCTAHEDRAL" + got);
+    if (m.filter == MeshoptSource::Filter::Quaternion && s != 8) fail(where / "byteStride", "expected 8 for QUATERNION" + got);
     if (m.count * m.byte_stride != view.byte_length) {
       fail(where, "decodes to " + with_commas(m.count) + " x " + std::to_string(s) + " bytes, but the bufferView's byteLength is " +
                       with_commas(view.byte_length));
     }
     const Buffer& source = doc_.buffers[m.buffer];
-    if (source.fallback_only) fail(where + ".buffer", "is the fallback buffer, which holds no data");
+    if (source.fallback_only) fail(where / "buffer", "refers to the fallback buffer, which holds no data");
     if (m.byte_offset > source.byte_length || m.byte_length > source.byte_length - m.byte_offset) {
-      fail(where, "reads bytes " + with_commas(m.byte_offset) + " to " + with_commas(m.byte_offset + m.byte_length) + " of buffers[" +
-                      std::to_string(m.buffer) + "], which has " + with_commas(source.byte_length));
+      fail(where, "reads bytes " + with_commas(m.byte_offset) + " to " + with_commas(m.byte_offset + m.byte_length) + " of " +
+                      element("buffers", m.buffer).str() + ", which has " + with_commas(source.byte_length));
     }
     return m;
   }
@@ -486,69 +369,73 @@ class DocumentReader {
   // --- accessors -------------------------------------------------------------
 
   void read_accessors() {
-    const Json& accessors = r_.array_member(root_, "accessors", "");
+    const Json& accessors = r_.array_or_empty(root_, {}, "accessors");
     doc_.accessors.resize(accessors.size());
     constexpr std::size_t kMax = std::numeric_limits<std::uint32_t>::max();
     for (std::size_t i = 0; i < accessors.size(); ++i) {
-      const std::string where = "accessors[" + std::to_string(i) + "]";
+      const JsonPointer where = element("accessors", i);
       const Json& j = r_.object(accessors[i], where);
       Accessor& a = doc_.accessors[i];
-      a.buffer_view = r_.index(j, "bufferView", where, count("bufferViews"), "bufferViews");
-      a.byte_offset = r_.count_member(j, "byteOffset", where, 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
-      a.component_type = static_cast<int>(r_.count_member(j, "componentType", where, 0, 100000));
-      if (component_size(a.component_type) == 0) fail(where + ".componentType", "is " + std::to_string(a.component_type) + ", not a glTF component type");
-      a.type = r_.string(j, "type", where);
+      a.buffer_view = index(j, where, "bufferView", "bufferViews");
+      a.byte_offset = r_.whole_or(j, where, "byteOffset", 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
+      a.component_type = static_cast<int>(r_.whole(r_.required(j, where, "componentType"), where / "componentType", 0, 100000));
+      if (component_size(a.component_type) == 0) {
+        fail(where / "componentType", "expected a glTF component type (5120 to 5126), got " + std::to_string(a.component_type));
+      }
+      a.type = r_.string(r_.required(j, where, "type"), where / "type");
       static const std::map<std::string, int> kComponents{{"SCALAR", 1}, {"VEC2", 2}, {"VEC3", 3}, {"VEC4", 4},
                                                           {"MAT2", 4},   {"MAT3", 9}, {"MAT4", 16}};
       const auto type = kComponents.find(a.type);
-      if (type == kComponents.end()) fail(where + ".type", "is '" + a.type + "', not a glTF accessor type");
+      if (type == kComponents.end()) fail(where / "type", "expected a glTF accessor type (SCALAR, VEC2 ... MAT4), got \"" + a.type + "\"");
       a.components = type->second;
-      a.normalized = r_.boolean(j, "normalized", where, false);
-      a.count = r_.count_member(j, "count", where, 1, kMax);
+      a.normalized = r_.boolean_or(j, where, "normalized", false);
+      a.count = r_.whole(r_.required(j, where, "count"), where / "count", 1, kMax);
       if (a.buffer_view >= 0) check_range(where, static_cast<std::size_t>(a.buffer_view), a.byte_offset, a.count, a.element_size());
-      if (const Json* sparse = r_.member(j, "sparse")) a.sparse = read_sparse(r_.object(*sparse, where + ".sparse"), where + ".sparse", a);
+      if (const Json* sparse = r_.find(j, "sparse")) a.sparse = read_sparse(r_.object(*sparse, where / "sparse"), where / "sparse", a);
     }
   }
 
   // `count` elements of `element_size` bytes from `byte_offset` in a bufferView.
-  void check_range(const std::string& where, std::size_t view_index, std::size_t byte_offset, std::size_t count, std::size_t element_size) {
+  void check_range(const JsonPointer& where, std::size_t view_index, std::size_t byte_offset, std::size_t count, std::size_t element_size) {
     const BufferView& view = doc_.buffer_views[view_index];
     const std::size_t stride = view.byte_stride ? view.byte_stride : element_size;
     if (view.byte_stride && view.byte_stride < element_size) {
       fail(where, "has " + std::to_string(element_size) + "-byte elements, wider than the byteStride " + std::to_string(view.byte_stride) +
-                      " of bufferViews[" + std::to_string(view_index) + "]");
+                      " of " + element("bufferViews", view_index).str());
     }
     // (count - 1) * stride + element_size bytes from byte_offset, without overflow.
     const bool fits = byte_offset <= view.byte_length && element_size <= view.byte_length - byte_offset &&
                       count - 1 <= (view.byte_length - byte_offset - element_size) / stride;
     if (!fits) {
       fail(where, "reads " + with_commas(count) + " elements of " + std::to_string(element_size) + " bytes from byte " +
-                      with_commas(byte_offset) + " of bufferViews[" + std::to_string(view_index) + "], which holds " +
+                      with_commas(byte_offset) + " of " + element("bufferViews", view_index).str() + ", which holds " +
                       with_commas(view.byte_length) + " bytes");
     }
   }
 
-  Accessor::Sparse read_sparse(const Json& j, const std::string& where, const Accessor& a) {
+  Accessor::Sparse read_sparse(const Json& j, const JsonPointer& where, const Accessor& a) {
     Accessor::Sparse s;
-    s.count = r_.count_member(j, "count", where, 1, a.count);
-    const Json& indices = r_.object_member(j, "indices", where);
-    const Json& values = r_.object_member(j, "values", where);
-    s.indices_view = static_cast<std::size_t>(r_.index(indices, "bufferView", where + ".indices", count("bufferViews"), "bufferViews", true));
-    s.indices_offset = r_.count_member(indices, "byteOffset", where + ".indices", 0, std::numeric_limits<std::uint32_t>::max(), 0);
-    s.indices_component_type = static_cast<int>(r_.count_member(indices, "componentType", where + ".indices", 0, 100000));
+    constexpr std::size_t kMax = std::numeric_limits<std::uint32_t>::max();
+    s.count = r_.whole(r_.required(j, where, "count"), where / "count", 1, a.count);
+    const JsonPointer iw = where / "indices", vw = where / "values";
+    const Json& indices = r_.object(r_.required(j, where, "indices"), iw);
+    const Json& values = r_.object(r_.required(j, where, "values"), vw);
+    s.indices_view = required_index(indices, iw, "bufferView", "bufferViews");
+    s.indices_offset = r_.whole_or(indices, iw, "byteOffset", 0, kMax, 0);
+    s.indices_component_type = static_cast<int>(r_.whole(r_.required(indices, iw, "componentType"), iw / "componentType", 0, 100000));
     if (s.indices_component_type != kUnsignedByte && s.indices_component_type != kUnsignedShort && s.indices_component_type != kUnsignedInt) {
-      fail(where + ".indices.componentType", "is " + std::to_string(s.indices_component_type) + ", expected an unsigned integer type");
+      fail(iw / "componentType", "expected an unsigned integer type (5121, 5123 or 5125), got " + std::to_string(s.indices_component_type));
     }
-    s.values_view = static_cast<std::size_t>(r_.index(values, "bufferView", where + ".values", count("bufferViews"), "bufferViews", true));
-    s.values_offset = r_.count_member(values, "byteOffset", where + ".values", 0, std::numeric_limits<std::uint32_t>::max(), 0);
+    s.values_view = required_index(values, vw, "bufferView", "bufferViews");
+    s.values_offset = r_.whole_or(values, vw, "byteOffset", 0, kMax, 0);
     // Sparse data is tightly packed: a bufferView stride would not apply.
     for (const auto& [view, offset, size, what] :
-         {std::tuple{s.indices_view, s.indices_offset, component_size(s.indices_component_type), ".indices"},
-          std::tuple{s.values_view, s.values_offset, a.element_size(), ".values"}}) {
+         {std::tuple{s.indices_view, s.indices_offset, component_size(s.indices_component_type), iw},
+          std::tuple{s.values_view, s.values_offset, a.element_size(), vw}}) {
       const BufferView& v = doc_.buffer_views[view];
       if (offset > v.byte_length || s.count > (v.byte_length - offset) / size) {
-        fail(where + what, "reads " + with_commas(s.count) + " elements of " + std::to_string(size) + " bytes from byte " + with_commas(offset) +
-                               " of bufferViews[" + std::to_string(view) + "], which holds " + with_commas(v.byte_length) + " bytes");
+        fail(what, "reads " + with_commas(s.count) + " elements of " + std::to_string(size) + " bytes from byte " + with_commas(offset) +
+                       " of " + element("bufferViews", view).str() + ", which holds " + with_commas(v.byte_length) + " bytes");
       }
     }
     return s;
@@ -557,37 +444,33 @@ class DocumentReader {
   // --- meshes ----------------------------------------------------------------
 
   void read_meshes() {
-    const Json& meshes = r_.array_member(root_, "meshes", "");
+    const Json& meshes = r_.array_or_empty(root_, {}, "meshes");
     doc_.meshes.resize(meshes.size());
     for (std::size_t m = 0; m < meshes.size(); ++m) {
-      const std::string where = "meshes[" + std::to_string(m) + "]";
+      const JsonPointer where = element("meshes", m);
       const Json& j = r_.object(meshes[m], where);
       Mesh& mesh = doc_.meshes[m];
-      mesh.name = r_.string(j, "name", where);
-      const Json& primitives = r_.array_member(j, "primitives", where);
+      mesh.name = r_.string_or(j, where, "name", "");
+      const Json& primitives = r_.array_or_empty(j, where, "primitives");
       for (std::size_t p = 0; p < primitives.size(); ++p) {
-        const std::string pw = where + ".primitives[" + std::to_string(p) + "]";
+        const JsonPointer pw = where / "primitives" / p;
         const Json& pj = r_.object(primitives[p], pw);
         Primitive primitive;
-        const Json* attributes = r_.member(pj, "attributes");
-        if (attributes) {
-          for (const auto& [semantic, value] : r_.object(*attributes, pw + ".attributes").items()) {
-            primitive.attributes[semantic] = r_.index_value(value, pw + ".attributes." + semantic, count("accessors"), "accessors");
-          }
+        for (const auto& [semantic, value] : r_.object_or_empty(pj, pw, "attributes").items()) {
+          primitive.attributes[semantic] =
+              static_cast<int>(r_.index(value, pw / "attributes" / semantic, count("accessors"), JsonPointer() / "accessors"));
         }
-        primitive.indices = r_.index(pj, "indices", pw, count("accessors"), "accessors");
-        primitive.material = r_.index(pj, "material", pw, count("materials"), "materials");
-        primitive.mode = static_cast<int>(r_.count_member(pj, "mode", pw, 0, 6, 4));
-        const Json ext = r_.extensions(pj, pw);
+        primitive.indices = index(pj, pw, "indices", "accessors");
+        primitive.material = index(pj, pw, "material", "materials");
+        primitive.mode = static_cast<int>(r_.whole_or(pj, pw, "mode", 0, 6, 4));
+        const Json ext = r_.object_or_empty(pj, pw, "extensions");
         if (ext.contains("KHR_draco_mesh_compression")) {
-          const std::string dw = pw + ".extensions.KHR_draco_mesh_compression";
+          const JsonPointer dw = pw / "extensions" / "KHR_draco_mesh_compression";
           const Json& dj = r_.object(ext["KHR_draco_mesh_compression"], dw);
           DracoPrimitive draco;
-          draco.buffer_view = static_cast<std::size_t>(r_.index(dj, "bufferView", dw, count("bufferViews"), "bufferViews", true));
-          const Json* da = r_.member(dj, "attributes");
-          if (!da) fail(dw + ".attributes", "is missing");
-          for (const auto& [semantic, value] : r_.object(*da, dw + ".attributes").items()) {
-            draco.attributes[semantic] = static_cast<int>(r_.count(value, dw + ".attributes." + semantic, 0, 1u << 20));
+          draco.buffer_view = required_index(dj, dw, "bufferView", "bufferViews");
+          for (const auto& [semantic, value] : r_.object(r_.required(dj, dw, "attributes"), dw / "attributes").items()) {
+            draco.attributes[semantic] = static_cast<int>(r_.whole(value, dw / "attributes" / semantic, 0, 1u << 20));
           }
           primitive.draco = std::move(draco);
         }
@@ -598,96 +481,98 @@ class DocumentReader {
 
   // --- materials, textures, images, samplers ----------------------------------
 
-  TextureInfo read_texture_info(const Json& material, const char* key, const std::string& where, const char* scale_key) {
+  TextureInfo read_texture_info(const Json& material, const char* key, const JsonPointer& where, const char* scale_key) {
     TextureInfo info;
-    const Json* j = r_.member(material, key);
+    const Json* j = r_.find(material, key);
     if (!j) return info;
-    const std::string tw = where + "." + key;
+    const JsonPointer tw = where / key;
     r_.object(*j, tw);
-    info.index = r_.index(*j, "index", tw, count("textures"), "textures", true);
-    info.tex_coord = static_cast<int>(r_.count_member(*j, "texCoord", tw, 0, 31, 0));
-    if (scale_key) info.scale = r_.number(*j, scale_key, tw, 1.0);
-    info.extensions = r_.extensions(*j, tw);
+    info.index = index(*j, tw, "index", "textures", true);
+    info.tex_coord = static_cast<int>(r_.whole_or(*j, tw, "texCoord", 0, 31, 0));
+    if (scale_key) info.scale = r_.number_or(*j, tw, scale_key, 1.0);
+    info.extensions = r_.object_or_empty(*j, tw, "extensions");
     return info;
   }
 
   void read_materials() {
-    const Json& materials = r_.array_member(root_, "materials", "");
+    const Json& materials = r_.array_or_empty(root_, {}, "materials");
     doc_.materials.resize(materials.size());
     for (std::size_t i = 0; i < materials.size(); ++i) {
-      const std::string where = "materials[" + std::to_string(i) + "]";
+      const JsonPointer where = element("materials", i);
       const Json& j = r_.object(materials[i], where);
       Material& m = doc_.materials[i];
-      m.name = r_.string(j, "name", where);
-      if (const Json* pbr = r_.member(j, "pbrMetallicRoughness")) {
-        const std::string pw = where + ".pbrMetallicRoughness";
+      m.name = r_.string_or(j, where, "name", "");
+      if (const Json* pbr = r_.find(j, "pbrMetallicRoughness")) {
+        const JsonPointer pw = where / "pbrMetallicRoughness";
         r_.object(*pbr, pw);
-        m.base_color_factor = r_.numbers<4>(*pbr, "baseColorFactor", pw, m.base_color_factor);
-        m.metallic_factor = r_.number(*pbr, "metallicFactor", pw, 1.0);
-        m.roughness_factor = r_.number(*pbr, "roughnessFactor", pw, 1.0);
+        m.base_color_factor = r_.numbers_or<4>(*pbr, pw, "baseColorFactor", m.base_color_factor);
+        m.metallic_factor = r_.number_or(*pbr, pw, "metallicFactor", 1.0);
+        m.roughness_factor = r_.number_or(*pbr, pw, "roughnessFactor", 1.0);
         m.base_color = read_texture_info(*pbr, "baseColorTexture", pw, nullptr);
         m.metallic_roughness = read_texture_info(*pbr, "metallicRoughnessTexture", pw, nullptr);
       }
       m.normal = read_texture_info(j, "normalTexture", where, "scale");
       m.occlusion = read_texture_info(j, "occlusionTexture", where, "strength");
       m.emissive = read_texture_info(j, "emissiveTexture", where, nullptr);
-      m.emissive_factor = r_.numbers<3>(j, "emissiveFactor", where, m.emissive_factor);
-      m.alpha_mode = r_.string(j, "alphaMode", where, "OPAQUE");
+      m.emissive_factor = r_.numbers_or<3>(j, where, "emissiveFactor", m.emissive_factor);
+      m.alpha_mode = r_.string_or(j, where, "alphaMode", "OPAQUE");
       if (m.alpha_mode != "OPAQUE" && m.alpha_mode != "MASK" && m.alpha_mode != "BLEND") {
-        warn(where + ".alphaMode is '" + m.alpha_mode + "', not OPAQUE, MASK or BLEND; it is drawn opaque");
+        warn(where / "alphaMode", "expected OPAQUE, MASK or BLEND, got \"" + m.alpha_mode + "\"; it is drawn opaque");
         m.alpha_mode = "OPAQUE";
       }
-      m.alpha_cutoff = r_.number(j, "alphaCutoff", where, 0.5);
-      m.double_sided = r_.boolean(j, "doubleSided", where, false);
-      m.extensions = r_.extensions(j, where);
+      m.alpha_cutoff = r_.number_or(j, where, "alphaCutoff", 0.5);
+      m.double_sided = r_.boolean_or(j, where, "doubleSided", false);
+      m.extensions = r_.object_or_empty(j, where, "extensions");
     }
   }
 
   void read_textures() {
-    const Json& textures = r_.array_member(root_, "textures", "");
+    const Json& textures = r_.array_or_empty(root_, {}, "textures");
     doc_.textures.resize(textures.size());
     for (std::size_t i = 0; i < textures.size(); ++i) {
-      const std::string where = "textures[" + std::to_string(i) + "]";
+      const JsonPointer where = element("textures", i);
       const Json& j = r_.object(textures[i], where);
-      doc_.textures[i].sampler = r_.index(j, "sampler", where, count("samplers"), "samplers");
-      doc_.textures[i].source = r_.index(j, "source", where, count("images"), "images");
-      doc_.textures[i].extensions = r_.extensions(j, where);
+      doc_.textures[i].sampler = index(j, where, "sampler", "samplers");
+      doc_.textures[i].source = index(j, where, "source", "images");
+      doc_.textures[i].extensions = r_.object_or_empty(j, where, "extensions");
       const auto dds = doc_.textures[i].extensions.find("MSFT_texture_dds");
       if (dds != doc_.textures[i].extensions.end()) {
-        const std::string dds_where = where + ".extensions.MSFT_texture_dds";
-        doc_.textures[i].dds_source = r_.index(r_.object(*dds, dds_where), "source", dds_where, count("images"), "images");
+        const JsonPointer dds_where = where / "extensions" / "MSFT_texture_dds";
+        doc_.textures[i].dds_source = index(r_.object(*dds, dds_where), dds_where, "source", "images");
       }
     }
   }
 
   void read_images() {
-    const Json& images = r_.array_member(root_, "images", "");
+    const Json& images = r_.array_or_empty(root_, {}, "images");
     doc_.images.resize(images.size());
     for (std::size_t i = 0; i < images.size(); ++i) {
-      const std::string where = "images[" + std::to_string(i) + "]";
+      const JsonPointer where = element("images", i);
       const Json& j = r_.object(images[i], where);
       Image& image = doc_.images[i];
-      image.name = r_.string(j, "name", where);
-      image.uri = r_.string(j, "uri", where);
-      image.buffer_view = r_.index(j, "bufferView", where, count("bufferViews"), "bufferViews");
-      image.mime_type = r_.string(j, "mimeType", where);
+      image.name = r_.string_or(j, where, "name", "");
+      image.uri = r_.string_or(j, where, "uri", "");
+      image.buffer_view = index(j, where, "bufferView", "bufferViews");
+      image.mime_type = r_.string_or(j, where, "mimeType", "");
     }
   }
 
   void read_samplers() {
-    const Json& samplers = r_.array_member(root_, "samplers", "");
+    const Json& samplers = r_.array_or_empty(root_, {}, "samplers");
     doc_.samplers.resize(samplers.size());
     for (std::size_t i = 0; i < samplers.size(); ++i) {
-      const std::string where = "samplers[" + std::to_string(i) + "]";
+      const JsonPointer where = element("samplers", i);
       const Json& j = r_.object(samplers[i], where);
       Sampler& s = doc_.samplers[i];
       auto code = [&](const char* key, std::initializer_list<int> allowed, int fallback) {
-        const int value = static_cast<int>(r_.count_member(j, key, where, 0, 100000, static_cast<std::size_t>(fallback)));
-        if (value != fallback && std::find(allowed.begin(), allowed.end(), value) == allowed.end()) {
-          warn(where + "." + key + " is " + std::to_string(value) + ", not a glTF sampler value; the default is used");
+        const Json* value = r_.find(j, key);
+        if (!value) return fallback;
+        const int code = static_cast<int>(r_.whole(*value, where / key, 0, 100000));
+        if (std::find(allowed.begin(), allowed.end(), code) == allowed.end()) {
+          warn(where / key, "expected a glTF sampler value, got " + std::to_string(code) + "; the default is used");
           return fallback;
         }
-        return value;
+        return code;
       };
       s.mag_filter = code("magFilter", {9728, 9729}, -1);
       s.min_filter = code("minFilter", {9728, 9729, 9984, 9985, 9986, 9987}, -1);
@@ -699,41 +584,43 @@ class DocumentReader {
   // --- nodes, scenes, lights ---------------------------------------------------
 
   void read_nodes() {
-    const Json& nodes = r_.array_member(root_, "nodes", "");
+    const Json& nodes = r_.array_or_empty(root_, {}, "nodes");
     doc_.nodes.resize(nodes.size());
     for (std::size_t n = 0; n < nodes.size(); ++n) {
-      const std::string where = "nodes[" + std::to_string(n) + "]";
+      const JsonPointer where = element("nodes", n);
       const Json& j = r_.object(nodes[n], where);
       Node& node = doc_.nodes[n];
-      node.name = r_.string(j, "name", where);
-      node.mesh = r_.index(j, "mesh", where, count("meshes"), "meshes");
-      for (const Json& child : r_.array_member(j, "children", where)) {
-        node.children.push_back(r_.index_value(child, where + ".children", count("nodes"), "nodes"));
+      node.name = r_.string_or(j, where, "name", "");
+      node.mesh = index(j, where, "mesh", "meshes");
+      const Json& children = r_.array_or_empty(j, where, "children");
+      for (std::size_t c = 0; c < children.size(); ++c) {
+        node.children.push_back(static_cast<int>(r_.index(children[c], where / "children" / c, count("nodes"), JsonPointer() / "nodes")));
       }
-      if (r_.member(j, "matrix")) {
-        const auto m = r_.numbers<16>(j, "matrix", where, {});
+      if (const Json* matrix = r_.find(j, "matrix")) {
+        const auto m = r_.numbers<16>(*matrix, where / "matrix");
         for (int c = 0; c < 16; ++c) glm::value_ptr(node.local)[c] = static_cast<float>(m[static_cast<std::size_t>(c)]);
       } else {
-        const auto t = r_.numbers<3>(j, "translation", where, {0.0, 0.0, 0.0});
-        const auto q = r_.numbers<4>(j, "rotation", where, {0.0, 0.0, 0.0, 1.0});
-        const auto s = r_.numbers<3>(j, "scale", where, {1.0, 1.0, 1.0});
+        const auto t = r_.numbers_or<3>(j, where, "translation", {0.0, 0.0, 0.0});
+        const auto q = r_.numbers_or<4>(j, where, "rotation", {0.0, 0.0, 0.0, 1.0});
+        const auto s = r_.numbers_or<3>(j, where, "scale", {1.0, 1.0, 1.0});
         const glm::quat rotation(static_cast<float>(q[3]), static_cast<float>(q[0]), static_cast<float>(q[1]), static_cast<float>(q[2]));
         node.local = glm::translate(glm::mat4(1.0f), glm::vec3(t[0], t[1], t[2])) * glm::mat4_cast(rotation) *
                      glm::scale(glm::mat4(1.0f), glm::vec3(s[0], s[1], s[2]));
       }
-      const Json ext = r_.extensions(j, where);
+      const Json ext = r_.object_or_empty(j, where, "extensions");
       if (ext.contains("KHR_lights_punctual")) {
-        const std::string lw = where + ".extensions.KHR_lights_punctual";
-        node.light = r_.index(r_.object(ext["KHR_lights_punctual"], lw), "light", lw, doc_.lights.size(), "lights", true);
+        const JsonPointer lw = where / "extensions" / "KHR_lights_punctual";
+        const Json& lj = r_.object(ext["KHR_lights_punctual"], lw);
+        node.light = static_cast<int>(r_.index(r_.required(lj, lw, "light"), lw / "light", doc_.lights.size(),
+                                               JsonPointer() / "extensions" / "KHR_lights_punctual" / "lights"));
       }
       if (ext.contains("EXT_mesh_gpu_instancing")) {
-        const std::string iw = where + ".extensions.EXT_mesh_gpu_instancing";
+        const JsonPointer iw = where / "extensions" / "EXT_mesh_gpu_instancing";
         const Json& ij = r_.object(ext["EXT_mesh_gpu_instancing"], iw);
-        const Json* attributes = r_.member(ij, "attributes");
-        if (!attributes) fail(iw + ".attributes", "is missing");
         Node::Instancing instancing;
-        for (const auto& [semantic, value] : r_.object(*attributes, iw + ".attributes").items()) {
-          const int accessor = r_.index_value(value, iw + ".attributes." + semantic, count("accessors"), "accessors");
+        for (const auto& [semantic, value] : r_.object(r_.required(ij, iw, "attributes"), iw / "attributes").items()) {
+          const int accessor =
+              static_cast<int>(r_.index(value, iw / "attributes" / semantic, count("accessors"), JsonPointer() / "accessors"));
           if (semantic == "TRANSLATION") instancing.translation = accessor;
           else if (semantic == "ROTATION") instancing.rotation = accessor;
           else if (semantic == "SCALE") instancing.scale = accessor;
@@ -744,38 +631,43 @@ class DocumentReader {
   }
 
   void read_scenes() {
-    const Json& scenes = r_.array_member(root_, "scenes", "");
+    const Json& scenes = r_.array_or_empty(root_, {}, "scenes");
     for (std::size_t s = 0; s < scenes.size(); ++s) {
-      const std::string where = "scenes[" + std::to_string(s) + "]";
+      const JsonPointer where = element("scenes", s);
       const Json& j = r_.object(scenes[s], where);
       std::vector<int> roots;
-      for (const Json& node : r_.array_member(j, "nodes", where)) roots.push_back(r_.index_value(node, where + ".nodes", count("nodes"), "nodes"));
+      const Json& nodes = r_.array_or_empty(j, where, "nodes");
+      for (std::size_t n = 0; n < nodes.size(); ++n) {
+        roots.push_back(static_cast<int>(r_.index(nodes[n], where / "nodes" / n, count("nodes"), JsonPointer() / "nodes")));
+      }
       doc_.scenes.push_back(std::move(roots));
     }
-    doc_.scene = r_.index(root_, "scene", "", count("scenes"), "scenes");
+    doc_.scene = index(root_, {}, "scene", "scenes");
   }
 
   void read_lights(const Json& extension) {
-    const Json& lights = r_.array_member(extension, "lights", "extensions.KHR_lights_punctual");
+    const JsonPointer list = JsonPointer() / "extensions" / "KHR_lights_punctual";
+    const Json& lights = r_.array_or_empty(extension, list, "lights");
     for (std::size_t i = 0; i < lights.size(); ++i) {
-      const std::string where = "extensions.KHR_lights_punctual.lights[" + std::to_string(i) + "]";
+      const JsonPointer where = list / "lights" / i;
       const Json& j = r_.object(lights[i], where);
       Light light;
-      light.name = r_.string(j, "name", where);
-      light.type = r_.string(j, "type", where);
-      light.color = r_.numbers<3>(j, "color", where, light.color);
-      light.intensity = r_.number(j, "intensity", where, 1.0);
-      light.range = r_.number(j, "range", where, 0.0);
-      if (const Json* spot = r_.member(j, "spot")) {
-        r_.object(*spot, where + ".spot");
-        light.inner_cone = r_.number(*spot, "innerConeAngle", where + ".spot", 0.0);
-        light.outer_cone = r_.number(*spot, "outerConeAngle", where + ".spot", light.outer_cone);
+      light.name = r_.string_or(j, where, "name", "");
+      light.type = r_.string_or(j, where, "type", "");
+      light.color = r_.numbers_or<3>(j, where, "color", light.color);
+      light.intensity = r_.number_or(j, where, "intensity", 1.0);
+      light.range = r_.number_or(j, where, "range", 0.0);
+      if (const Json* spot = r_.find(j, "spot")) {
+        const JsonPointer sw = where / "spot";
+        r_.object(*spot, sw);
+        light.inner_cone = r_.number_or(*spot, sw, "innerConeAngle", 0.0);
+        light.outer_cone = r_.number_or(*spot, sw, "outerConeAngle", light.outer_cone);
       }
       doc_.lights.push_back(light);
     }
   }
 
-  Reader r_;
+  JsonReader r_;
   const MemoryBudget& budget_;
   Document doc_;
   Json root_;
@@ -798,7 +690,11 @@ std::size_t component_size(int component_type) {
 }
 
 Document read_document(const std::filesystem::path& path, const MemoryBudget& budget) {
-  return DocumentReader(path, budget).read();
+  try {
+    return DocumentReader(path, budget).read();
+  } catch (const JsonError& e) {
+    throw ImportError(e.what());
+  }
 }
 
 std::string image_uri_problem(const Document& document, const std::string& uri) {

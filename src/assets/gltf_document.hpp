@@ -18,8 +18,7 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <nlohmann/json.hpp>
-
+#include "assets/json_reader.hpp"
 #include "assets/load_budget.hpp"
 
 namespace atrium::assets {
@@ -27,7 +26,9 @@ namespace atrium::assets {
 
 namespace gltf {
 
-using Json = nlohmann::json;
+// The JSON pointer of element `i` of a top-level array: element("meshes", 0)
+// is /meshes/0. Messages name glTF objects this way, as gltf-validator does.
+[[nodiscard]] inline JsonPointer element(std::string_view array, std::size_t i) { return JsonPointer() / array / i; }
 
 // glTF's componentType codes (GL's).
 enum ComponentType : int {
@@ -179,7 +180,7 @@ struct Document {
 };
 
 // Reads and checks the whole file. Throws ImportError naming the file, the
-// object (`accessors[3].count`) and the numbers.
+// object (`/accessors/3/count`) and the numbers.
 [[nodiscard]] Document read_document(const std::filesystem::path& path, const MemoryBudget& budget);
 
 // The bytes of an image file next to the glTF, found from a URI (relative,

@@ -24,7 +24,7 @@ using gltf::Accessor;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
-std::string accessor_name(int index) { return "accessors[" + std::to_string(index) + "]"; }
+std::string accessor_name(int index) { return gltf::element("accessors", static_cast<std::size_t>(index)).str(); }
 
 float to_float(const std::uint8_t* p, int type, bool normalized) {
   switch (type) {
@@ -118,7 +118,7 @@ class Importer {
   // come from, for one warning per reason.
   struct Skipped {
     std::size_t count = 0, places = 0;
-    std::string first;  // "meshes[3].primitives[0]"
+    std::string first;  // "/meshes/3/primitives/0"
     void add(std::size_t n, const std::string& place) {
       if (n == 0) return;
       if (places++ == 0) first = place;
@@ -229,7 +229,7 @@ class Importer {
       for (std::size_t i = 0; i < s.count; ++i) {
         const std::uint32_t target = to_index(indices + i * index_size, s.indices_component_type);
         if (target >= source.count) {
-          fail(accessor_name(index) + ".sparse substitutes element " + std::to_string(target) + " of " + std::to_string(source.count));
+          fail(accessor_name(index) + "/sparse substitutes element " + std::to_string(target) + " of " + std::to_string(source.count));
         }
         for (std::size_t c = 0; c < n; ++c) out[target * n + c] = to_float(values + (i * n + c) * size, a.component_type, a.normalized);
       }
@@ -324,7 +324,7 @@ class Importer {
     mesh.name = source.name.empty() ? "mesh " + std::to_string(m) : source.name;
     for (std::size_t p = 0; p < source.primitives.size(); ++p) {
       const gltf::Primitive& prim = source.primitives[p];
-      const std::string what = "meshes[" + std::to_string(m) + "].primitives[" + std::to_string(p) + "]";
+      const std::string what = (gltf::element("meshes", m) / "primitives" / p).str();
       if (prim.mode < 4) {
         static const char* const kModes[] = {"points", "lines", "a line loop", "a line strip"};
         warn(what + " draws " + kModes[prim.mode] + ", not triangles, and is skipped");
@@ -425,13 +425,13 @@ class Importer {
 
   // --- materials and textures ----------------------------------------------
 
-  static double number(const gltf::Json& object, const char* key, double fallback) {
+  static double number(const Json& object, const char* key, double fallback) {
     if (!object.is_object()) return fallback;
     const auto it = object.find(key);
     return it != object.end() && it->is_number() && std::isfinite(it->get<double>()) ? it->get<double>() : fallback;
   }
 
-  static glm::vec2 vec2(const gltf::Json& object, const char* key, glm::vec2 fallback) {
+  static glm::vec2 vec2(const Json& object, const char* key, glm::vec2 fallback) {
     const auto it = object.find(key);
     if (it == object.end() || !it->is_array() || it->size() != 2 || !(*it)[0].is_number() || !(*it)[1].is_number()) return fallback;
     const glm::vec2 v((*it)[0].get<double>(), (*it)[1].get<double>());
@@ -466,7 +466,7 @@ class Importer {
     // DDS (MSFT_texture_dds) first: it stays block-compressed on the GPU.
     const int image = texture.dds_source >= 0 ? texture.dds_source : texture.source;
     if (image < 0) {
-      warn(what + " uses textures[" + std::to_string(info.index) + "], which has no image Atrium can read; a neutral default is used");
+      warn(what + " uses " + gltf::element("textures", static_cast<std::size_t>(info.index)).str() + ", which has no image Atrium can read; a neutral default is used");
       return slot;
     }
     pending_slots_.push_back({image, space});
@@ -477,7 +477,7 @@ class Importer {
     std::vector<Material> materials;
     for (std::size_t i = 0; i < doc_.materials.size(); ++i) {
       const gltf::Material& src = doc_.materials[i];
-      const std::string what = "materials[" + std::to_string(i) + "]" + (src.name.empty() ? "" : " '" + src.name + "'");
+      const std::string what = gltf::element("materials", i).str() + (src.name.empty() ? "" : " '" + src.name + "'");
       Material m;
       m.name = src.name.empty() ? "material " + std::to_string(i) : src.name;
       m.base_color_factor = glm::vec4(src.base_color_factor[0], src.base_color_factor[1], src.base_color_factor[2], src.base_color_factor[3]);
@@ -556,7 +556,7 @@ class Importer {
     std::vector<TextureHandle> handles(jobs.size());
     for (std::size_t j = 0; j < jobs.size(); ++j) {
       const gltf::Image& image = doc_.images[static_cast<std::size_t>(jobs[j].image)];
-      const std::string label = "images[" + std::to_string(jobs[j].image) + "]" +
+      const std::string label = gltf::element("images", static_cast<std::size_t>(jobs[j].image)).str() +
                                 (image.uri.empty() || image.uri.rfind("data:", 0) == 0 ? "" : " (" + image.uri + ")");
       if (!jobs[j].error.empty()) {
         warn(label + " cannot be decoded (" + jobs[j].error + "); a neutral default texture is used");
@@ -576,7 +576,7 @@ class Importer {
       const bool used = std::any_of(jobs.begin(), jobs.end(), [&](const Job& job) { return job.image == static_cast<int>(i); });
       if (used || image.uri.empty()) continue;
       const std::string problem = gltf::image_uri_problem(doc_, image.uri);
-      if (!problem.empty()) warn("images[" + std::to_string(i) + "] cannot be read (" + problem + "); no material uses it");
+      if (!problem.empty()) warn(gltf::element("images", i).str() + " cannot be read (" + problem + "); no material uses it");
     }
   }
 
@@ -650,11 +650,11 @@ class Importer {
     while (!stack.empty()) {
       const auto [index, parent] = stack.back();
       stack.pop_back();
-      if (visited[static_cast<std::size_t>(index)]) fail("nodes[" + std::to_string(index) + "] appears twice in the hierarchy (a cycle?)");
+      if (visited[static_cast<std::size_t>(index)]) fail(gltf::element("nodes", static_cast<std::size_t>(index)).str() + " appears twice in the hierarchy (a cycle?)");
       visited[static_cast<std::size_t>(index)] = true;
       const gltf::Node& node = doc_.nodes[static_cast<std::size_t>(index)];
       const glm::mat4 world = parent * node.local;
-      const std::string where = "nodes[" + std::to_string(index) + "]";
+      const std::string where = gltf::element("nodes", static_cast<std::size_t>(index)).str();
       if (node.mesh >= 0 && node.instancing) {
         for (const glm::mat4& instance : instance_matrices(*node.instancing, where + " EXT_mesh_gpu_instancing")) {
           add_instance(asset, node.mesh, world * instance, where);
@@ -680,7 +680,7 @@ class Importer {
     light.color = glm::vec3(src.color[0], src.color[1], src.color[2]);
     light.intensity = static_cast<float>(src.intensity) / kLumensPerWatt;
     if (src.range > 0.0) light.radius = static_cast<float>(src.range);
-    const std::string name = "lights[" + std::to_string(index) + "]" + (src.name.empty() ? "" : " '" + src.name + "'");
+    const std::string name = (JsonPointer() / "extensions" / "KHR_lights_punctual" / "lights" / static_cast<std::size_t>(index)).str() + (src.name.empty() ? "" : " '" + src.name + "'");
     if (src.type == "directional") {
       light.kind = LightKind::Directional;
     } else if (src.type == "spot") {

@@ -9,9 +9,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
-#include <nlohmann/json.hpp>
 
 #include "assets/builtin_scene.hpp"
+#include "assets/json_reader.hpp"
 #include "components/light.hpp"
 
 
@@ -19,167 +19,106 @@ namespace atrium::assets {
 namespace {
 
 namespace fs = std::filesystem;
-using nlohmann::json;
 
-// Reads typed values out of the scene JSON; every error carries the file and
-// the JSON pointer of the value, e.g. "scenes/x.json: /lights/3/radius: ...".
-class Reader {
+// Scene-specific values on top of the JsonReader: points, colours and ranges.
+class Reader : public JsonReader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  using JsonReader::JsonReader;
 
-  [[noreturn]] void fail(const std::string& pointer, const std::string& problem) const {
-    throw SceneFileError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + problem);
-  }
-
-  static std::string describe(const json& value) {
-    std::string text = value.dump();
-    return text.size() > 40 ? text.substr(0, 37) + "..." : text;
-  }
-
-  const json& member(const json& object, const std::string& pointer, const char* key) const {
-    if (!object.contains(key)) fail(pointer + "/" + key, "is missing");
-    return object.at(key);
-  }
-
-  // 10000000, 0.5, -1: the shortest form that reads back the same.
-  static std::string compact_number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return text;
-  }
-
-  double number(const json& value, const std::string& pointer, double min, double max, const char* expected) const {
-    if (!value.is_number()) fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
-    const double v = value.get<double>();
-    if (!std::isfinite(v) || v < min || v > max) fail(pointer, std::string("expected ") + expected + ", got " + describe(value));
-    return v;
-  }
-
-  glm::vec3 vec3(const json& value, const std::string& pointer, double min = -1e7, double max = 1e7) const {
-    if (!value.is_array() || value.size() != 3) fail(pointer, "expected an array of 3 numbers, got " + describe(value));
-    glm::vec3 out;
-    const std::string expected = "a number from " + compact_number(min) + " to " + compact_number(max);
-    for (int i = 0; i < 3; ++i) {
-      out[i] = static_cast<float>(number(value[static_cast<std::size_t>(i)], pointer + "/" + std::to_string(i), min, max, expected.c_str()));
-    }
-    return out;
+  glm::vec3 vec3(const Json& value, const JsonPointer& at, double min = -1e7, double max = 1e7) const {
+    const std::array<double, 3> v = numbers<3>(value, at, min, max);
+    return glm::vec3(static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]));
   }
 
   // A colour: [r, g, b] with non-negative channels, or one number for grey.
-  glm::vec3 color(const json& value, const std::string& pointer) const {
-    if (value.is_number()) return glm::vec3(static_cast<float>(number(value, pointer, 0.0, 1e6, "a non-negative number")));
-    return vec3(value, pointer, 0.0, 1e6);
+  glm::vec3 color(const Json& value, const JsonPointer& at) const {
+    if (value.is_number()) return glm::vec3(static_cast<float>(number(value, at, 0.0, 1e6, "a non-negative number")));
+    return vec3(value, at, 0.0, 1e6);
   }
 
-  glm::vec2 range(const json& value, const std::string& pointer, double min, double max, const char* expected) const {
-    if (value.is_number()) return glm::vec2(static_cast<float>(number(value, pointer, min, max, expected)));
-    if (!value.is_array() || value.size() != 2) fail(pointer, std::string("expected ") + expected + " or [min, max], got " + describe(value));
-    const glm::vec2 r(static_cast<float>(number(value[0], pointer + "/0", min, max, expected)),
-                      static_cast<float>(number(value[1], pointer + "/1", min, max, expected)));
-    if (r.x > r.y) fail(pointer, "expected [min, max] with min <= max, got " + describe(value));
+  // One number, or [min, max].
+  glm::vec2 range(const Json& value, const JsonPointer& at, double min, double max, std::string_view expected) const {
+    if (value.is_number()) return glm::vec2(static_cast<float>(number(value, at, min, max, expected)));
+    if (!value.is_array() || value.size() != 2) fail(at, std::string("expected ") + std::string(expected) + " or [min, max], got " + describe(value));
+    const glm::vec2 r(static_cast<float>(number(value[0], at / 0, min, max, expected)), static_cast<float>(number(value[1], at / 1, min, max, expected)));
+    if (r.x > r.y) fail(at, "expected [min, max] with min <= max, got " + describe(value));
     return r;
   }
-
-  std::string string(const json& value, const std::string& pointer) const {
-    if (!value.is_string()) fail(pointer, "expected a string, got " + describe(value));
-    return value.get<std::string>();
-  }
-
-  const json& array(const json& value, const std::string& pointer) const {
-    if (!value.is_array()) fail(pointer, "expected an array, got " + describe(value));
-    return value;
-  }
-
-  void only_keys(const json& object, const std::string& pointer, std::initializer_list<const char*> keys) const {
-    if (!object.is_object()) fail(pointer, "expected an object, got " + describe(object));
-    for (const auto& item : object.items()) {
-      const std::string& key = item.key();
-      if (std::find_if(keys.begin(), keys.end(), [&](const char* k) { return key == k; }) == keys.end()) {
-        std::string known;
-        for (const char* k : keys) known += (known.empty() ? "" : ", ") + std::string(k);
-        fail(pointer + "/" + key, "unknown key (expected one of: " + known + ")");
-      }
-    }
-  }
-
- private:
-  std::string file_;
 };
 
 // A point given either absolutely ("position") or as fractions of the scene's
 // bounds ("position_in_bounds": [0.5, 0.1, 0.5] is the centre, near the floor),
 // which keeps views right whatever units a model was authored in.
-glm::vec3 read_point(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
-  if (j.contains("position_in_bounds")) {
-    const glm::vec3 f = r.vec3(j["position_in_bounds"], p + "/position_in_bounds", -10.0, 10.0);
-    return scene.bounds.min + f * (scene.bounds.max - scene.bounds.min);
+glm::vec3 read_point(const Reader& r, const Json& j, const JsonPointer& p, const SceneDescription& scene) {
+  if (const Json* f = r.find(j, "position_in_bounds")) {
+    return scene.bounds.min + r.vec3(*f, p / "position_in_bounds", -10.0, 10.0) * (scene.bounds.max - scene.bounds.min);
   }
-  if (!j.contains("position")) r.fail(p + "/position", "is missing (or give position_in_bounds)");
-  return r.vec3(j["position"], p + "/position");
+  if (!r.find(j, "position")) r.fail(p / "position", "is missing (or give position_in_bounds)");
+  return r.vec3(j["position"], p / "position");
 }
 
-SceneLight read_light(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+SceneLight read_light(const Reader& r, const Json& j, const JsonPointer& p, const SceneDescription& scene) {
   r.only_keys(j, p, {"type", "position", "position_in_bounds", "color", "intensity", "radius", "direction", "inner_cone_degrees",
                      "outer_cone_degrees"});
   SceneLight light;
-  const std::string type = j.contains("type") ? r.string(j["type"], p + "/type") : "point";
+  const std::string type = r.string_or(j, p, "type", "point");
   if (type == "spot") light.kind = LightKind::Spot;
   else if (type == "directional") light.kind = LightKind::Directional;
-  else if (type != "point") r.fail(p + "/type", "expected \"point\", \"spot\" or \"directional\", got \"" + type + "\"");
+  else if (type != "point") r.fail(p / "type", "expected \"point\", \"spot\" or \"directional\", got \"" + type + "\"");
   if (light.kind != LightKind::Directional) light.position = read_point(r, j, p, scene);
-  if (j.contains("color")) light.color = r.color(j["color"], p + "/color");
-  light.intensity = static_cast<float>(r.number(r.member(j, p, "intensity"), p + "/intensity", 1e-9, 1e9, "a positive number"));
-  if (j.contains("radius")) light.radius = static_cast<float>(r.number(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number"));
+  if (const Json* color = r.find(j, "color")) light.color = r.color(*color, p / "color");
+  light.intensity = static_cast<float>(r.number(r.required(j, p, "intensity"), p / "intensity", 1e-9, 1e9, "a positive number"));
+  if (const Json* radius = r.find(j, "radius")) light.radius = static_cast<float>(r.number(*radius, p / "radius", 1e-6, 1e7, "a positive number"));
   if (light.kind != LightKind::Point) {
-    const glm::vec3 direction = r.vec3(r.member(j, p, "direction"), p + "/direction");
-    if (glm::length(direction) < 1e-6f) r.fail(p + "/direction", "expected a non-zero vector");
+    const glm::vec3 direction = r.vec3(r.required(j, p, "direction"), p / "direction");
+    if (glm::length(direction) < 1e-6f) r.fail(p / "direction", "expected a non-zero vector");
     light.direction = glm::normalize(direction);
   }
   if (light.kind == LightKind::Spot) {
-    light.inner_cone = glm::radians(static_cast<float>(j.contains("inner_cone_degrees") ? r.number(j["inner_cone_degrees"], p + "/inner_cone_degrees", 0.0, 90.0, "degrees from 0 to 90") : 0.0));
-    light.outer_cone = glm::radians(static_cast<float>(j.contains("outer_cone_degrees") ? r.number(j["outer_cone_degrees"], p + "/outer_cone_degrees", 0.0, 90.0, "degrees from 0 to 90") : 45.0));
-    if (light.inner_cone > light.outer_cone) r.fail(p + "/inner_cone_degrees", "must not exceed outer_cone_degrees");
+    light.inner_cone = glm::radians(static_cast<float>(r.number_or(j, p, "inner_cone_degrees", 0.0, 0.0, 90.0, "degrees from 0 to 90")));
+    light.outer_cone = glm::radians(static_cast<float>(r.number_or(j, p, "outer_cone_degrees", 45.0, 0.0, 90.0, "degrees from 0 to 90")));
+    if (light.inner_cone > light.outer_cone) r.fail(p / "inner_cone_degrees", "must not exceed outer_cone_degrees");
   }
   return light;
 }
 
-LightGenerator read_generator(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+LightGenerator read_generator(const Reader& r, const Json& j, const JsonPointer& p, const SceneDescription& scene) {
   r.only_keys(j, p, {"count", "seed", "box", "color", "intensity", "radius"});
   LightGenerator g;
-  g.count = static_cast<std::uint32_t>(r.number(r.member(j, p, "count"), p + "/count", 0, kMaxLights,
-                                                  ("a whole number from 0 to " + std::to_string(kMaxLights)).c_str()));
-  if (j.contains("seed")) g.seed = static_cast<std::uint32_t>(r.number(j["seed"], p + "/seed", 0, 4294967295.0, "a whole number"));
-  if (!j.contains("box") || (j["box"].is_string() && j["box"] == "bounds")) {
+  g.count = static_cast<std::uint32_t>(r.whole(r.required(j, p, "count"), p / "count", 0, kMaxLights));
+  g.seed = static_cast<std::uint32_t>(r.whole_or(j, p, "seed", 0, 4294967295u, g.seed));
+  const Json* box = r.find(j, "box");
+  if (!box || *box == "bounds") {
     g.box_min = scene.bounds.min;
     g.box_max = scene.bounds.max;
   } else {
-    const json& box = j["box"];
-    r.only_keys(box, p + "/box", {"min", "max", "min_in_bounds", "max_in_bounds"});
+    const JsonPointer bp = p / "box";
+    r.only_keys(*box, bp, {"min", "max", "min_in_bounds", "max_in_bounds"});
     auto corner = [&](const char* absolute, const char* relative) {
-      if (box.contains(relative)) {
-        return scene.bounds.min + r.vec3(box[relative], p + "/box/" + relative, -10.0, 10.0) * (scene.bounds.max - scene.bounds.min);
+      if (const Json* f = r.find(*box, relative)) {
+        return scene.bounds.min + r.vec3(*f, bp / relative, -10.0, 10.0) * (scene.bounds.max - scene.bounds.min);
       }
-      return r.vec3(r.member(box, p + "/box", absolute), p + "/box/" + absolute);
+      return r.vec3(r.required(*box, bp, absolute), bp / absolute);
     };
     g.box_min = corner("min", "min_in_bounds");
     g.box_max = corner("max", "max_in_bounds");
-    if (glm::any(glm::greaterThan(g.box_min, g.box_max))) r.fail(p + "/box", "expected min <= max in every axis");
+    if (glm::any(glm::greaterThan(g.box_min, g.box_max))) r.fail(bp, "expected min <= max in every axis");
   }
-  if (j.contains("color") && !(j["color"].is_string() && j["color"] == "random")) g.color = r.color(j["color"], p + "/color");
-  const glm::vec2 intensity = r.range(r.member(j, p, "intensity"), p + "/intensity", 1e-9, 1e9, "a positive number");
+  if (const Json* color = r.find(j, "color"); color && *color != "random") g.color = r.color(*color, p / "color");
+  const glm::vec2 intensity = r.range(r.required(j, p, "intensity"), p / "intensity", 1e-9, 1e9, "a positive number");
   g.intensity_min = intensity.x;
   g.intensity_max = intensity.y;
-  if (j.contains("radius")) g.radius_range = r.range(j["radius"], p + "/radius", 1e-6, 1e7, "a positive number");
+  if (const Json* radius = r.find(j, "radius")) g.radius_range = r.range(*radius, p / "radius", 1e-6, 1e7, "a positive number");
   return g;
 }
 
-NamedView read_view(const Reader& r, const json& j, const std::string& p, const SceneDescription& scene) {
+NamedView read_view(const Reader& r, const Json& j, const JsonPointer& p, const SceneDescription& scene) {
   r.only_keys(j, p, {"name", "position", "position_in_bounds", "yaw_degrees", "pitch_degrees"});
   NamedView view;
-  view.name = r.string(r.member(j, p, "name"), p + "/name");
+  view.name = r.string(r.required(j, p, "name"), p / "name");
   view.position = read_point(r, j, p, scene);
-  view.yaw_degrees = static_cast<float>(j.contains("yaw_degrees") ? r.number(j["yaw_degrees"], p + "/yaw_degrees", -720, 720, "degrees") : 0.0);
-  view.pitch_degrees = static_cast<float>(j.contains("pitch_degrees") ? r.number(j["pitch_degrees"], p + "/pitch_degrees", -90, 90, "degrees from -90 to 90") : 0.0);
+  view.yaw_degrees = static_cast<float>(r.number_or(j, p, "yaw_degrees", 0.0, -720, 720, "degrees from -720 to 720"));
+  view.pitch_degrees = static_cast<float>(r.number_or(j, p, "pitch_degrees", 0.0, -90, 90, "degrees from -90 to 90"));
   return view;
 }
 
@@ -206,6 +145,102 @@ void merge_report(LoadReport& report, const ModelImport& model) {
   report.timings.parse_seconds += model.timings.parse_seconds;
   report.timings.decode_seconds += model.timings.decode_seconds;
   report.images += model.images;
+}
+
+// The whole scene file, its models imported.
+SceneDescription read_scene(const Reader& r, const Json& root, const fs::path& path, AssetManager& assets, LoadReport& report,
+                            const ProgressCallback& progress) {
+  const JsonPointer top;
+  r.only_keys(root, top, {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode", "systems"});
+  SceneDescription scene;
+  scene.name = r.string_or(root, top, "name", path.stem().string());
+  // The mode name is checked against the technique table by the World.
+  scene.default_mode = r.string_or(root, top, "default_mode", scene.default_mode);
+
+  std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
+  std::optional<ModelImport> builtin;
+  std::vector<NamedView> builtin_views;
+  if (const Json* models_json = r.find(root, "models")) {
+    const Json& models = r.array(*models_json, top / "models");
+    for (std::size_t i = 0; i < models.size(); ++i) {
+      const JsonPointer p = top / "models" / i;
+      const Json& m = models[i];
+      r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch", "materials"});
+      glm::mat4 placement(1.0f);
+      if (const Json* position = r.find(m, "position")) placement = glm::translate(placement, r.vec3(*position, p / "position"));
+      if (const Json* rotation = r.find(m, "rotation_degrees")) placement *= glm::mat4_cast(glm::quat(glm::radians(r.vec3(*rotation, p / "rotation_degrees"))));
+      if (const Json* scale_json = r.find(m, "scale")) {
+        const glm::vec3 scale = scale_json->is_number() ? glm::vec3(static_cast<float>(r.number(*scale_json, p / "scale", 1e-6, 1e6, "a positive number")))
+                                                        : r.vec3(*scale_json, p / "scale", 1e-6, 1e6);
+        placement = glm::scale(placement, scale);
+      }
+      if (const Json* builtin_json = r.find(m, "builtin")) {
+        // The procedural courtyard as a model: its geometry and views; lights come from this file.
+        if (const std::string name = r.string(*builtin_json, p / "builtin"); name != kBuiltinSceneName) {
+          r.fail(p / "builtin", std::string("expected \"") + kBuiltinSceneName + "\", got \"" + name + "\"");
+        }
+        // Built once: every copy places the same asset, so copies draw instanced.
+        if (!builtin) {
+          const SceneDescription courtyard = build_builtin_scene(assets, 0u);
+          builtin.emplace();
+          builtin->asset = courtyard.instances.empty() ? MeshAssetHandle{} : courtyard.instances.front().asset;
+          builtin->instances = courtyard.instances;
+          builtin->bounds = courtyard.instances.empty() ? Box{} : courtyard.bounds;
+          builtin_views = courtyard.views;
+          scene.exposure = courtyard.exposure;
+          scene.background = courtyard.background;
+        }
+        add_model(scene, *builtin, placement);
+        // Its views are in its own frame: they hold for a copy left where it was built.
+        if (scene.views.empty() && placement == glm::mat4(1.0f)) scene.views = builtin_views;
+        continue;
+      }
+      const fs::path model_path = (path.parent_path() / r.string(r.required(m, p, "path"), p / "path")).lexically_normal();
+      std::error_code ec;
+      if (!fs::is_regular_file(model_path, ec)) {
+        const Json* fetch = r.find(m, "fetch");
+        r.fail(p / "path", model_path.string() + " does not exist" + (fetch ? "; fetch it with `" + r.string(*fetch, p / "fetch") + "`" : ""));
+      }
+      const std::string key = fs::weakly_canonical(model_path).string();
+      if (!imported.contains(key)) {
+        ImportOptions options;
+        options.progress = progress;
+        if (const Json* materials = r.find(m, "materials")) {
+          const std::string name = r.string(*materials, p / "materials");
+          options.convention = material_convention(name);
+          if (!options.convention) r.fail(p / "materials", "expected \"gltf\", \"bistro\" or \"phong\", got \"" + name + "\"");
+        }
+        imported.emplace(key, import_model(model_path, assets, options));
+        merge_report(report, imported.at(key));
+      }
+      add_model(scene, imported.at(key), placement);
+    }
+  }
+  // After the models: the file's settings win over a built-in model's.
+  if (const Json* ambient = r.find(root, "ambient")) scene.ambient = r.color(*ambient, top / "ambient");
+  if (const Json* background = r.find(root, "background")) scene.background = r.color(*background, top / "background");
+  scene.exposure = static_cast<float>(r.number_or(root, top, "exposure", scene.exposure, 1e-6, 1e6, "a positive number"));
+  // Settings of optional systems by name; each system clamps its own.
+  for (const auto& [name, value] : r.object_or_empty(root, top, "systems").items()) {
+    scene.system_options[name] = r.number(value, top / "systems" / name, -1e9, 1e9, "a number");
+  }
+  const Json& lights = r.array_or_empty(root, top, "lights");
+  for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], top / "lights" / i, scene));
+  const Json& generators = r.array_or_empty(root, top, "light_generators");
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    const LightGenerator g = read_generator(r, generators[i], top / "light_generators" / i, scene);
+    for (const SceneLight& light : generate_lights(g)) scene.lights.push_back(light);
+    if (!scene.fill_generator) scene.fill_generator = g;
+  }
+  if (const Json* views_json = r.find(root, "views")) {
+    const Json& views = r.array(*views_json, top / "views");
+    if (views.empty() || views.size() > 9) r.fail(top / "views", "expected 1 to 9 views, got " + std::to_string(views.size()));
+    scene.views.clear();
+    for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], top / "views" / i, scene));
+  } else if (scene.views.empty()) {
+    scene.views = framing_views(scene.bounds);
+  }
+  return scene;
 }
 
 }  // namespace
@@ -256,7 +291,7 @@ std::string view_json(const NamedView& view) {
   char text[256];
   std::snprintf(text, sizeof text, "\"position\": [%.3f, %.3f, %.3f], \"yaw_degrees\": %.2f, \"pitch_degrees\": %.2f }",
                 view.position.x, view.position.y, view.position.z, view.yaw_degrees, view.pitch_degrees);
-  return "{ \"name\": " + json(view.name).dump() + ", " + text;
+  return "{ \"name\": " + Json(view.name).dump() + ", " + text;
 }
 
 std::string camera_argument(const NamedView& view) {
@@ -284,115 +319,15 @@ std::optional<NamedView> parse_camera_argument(std::string_view text) {
 
 SceneDescription load_scene_file(const fs::path& path, AssetManager& assets, LoadReport& report,
                                  const ProgressCallback& progress) {
-  const std::string file = path.string();
-  std::ifstream in(path);
-  if (!in) throw SceneFileError(file + ": cannot open the scene file");
-  json root;
+  const Reader r(path.string());
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw SceneFileError(r.file() + ": cannot open the scene file");
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   try {
-    root = json::parse(in);
-  } catch (const json::exception& e) {
-    // parse_error, and out_of_range for numbers beyond a double (1e400).
-    std::string what = e.what();
-    throw SceneFileError(file + ": not valid JSON (" + what.substr(what.find(']') + 2) + ")");
+    return read_scene(r, r.parse(text), path, assets, report, progress);
+  } catch (const JsonError& e) {
+    throw SceneFileError(e.what());
   }
-  const Reader r(file);
-  r.only_keys(root, "", {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode", "systems"});
-  SceneDescription scene;
-  scene.name = root.contains("name") ? r.string(root["name"], "/name") : path.stem().string();
-  // The mode name is checked against the technique table by the World.
-  if (root.contains("default_mode")) scene.default_mode = r.string(root["default_mode"], "/default_mode");
-
-  std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
-  std::optional<ModelImport> builtin;
-  std::vector<NamedView> builtin_views;
-  if (root.contains("models")) {
-    const json& models = r.array(root["models"], "/models");
-    for (std::size_t i = 0; i < models.size(); ++i) {
-      const std::string p = "/models/" + std::to_string(i);
-      const json& m = models[i];
-      r.only_keys(m, p, {"path", "builtin", "position", "rotation_degrees", "scale", "fetch", "materials"});
-      glm::mat4 placement(1.0f);
-      if (m.contains("position")) placement = glm::translate(placement, r.vec3(m["position"], p + "/position"));
-      if (m.contains("rotation_degrees")) placement *= glm::mat4_cast(glm::quat(glm::radians(r.vec3(m["rotation_degrees"], p + "/rotation_degrees"))));
-      if (m.contains("scale")) {
-        const glm::vec3 scale = m["scale"].is_number() ? glm::vec3(static_cast<float>(r.number(m["scale"], p + "/scale", 1e-6, 1e6, "a positive number")))
-                                                       : r.vec3(m["scale"], p + "/scale", 1e-6, 1e6);
-        placement = glm::scale(placement, scale);
-      }
-      if (m.contains("builtin")) {
-        // The procedural courtyard as a model: its geometry and views; lights come from this file.
-        if (r.string(m["builtin"], p + "/builtin") != kBuiltinSceneName) {
-          r.fail(p + "/builtin", std::string("expected \"") + kBuiltinSceneName + "\"");
-        }
-        // Built once: every copy places the same asset, so copies draw instanced.
-        if (!builtin) {
-          const SceneDescription courtyard = build_builtin_scene(assets, 0u);
-          builtin.emplace();
-          builtin->asset = courtyard.instances.empty() ? MeshAssetHandle{} : courtyard.instances.front().asset;
-          builtin->instances = courtyard.instances;
-          builtin->bounds = courtyard.instances.empty() ? Box{} : courtyard.bounds;
-          builtin_views = courtyard.views;
-          scene.exposure = courtyard.exposure;
-          scene.background = courtyard.background;
-        }
-        add_model(scene, *builtin, placement);
-        // Its views are in its own frame: they hold for a copy left where it was built.
-        if (scene.views.empty() && placement == glm::mat4(1.0f)) scene.views = builtin_views;
-        continue;
-      }
-      const fs::path model_path = (path.parent_path() / r.string(r.member(m, p, "path"), p + "/path")).lexically_normal();
-      std::error_code ec;
-      if (!fs::is_regular_file(model_path, ec)) {
-        const std::string fetch = m.contains("fetch") ? "; fetch it with `" + r.string(m["fetch"], p + "/fetch") + "`" : "";
-        r.fail(p + "/path", model_path.string() + " does not exist" + fetch);
-      }
-      const std::string key = fs::weakly_canonical(model_path).string();
-      if (!imported.contains(key)) {
-        ImportOptions options;
-        options.progress = progress;
-        if (m.contains("materials")) {
-          const std::string name = r.string(m["materials"], p + "/materials");
-          options.convention = material_convention(name);
-          if (!options.convention) r.fail(p + "/materials", "expected \"gltf\", \"bistro\" or \"phong\", got \"" + name + "\"");
-        }
-        imported.emplace(key, import_model(model_path, assets, options));
-        merge_report(report, imported.at(key));
-      }
-      add_model(scene, imported.at(key), placement);
-    }
-  }
-  // After the models: the file's settings win over a built-in model's.
-  if (root.contains("ambient")) scene.ambient = r.color(root["ambient"], "/ambient");
-  if (root.contains("background")) scene.background = r.color(root["background"], "/background");
-  if (root.contains("exposure")) scene.exposure = static_cast<float>(r.number(root["exposure"], "/exposure", 1e-6, 1e6, "a positive number"));
-  if (root.contains("systems")) {
-    // Settings of optional systems by name; each system clamps its own.
-    if (!root["systems"].is_object()) r.fail("/systems", "expected an object of numbers by system name, got " + r.describe(root["systems"]));
-    for (const auto& [name, value] : root["systems"].items()) {
-      scene.system_options[name] = r.number(value, "/systems/" + name, -1e9, 1e9, "a number");
-    }
-  }
-  if (root.contains("lights")) {
-    const json& lights = r.array(root["lights"], "/lights");
-    for (std::size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(read_light(r, lights[i], "/lights/" + std::to_string(i), scene));
-  }
-  if (root.contains("light_generators")) {
-    const json& generators = r.array(root["light_generators"], "/light_generators");
-    for (std::size_t i = 0; i < generators.size(); ++i) {
-      const LightGenerator g = read_generator(r, generators[i], "/light_generators/" + std::to_string(i), scene);
-      for (const SceneLight& light : generate_lights(g)) scene.lights.push_back(light);
-      if (!scene.fill_generator) scene.fill_generator = g;
-    }
-  }
-  if (root.contains("views")) {
-    const json& views = r.array(root["views"], "/views");
-    if (views.empty() || views.size() > 9) r.fail("/views", "expected 1 to 9 views, got " + std::to_string(views.size()));
-    scene.views.clear();
-    for (std::size_t i = 0; i < views.size(); ++i) scene.views.push_back(read_view(r, views[i], "/views/" + std::to_string(i), scene));
-  } else if (scene.views.empty()) {
-    scene.views = framing_views(scene.bounds);
-  }
-  return scene;
 }
 
 SceneDescription load_model_scene(const fs::path& path, AssetManager& assets, std::uint32_t extra_lights, LoadReport& report,

@@ -1,6 +1,6 @@
 // Scene files (scenes/*.json, specified in docs/scene-format.md) and glTF models
 // opened directly: both become a SceneDescription, with the models imported into
-// the AssetManager. Errors name the file, the JSON path of the bad value, and
+// the AssetManager. Errors name the file, the JSON pointer of the bad value, and
 // what was expected.
 #pragma once
 

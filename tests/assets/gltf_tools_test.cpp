@@ -197,7 +197,7 @@ TEST(GltfTools, DracoPrimitivesDrawTheirDecodedCountsWhateverTheAccessorsDeclare
     EXPECT_EQ(assets.mesh_asset(imported.asset).vertex_count(), vertices) << change;
     std::string all;
     for (const std::string& w : imported.warnings) all += w + "\n";
-    const std::string where = file.string() + ": meshes[0].primitives[0] (KHR_draco_mesh_compression) decodes to ";
+    const std::string where = file.string() + ": /meshes/0/primitives/0/extensions/KHR_draco_mesh_compression decodes to ";
     EXPECT_NE(all.find(where + std::to_string(vertices) + " vertices, its accessor declares " + std::to_string(static_cast<long>(vertices) + change) +
                        "; the decoded data is used"),
               std::string::npos)
@@ -209,14 +209,14 @@ TEST(GltfTools, DracoPrimitivesDrawTheirDecodedCountsWhateverTheAccessorsDeclare
 }
 
 TEST(GltfTools, JsonThatIsNotGltfIsRefusedNamingWhatIsMissing) {
-  // npm's package.json saved as .gltf: valid JSON, no asset.version.
+  // npm's package.json saved as .gltf: valid JSON, no /asset/version.
   AssetManager assets;
   const fs::path file = kFixtures / "not-gltf.npm-package.gltf";
   try {
     (void)import_gltf(file, assets);
     ADD_FAILURE() << "loaded";
   } catch (const ImportError& e) {
-    EXPECT_EQ(std::string(e.what()), file.string() + ": is not a glTF file: its JSON has no asset.version (every glTF names its version there)");
+    EXPECT_EQ(std::string(e.what()), file.string() + ": is not a glTF file: its JSON has no /asset/version (every glTF names its version there)");
   }
 }
 

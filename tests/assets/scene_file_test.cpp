@@ -1,5 +1,5 @@
 // Scene files: every field read as written, and every kind of mistake refused
-// with the file, the JSON path of the bad value, and what was expected.
+// with the file, the JSON pointer of the bad value, and what was expected.
 #include <filesystem>
 #include <fstream>
 
@@ -138,7 +138,7 @@ TEST_F(SceneFile, MistakesNameThePathAndWhatWasExpected) {
   EXPECT_EQ(error(R"({"colour": 1})"),
             file + ": /colour: unknown key (expected one of: name, models, lights, light_generators, views, ambient, background, exposure, default_mode, systems)");
   EXPECT_EQ(error(R"({"light_generators": [{"count": -5, "intensity": 1}]})"),
-            file + ": /light_generators/0/count: expected a whole number from 0 to 1048576, got -5");
+            file + ": /light_generators/0/count: expected a whole number from 0 to 1,048,576, got -5");
   EXPECT_EQ(error(R"({"light_generators": [{"count": 5, "intensity": [2, 1]}]})"),
             file + ": /light_generators/0/intensity: expected [min, max] with min <= max, got [2,1]");
   EXPECT_EQ(error(R"({"views": []})"), file + ": /views: expected 1 to 9 views, got 0");
