@@ -5,7 +5,7 @@
 #                          (at most about 6 minutes: each step gets what is left of that)
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
 # Writes into OUT: report.md (the GL context, PSNR of every mode against forward,
-# the bench tables), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
+# the bench tables, occlusion culling on the CPU and on the GPU), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
 # plot.png (where python3 has matplotlib), atrium.png, sponza.png and log.txt.
 # Exit 0 when every step ran and every mode is within 40 dB of forward.
 set -uo pipefail
@@ -108,6 +108,13 @@ step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights 
 step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
 step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
   --shadows "$shadowed" --csv "$out/bench-shadows.csv"
+# Occlusion culling where it tests: the grid's street view hides most of what
+# is in view; the same triangles either way, the GPU path with nothing read back.
+grid=$kit/scenes/courtyard-grid.json
+for device in cpu gpu; do
+  step "occlusion culling on the $device, grid" 30 "$out/.culling-$device.md" "$atrium" bench "$grid" --modes clustered-deferred,tiled-deferred \
+    --views 2 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --culling "$device"
+done
 gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
@@ -155,6 +162,8 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "Bench, built-in scene" "$out/.bench-atrium.md"
   section "Bench, Sponza" "$out/.bench-sponza.md"
   section "Bench, Sponza, $shadowed shadowed lights" "$out/.bench-shadows.md"
+  section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
+  section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
   section "Pictures" "$out/.render-sponza.txt"
   cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
 } >"$report"

@@ -1,8 +1,9 @@
 #version 450 core
 // Reads the depth buffer after the first geometry pass (every sample with
 // MSAA); writes the farthest view depth of each 8x8-pixel tile (infinity where
-// some sample holds no geometry) for occlusion culling on the CPU
-// (src/render/culling/occlusion_culling.hpp): whatever lies behind it is hidden.
+// some sample holds no geometry): the finest level of occlusion culling's depth
+// pyramid, read back for the CPU or reduced further on the GPU
+// (depth_pyramid.comp; src/render/culling/): whatever lies behind it is hidden.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 #include "common/frame.glsl"

@@ -15,6 +15,7 @@
 
 #include "assets/scene.hpp"
 #include "gfx/pass_timer.hpp"
+#include "components/frame_resources.hpp"
 #include "components/technique_options.hpp"
 
 namespace atrium {
@@ -36,6 +37,7 @@ struct BenchOptions {
   std::vector<lighting::ZSlicing> z_slicings;
   bool frustum_culling = true;               // --no-culling
   bool occlusion_culling = true;             // --no-occlusion-culling
+  CullingDevice culling_device = CullingDevice::Automatic;  // --culling
   // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame

@@ -35,6 +35,7 @@ WorldOptions world_options(const CliOptions& options) {
           .frustum_culling = options.frustum_culling,
           .shadows = options.shadows,
           .occlusion_culling = options.occlusion_culling,
+          .culling_device = options.culling_device,
           .system_options = options.system_options};
 }
 
@@ -190,6 +191,7 @@ int run_bench_command(const CliOptions& options) {
   bench.camera = options.camera;
   bench.frustum_culling = options.frustum_culling;
   bench.occlusion_culling = options.occlusion_culling;
+  bench.culling_device = options.culling_device;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   // One line per run on stderr: a long sweep (a GPU kit run) shows where it is.
   const BenchResult result = run_bench(bench, [](std::size_t done, std::size_t total, const BenchRow& row) {

@@ -53,6 +53,7 @@ struct CliOptions {
   bool memory = false;                  // info: every mode's render-target memory at --size
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling
+  CullingDevice culling_device = CullingDevice::Automatic;  // --culling
   int shadows = 0;                      // --shadows K: lights with shadow maps
   std::map<std::string, double> system_options;  // rows of the system options table, by name
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)

@@ -327,6 +327,18 @@ const std::vector<OptionSpec>& option_table() {
        [](std::string_view, CliOptions& o) { o.frustum_culling = false; }},
       {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)",
        [](std::string_view, CliOptions& o) { o.occlusion_culling = false; }},
+      {"--culling", "WHERE", kDrawing,
+       "where occlusion culling tests what the depth hides: cpu (depth read back each frame), gpu (nothing read back) or auto "
+       "(default: cpu on a software renderer, where it is faster, gpu elsewhere)",
+       [](std::string_view value, CliOptions& o) {
+         for (const CullingDeviceName& row : kCullingDevices) {
+           if (row.name == value) {
+             o.culling_device = row.device;
+             return;
+           }
+         }
+         throw UsageError("unknown --culling '" + std::string(value) + "' (expected auto, cpu or gpu)");
+       }},
       {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
       {"--memory", "", kInfo,
        "draw one frame of every mode at --size and report its render-target memory: long-lived targets, and transient "

@@ -157,6 +157,7 @@ void World::start(const WorldOptions& options) {
   settings.technique_options = options.technique_options;
   settings.frustum_culling = options.frustum_culling;
   settings.occlusion_culling = options.occlusion_culling;
+  settings.culling_device = options.culling_device;
   settings.shadows = options.shadows;
   set_view(options.view);
 

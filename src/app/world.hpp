@@ -48,6 +48,8 @@ struct WorldOptions {
   int shadows = 0;
   // --no-occlusion-culling turns it off: passes draw what is in view, hidden or not.
   bool occlusion_culling = true;
+  // --culling: where it tests (render/culling/): CPU or GPU, chosen per driver by default.
+  CullingDevice culling_device = CullingDevice::Automatic;
   // Settings of optional systems by name (components/system_options.hpp),
   // over the scene file's.
   std::map<std::string, double> system_options;

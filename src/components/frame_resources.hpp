@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include <glm/glm.hpp>
 
@@ -31,6 +32,18 @@ struct SceneSettings {
   float exposure = 1.0f;
 };
 
+// Where occlusion culling tests what the depth hides (--culling): on the CPU,
+// from the depth read back once or twice a frame (where a read-back costs
+// nothing, as on a software renderer, measured faster), or on the GPU with
+// nothing read back (render/culling/gpu_occlusion_culling.hpp). Automatic
+// picks the CPU on a software renderer and the GPU elsewhere.
+enum class CullingDevice { Automatic, Cpu, Gpu };
+struct CullingDeviceName {
+  std::string_view name;
+  CullingDevice device;
+};
+inline constexpr CullingDeviceName kCullingDevices[] = {{"auto", CullingDevice::Automatic}, {"cpu", CullingDevice::Cpu}, {"gpu", CullingDevice::Gpu}};
+
 // What the MeshRenderer draws with: a mode name from the technique table and a
 // shading model name from render/lighting/shading_model.hpp.
 struct RendererSettings {
@@ -42,6 +55,7 @@ struct RendererSettings {
   bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)
   bool frustum_culling = true;     // off: every pass draws the whole scene (--no-culling, for comparisons)
   bool occlusion_culling = true;   // with frustum culling: leave out what the depth buffer hides (--no-occlusion-culling)
+  CullingDevice culling_device = CullingDevice::Automatic;  // where occlusion culling runs (--culling)
   int shadows = 0;                 // lights given shadow maps each frame (--shadows K); 0 is off
   bool redraw_shadows = false;     // draw every map every frame, cached or not (bench --shadow-redraw)
 };

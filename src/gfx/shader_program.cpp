@@ -239,6 +239,10 @@ GLint ShaderProgram::location(const char* name) {
 void ShaderProgram::set(const char* name, int value) { glProgramUniform1i(id(), location(name), value); }
 void ShaderProgram::set(const char* name, unsigned value) { glProgramUniform1ui(id(), location(name), value); }
 void ShaderProgram::set(const char* name, const glm::uvec2& v) { glProgramUniform2uiv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, const glm::ivec4& v) { glProgramUniform4iv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, std::span<const glm::ivec4> values) {
+  glProgramUniform4iv(id(), location(name), static_cast<GLsizei>(values.size()), glm::value_ptr(values.front()));
+}
 void ShaderProgram::set(const char* name, float value) { glProgramUniform1f(id(), location(name), value); }
 void ShaderProgram::set(const char* name, const glm::vec2& v) { glProgramUniform2fv(id(), location(name), 1, glm::value_ptr(v)); }
 void ShaderProgram::set(const char* name, const glm::vec3& v) { glProgramUniform3fv(id(), location(name), 1, glm::value_ptr(v)); }

@@ -61,6 +61,8 @@ class ShaderProgram {
   void set(const char* name, int value);
   void set(const char* name, unsigned value);
   void set(const char* name, const glm::uvec2& value);
+  void set(const char* name, const glm::ivec4& value);
+  void set(const char* name, std::span<const glm::ivec4> values);
   void set(const char* name, float value);
   void set(const char* name, const glm::vec2& value);
   void set(const char* name, const glm::vec3& value);

@@ -39,6 +39,7 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       shadows_(gpu),
       depth_reader_(gpu.shaders()),
+      gpu_culling_(gpu.shaders()),
       empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
       tonemap_(&gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
@@ -156,13 +157,14 @@ void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
   materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
   commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
+  active_commands_ = commands_.buffer.id();
   bind_draws();
 }
 
 void MeshRenderer::bind_draws() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, active_commands_);
 }
 
 void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw) {
@@ -170,6 +172,17 @@ void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::Draw
   // Once a frame: a debug view's own geometry pass draws the list as it stands.
   if (!occlusion_pending_) return;
   occlusion_pending_ = false;
+  if (culling_on_gpu_) {
+    // The same phases on the GPU: the revealed commands, then the shown ones
+    // for every pass after this one.
+    gpu_culling_.reveal(depth_stencil_.id(), size_);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, gpu_culling_.revealed_commands());
+    draw(draws_.opaque);
+    gpu_culling_.remember(depth_stencil_.id(), size_);
+    active_commands_ = gpu_culling_.shown_commands();
+    bind_draws();
+    return;
+  }
   const auto& view = registry.resource<ViewState>();
   DepthPyramid depth = depth_reader_.read(depth_stencil_.id(), size_);
   const OcclusionCounts late = reveal_unhidden(registry, depth, view);
@@ -226,11 +239,18 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
   occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling;
+  const CullingDevice device = settings.culling_device != CullingDevice::Automatic ? settings.culling_device
+                               : gfx::is_software_renderer()                        ? CullingDevice::Cpu
+                                                                                    : CullingDevice::Gpu;
+  culling_on_gpu_ = occlusion_pending_ && device == CullingDevice::Gpu;
   draws_ = lighting::build_draw_list(registry, assets, gpu, view.view,
-                                     occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame : lighting::DrawSelection::InView);
+                                     culling_on_gpu_     ? lighting::DrawSelection::EachInView
+                                     : occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame
+                                                          : lighting::DrawSelection::InView);
   const lighting::DrawList& draws = draws_;
   frame_stats_ = {};
   frame_stats_.lights = lights.count;
+  frame_stats_.culled_on_gpu = culling_on_gpu_;
   if (const auto* culling = registry.try_resource<CullingStats>()) {
     frame_stats_.objects = culling->objects;
     frame_stats_.objects_drawn = culling->objects_visible;
@@ -288,6 +308,14 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                      view.far_plane};
   const lighting::FrameTargets frame_targets = targets();
 
+  if (culling_on_gpu_) {
+    // Before anything draws the list: what the last frame showed.
+    graph_.add_pass("occlusion culling", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
+      gpu_culling_.begin(draws_, commands_.buffer.id());
+      active_commands_ = gpu_culling_.first_commands();
+      bind_draws();
+    });
+  }
   const render::ResourceId atlas =
       shadows_.texture() != 0 && settings.shadows > 0
           ? graph_.import_texture("shadow-atlas", shadows_.texture(), {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(frame_stats_.shadows.atlas_size), 1},
@@ -384,15 +412,16 @@ void MeshRenderer::render(ecs::Registry& registry) {
   counted_fragments_ = counting_fragments;
   try {
     graph_.execute(&timer_);
+    // draws_ as the first pass left it (what the passes after it drew).
+    frame_stats_.draw_calls = draws.draw_calls();
+    frame_stats_.triangles = draws.triangles;
+    frame_stats_.triangles_drawn = draws.triangles_drawn;
     take_reports(frame_stats_);
   } catch (const gfx::ResourceLimitError& e) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
                                   std::to_string(size.y) + ": " + e.what());
   }
   timer_.end_frame();
-  frame_stats_.draw_calls = draws.draw_calls();
-  frame_stats_.triangles = draws.triangles;
-  frame_stats_.triangles_drawn = draws.triangles_drawn;
   frame_stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
   stats_ = frame_stats_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
@@ -416,6 +445,13 @@ void MeshRenderer::take_reports(FrameStats& stats) {
   }
   if (counted_lights_) stats.light_evaluations_per_pixel = light_average_;
   if (counted_fragments_) stats.fragments_per_pixel = fragment_average_;
+  if (stats.culled_on_gpu) {
+    // Until the first counts arrive: everything in view, nothing hidden.
+    if (const auto counts = gpu_culling_.take_counts()) {
+      stats.triangles_drawn = counts->triangles_drawn;
+      stats.triangles_occluded = counts->triangles_hidden;
+    }
+  }
   if (!technique_) return;
   const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
   stats.light_list_entries = lists.entries;

@@ -21,6 +21,7 @@
 #include "gfx/stream_buffer.hpp"
 #include "render/frame_graph.hpp"
 #include "render/techniques/technique.hpp"
+#include "render/culling/gpu_occlusion_culling.hpp"
 #include "render/culling/occlusion_culling.hpp"
 #include "render/shadows/shadow_atlas.hpp"
 
@@ -33,6 +34,7 @@ struct FrameStats {
   std::size_t triangles = 0;        // in the scene
   std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum and occlusion culling
   std::size_t triangles_occluded = 0;  // in view, but hidden behind what the first pass drew
+  bool culled_on_gpu = false;       // occlusion culling ran on the GPU: the two counts above arrive a frame or more late
   std::size_t objects = 0;          // entities with a mesh
   std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
@@ -150,6 +152,9 @@ class MeshRenderer {
   bool occlusion_pending_ = false;  // draws_ holds only what the last frame showed; draw_first_pass tests the rest
   shadows::ShadowAtlas shadows_;
   DepthReader depth_reader_;
+  GpuOcclusionCulling gpu_culling_;
+  bool culling_on_gpu_ = false;     // this frame's occlusion culling runs on the GPU (draws_ is an EachInView list)
+  GLuint active_commands_ = 0;      // the indirect buffer passes draw draws_ from (bind_draws)
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)

@@ -121,7 +121,8 @@ void Overlay::statistics(ecs::Registry& registry) {
               stats.triangles, stats.draw_calls);
   ImGui::Text("%zu of %zu objects in view%s", stats.objects_drawn, stats.objects, settings.frustum_culling ? "" : " (culling off)");
   if (settings.frustum_culling && settings.occlusion_culling) {
-    ImGui::Text("%zu triangles in view hidden by depth, not drawn", stats.triangles_occluded);
+    ImGui::Text("%zu triangles in view hidden by depth, not drawn (tested on the %s)", stats.triangles_occluded,
+                stats.culled_on_gpu ? "GPU" : "CPU");
   }
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
@@ -194,6 +195,18 @@ void Overlay::controls(ecs::Registry& registry) {
   ImGui::Checkbox("diffuse and specular apart", &settings.technique_options.split_lighting);
   // Off draws what is in view behind walls too: the same picture, for comparing costs.
   ImGui::Checkbox("occlusion culling", &settings.occlusion_culling);
+  // Where it tests: the same pictures; the CPU reads the depth back, the GPU reads nothing back.
+  std::vector<std::string> devices;
+  std::string device_name;
+  for (const CullingDeviceName& row : kCullingDevices) {
+    devices.emplace_back(row.name);
+    if (row.device == settings.culling_device) device_name = row.name;
+  }
+  if (combo("culling on", device_name, devices, chosen)) {
+    for (const CullingDeviceName& row : kCullingDevices) {
+      if (row.name == chosen) settings.culling_device = row.device;
+    }
+  }
   // K of --shadows: the lights that matter most get maps; 0 turns shadows off.
   ImGui::SliderInt("shadowed lights", &settings.shadows, 0, 256, "%d", ImGuiSliderFlags_Logarithmic);
   int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);

@@ -107,7 +107,7 @@ TEST(Cli, SuggestsTheNearestOptionAndNamesWhereAnOptionBelongs) {
 TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
   const std::map<std::string, std::string> sample{
       {"--mode", "deferred"},       {"--shading", "phong"},          {"--cluster-grid", "8x4x8"},
-      {"--cluster-bounds", "grid"}, {"--z-slicing", "uniform"},      {"--gbuffer", "compact"},
+      {"--cluster-bounds", "grid"}, {"--z-slicing", "uniform"},      {"--gbuffer", "compact"}, {"--culling", "gpu"},
       {"--debug-view", "depth"},    {"--lights", "5"},               {"--light-radius", "2"},
       {"--max-texture-size", "64"}, {"--view", "2"},                 {"--camera", "0,1,2,0,0"},
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},

@@ -43,6 +43,7 @@ struct PendingCommand {
   DrawBatch state;
   DrawCommand command;
   std::vector<std::pair<float, InstanceData>> instances;  // view depth, record; never empty
+  CullRecord cull;  // DrawSelection::EachInView
 };
 
 struct PendingBlend {
@@ -81,7 +82,8 @@ MaterialData material_data(const assets::Material& m, const assets::GpuAssets& g
 bool selected(std::uint8_t state, DrawSelection selection) {
   if (!(state & seen::kInView)) return false;
   switch (selection) {
-    case DrawSelection::InView: return true;
+    case DrawSelection::InView:
+    case DrawSelection::EachInView: return true;
     case DrawSelection::ShownLastFrame: return (state & seen::kLastFrame) != 0;
     case DrawSelection::Revealed: return (state & (seen::kLastFrame | seen::kRevealed)) == seen::kRevealed;
     case DrawSelection::Shown: return (state & (seen::kLastFrame | seen::kRevealed)) != 0;
@@ -105,6 +107,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   std::map<CommandKey, std::size_t> command_of;
   std::vector<PendingCommand> pending;
   std::vector<PendingBlend> blended;
+  const bool each_unit = selection == DrawSelection::EachInView;
 
   registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform& transform, const MeshInstance& instance) {
     const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
@@ -112,6 +115,11 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     const auto* bounds = registry.try_get<WorldBounds>(entity);
     if (bounds && (bounds->asset != instance.asset || bounds->mesh != instance.mesh)) bounds = nullptr;
     const auto* visibility = bounds ? registry.try_get<Visibility>(entity) : nullptr;
+    // Units (GPU culling): the entity's primitives, then its meshlets, numbered
+    // in the registry's order, in view or not, so that a unit keeps its number
+    // from frame to frame.
+    const std::uint32_t first_unit = list.cull_units;
+    if (bounds) list.cull_units += static_cast<std::uint32_t>(bounds->primitives.size() + bounds->meshlets.size());
     const auto& primitives = asset.meshes[instance.mesh].primitives;
     for (const assets::Primitive& primitive : primitives) list.triangles += primitive.indices.size() / 3;
     if (visibility && !visibility->any) return;
@@ -148,12 +156,33 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
-        if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}});
+        if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}, {}});
         pending[it->second].instances.emplace_back(depth, data);
+      };
+      // One command of its own per unit, with the box the GPU tests.
+      auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t unit) {
+        list.triangles_drawn += count / 3;
+        const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), unit, count / 3, {0, 0}};
+        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), {count, 1, range.first_index + offset, range.base_vertex, 0},
+                           {{depth, data}}, cull});
       };
       const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
                               bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
-      if (by_meshlet) {
+      if (each_unit) {
+        if (by_meshlet) {
+          const std::uint32_t first = bounds->meshlet_offsets[p];
+          for (std::uint32_t m = 0; m < primitive.meshlets.size(); ++m) {
+            if (!selected(visibility->meshlets[first + m], selection)) continue;
+            const MeshletBounds& sphere = bounds->meshlets[first + m];
+            add_unit(primitive.meshlets[m].first_index, primitive.meshlets[m].index_count, sphere.center - sphere.radius,
+                     sphere.center + sphere.radius, first_unit + static_cast<std::uint32_t>(bounds->primitives.size()) + first + m);
+          }
+        } else if (bounds && p < bounds->primitives.size()) {
+          add_unit(0, range.index_count, bounds->primitives[p].min, bounds->primitives[p].max, first_unit + p);
+        } else {
+          add_unit(0, range.index_count, glm::vec3(0.0f), glm::vec3(0.0f), CullRecord::kNeverCulled);
+        }
+      } else if (by_meshlet) {
         const std::uint8_t* meshlet_states = visibility->meshlets.data() + bounds->meshlet_offsets[p];
         assets::for_each_meshlet_run(primitive.meshlets, [&](std::size_t m) { return selected(meshlet_states[m], selection); }, add_run);
       } else if (selected(state, selection)) {
@@ -194,6 +223,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
     for (const auto& [depth, record] : pending_command.instances) list.instances.push_back(record);
     append(list.opaque, pending_command.state, command, pending_command.instances.front().first);
+    if (each_unit) list.cull_records.push_back(pending_command.cull);
   }
   // Blended: farthest first, one instance per command.
   std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });

@@ -74,6 +74,19 @@ struct DrawCommand {
 };
 static_assert(sizeof(DrawCommand) == 20, "GL reads indirect commands as five 32-bit words");
 
+// std430 twin of CullRecord in shaders/culling/occlusion_cull.comp: what GPU
+// occlusion culling tests for one opaque command of a DrawSelection::EachInView
+// list (one primitive or meshlet of one instance).
+struct CullRecord {
+  static constexpr std::uint32_t kNeverCulled = 0xffffffffu;  // an entity without bounds: always drawn
+  glm::vec4 box_min{0.0f};  // world space; w unused
+  glm::vec4 box_max{0.0f};
+  std::uint32_t unit = kNeverCulled;  // its slot in the GPU's shown-last-frame bits, stable while the scene's entities are
+  std::uint32_t triangles = 0;
+  std::uint32_t padding[2] = {0, 0};
+};
+static_assert(sizeof(CullRecord) == 48, "must match CullRecord in shaders/culling/occlusion_cull.comp");
+
 // One glMultiDrawElementsIndirect: commands sharing a vertex array, the five
 // material textures and samplers, and a cull state.
 struct DrawBatch {
@@ -106,6 +119,10 @@ struct DrawList {
   std::vector<float> command_depths;  // per command: view depth of its nearest instance's primitive centre
   std::vector<InstanceData> instances;
   std::vector<MaterialData> materials;
+  // DrawSelection::EachInView only: one record per opaque command (commands
+  // [0, cull_records.size())), and how many units the scene has in all.
+  std::vector<CullRecord> cull_records;
+  std::uint32_t cull_units = 0;
   std::size_t triangles = 0;        // in the scene, every instance, visible or not
   std::size_t triangles_drawn = 0;  // by one pass over opaque and blended: what culling kept
 
@@ -119,6 +136,7 @@ enum class DrawSelection {
   ShownLastFrame,  // what the first pass draws before testing the rest
   Revealed,        // what it draws after (opaque geometry only)
   Shown,           // both: what the passes after the first draw
+  EachInView,      // all of it, one command per primitive or meshlet with its box (CullRecord): the GPU culls
 };
 // Whether a primitive or meshlet in `state` (seen:: bits) belongs to `selection`.
 [[nodiscard]] bool selected(std::uint8_t state, DrawSelection selection);

@@ -71,12 +71,18 @@ TEST(DepthPyramid, KeepsBoxesAtTheNearPlaneBehindTheCameraOrOffScreen) {
   EXPECT_FALSE(scene.hides(DepthPyramid(), glm::vec3(0.0f, 0.0f, -20.0f), 1.0f)) << "no depth read";
 }
 
-using OcclusionCulling = testing::GlTest;
+// Each picture test runs with the test on the CPU (the depth read back) and on
+// the GPU (render/culling/gpu_occlusion_culling.hpp: nothing read back).
+class OcclusionCulling : public testing::GlTest, public ::testing::WithParamInterface<CullingDevice> {};
 
 using testing::kSize;
 const std::string kGrid = std::string(ATRIUM_SOURCE_DIR) + "/scenes/courtyard-grid.json";
 
-void set_occlusion_culling(World& world, bool on) { world.registry().resource<RendererSettings>().occlusion_culling = on; }
+void set_occlusion_culling(World& world, bool on, CullingDevice device = CullingDevice::Cpu) {
+  auto& settings = world.registry().resource<RendererSettings>();
+  settings.occlusion_culling = on;
+  settings.culling_device = device;
+}
 
 struct Frame {
   assets::Image image;
@@ -84,18 +90,21 @@ struct Frame {
   std::size_t triangles_occluded = 0;
 };
 
+// One frame; its counts as they stand once the GPU has finished it (on the
+// GPU path they arrive a frame or more late).
 Frame draw(World& world) {
   world.frame(0.0);
+  world.renderer().settle();
   return {world.renderer().read_output(), world.renderer().stats().triangles_drawn, world.renderer().stats().triangles_occluded};
 }
 
-TEST_F(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTriangles) {
+TEST_P(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTriangles) {
   World world({.scene = kGrid, .lights = 256u, .mode = "clustered-deferred", .size = kSize});
   for (int view = 1; view <= 5; ++view) {
     world.set_view(view);
     set_occlusion_culling(world, false);
     const Frame all = draw(world);
-    set_occlusion_culling(world, true);
+    set_occlusion_culling(world, true, GetParam());
     draw(world);  // learns what shows
     const Frame culled = draw(world);
     assets::write_png("occlusion_grid_view" + std::to_string(view) + ".png", culled.image);
@@ -110,9 +119,10 @@ TEST_F(OcclusionCulling, TheGridStreetsDrawTheSamePictureFromAFractionOfTheTrian
   }
 }
 
-TEST_F(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHid) {
+TEST_P(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHid) {
   World world({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
   World reference({.scene = kGrid, .lights = 256u, .mode = "clustered-forward", .view = 4, .size = kSize});
+  set_occlusion_culling(world, true, GetParam());
   set_occlusion_culling(reference, false);
   draw(world);
   draw(world);
@@ -126,7 +136,7 @@ TEST_F(OcclusionCulling, TheFirstFrameAfterTheCameraJumpsDrawsWhatTheLastFrameHi
   }
 }
 
-TEST_F(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
+TEST_P(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
   for (const int samples : {1, 4}) {
     WorldOptions options{.scene = kGrid, .lights = 256u, .mode = "forward", .view = 5, .size = kSize};
     options.technique_options.msaa = samples;
@@ -135,12 +145,45 @@ TEST_F(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
       world.set_mode(mode);
       set_occlusion_culling(world, false);
       const Frame all = draw(world);
-      set_occlusion_culling(world, true);
+      set_occlusion_culling(world, true, GetParam());
       draw(world);
       const Frame culled = draw(world);
       EXPECT_GE(assets::psnr(all.image, culled.image), 60.0) << mode << ", MSAA " << samples;
       EXPECT_LT(culled.triangles_drawn, all.triangles_drawn / 3) << mode << ", MSAA " << samples;
     }
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Device, OcclusionCulling, ::testing::Values(CullingDevice::Cpu, CullingDevice::Gpu),
+                         [](const ::testing::TestParamInfo<CullingDevice>& info) {
+                           return info.param == CullingDevice::Cpu ? std::string("Cpu") : std::string("Gpu");
+                         });
+
+// The GPU's box test is the CPU's twin: from the same depth both leave out the
+// same triangles, view after view, and the GPU's frame reads nothing back.
+using OcclusionCullingTwins = testing::GlTest;
+
+TEST_F(OcclusionCullingTwins, TheGpuHidesWhatTheCpuHidesWithoutWaiting) {
+  World cpu({.scene = kGrid, .lights = 256u, .mode = "tiled-deferred", .size = kSize});
+  World gpu({.scene = kGrid, .lights = 256u, .mode = "tiled-deferred", .size = kSize});
+  set_occlusion_culling(cpu, true, CullingDevice::Cpu);
+  set_occlusion_culling(gpu, true, CullingDevice::Gpu);
+  for (int view = 1; view <= 5; ++view) {
+    cpu.set_view(view);
+    gpu.set_view(view);
+    draw(cpu);
+    draw(gpu);
+    const Frame on_cpu = draw(cpu);
+    gpu.frame(0.0);
+    EXPECT_EQ(gpu.renderer().stats().gpu_waits, 0u) << "view " << view;
+    EXPECT_TRUE(gpu.renderer().stats().culled_on_gpu);
+    EXPECT_FALSE(cpu.renderer().stats().culled_on_gpu);
+    gpu.renderer().settle();
+    const Frame on_gpu{gpu.renderer().read_output(), gpu.renderer().stats().triangles_drawn, gpu.renderer().stats().triangles_occluded};
+    EXPECT_GT(on_gpu.triangles_occluded, 0u) << "view " << view;
+    EXPECT_EQ(on_gpu.triangles_occluded, on_cpu.triangles_occluded) << "view " << view;
+    EXPECT_EQ(on_gpu.triangles_drawn, on_cpu.triangles_drawn) << "view " << view;
+    EXPECT_EQ(assets::psnr(on_cpu.image, on_gpu.image), std::numeric_limits<double>::infinity()) << "view " << view;
   }
 }
 

@@ -1,0 +1,77 @@
+// Occlusion culling with nothing read back (--culling gpu): the same two phases
+// and the same box test as the CPU path (occlusion_culling.hpp), on the GPU.
+// The frame's list holds everything in view, one indirect command per
+// primitive or meshlet with its box (DrawSelection::EachInView); the depth
+// pyramid is built from the depth buffer by culling/depth_tiles.comp and
+// culling/depth_pyramid.comp, and culling/occlusion_cull.comp writes the
+// commands each phase draws (instance count 0 for what it leaves out) and
+// which units the next frame draws first. Its counts come back through a
+// ReadbackRing a frame or more late.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfx/gl_object.hpp"
+#include "gfx/readback_ring.hpp"
+#include "gfx/shader_library.hpp"
+#include "gfx/stream_buffer.hpp"
+#include "render/frame/draw_list.hpp"
+
+namespace atrium {
+
+struct GpuCullingCounts {
+  std::size_t triangles_drawn = 0;   // by the passes after the first (opaque shown and blended)
+  std::size_t triangles_hidden = 0;  // in view, hidden by the frame's full depth
+};
+
+// The levels of a depth pyramid over a `viewport`-sized depth buffer: per
+// level, xy its size in texels (8x8-pixel tiles at level 0, each level half
+// the one below, rounded up, down to 1x1) and z the offset of its first texel
+// when all levels lie in one array, finest first.
+[[nodiscard]] std::vector<glm::ivec4> depth_pyramid_levels(glm::ivec2 viewport);
+
+class GpuOcclusionCulling {
+ public:
+  explicit GpuOcclusionCulling(gfx::ShaderLibrary& shaders);
+
+  // Uploads the boxes of `list` (a DrawSelection::EachInView list whose
+  // commands are in `commands`) and writes first_commands(): what the last
+  // frame showed. The frame uniforms must be bound.
+  void begin(const lighting::DrawList& list, GLuint commands);
+  // After the first phase drew into `depth`: writes revealed_commands() (what
+  // that depth does not hide and was not drawn) and shown_commands() (both).
+  void reveal(GLuint depth, glm::ivec2 size);
+  // After the revealed commands drew: remembers what the full depth does not
+  // hide for the next frame and queues the frame's counts.
+  void remember(GLuint depth, glm::ivec2 size);
+
+  [[nodiscard]] GLuint first_commands() const { return first_.buffer.id(); }
+  [[nodiscard]] GLuint revealed_commands() const { return revealed_.buffer.id(); }
+  [[nodiscard]] GLuint shown_commands() const { return shown_.buffer.id(); }
+
+  // The newest counts that have arrived; nullopt until one has. Never waits.
+  [[nodiscard]] std::optional<GpuCullingCounts> take_counts();
+
+ private:
+  void build_pyramid(GLuint depth, glm::ivec2 size);
+  void cull(unsigned phase);
+
+  gfx::ShaderLibrary& shaders_;
+  gfx::StreamBuffer first_, revealed_, shown_, records_, pyramid_;
+  GLuint commands_ = 0;
+  std::uint32_t command_count_ = 0, opaque_count_ = 0;
+  std::size_t blended_triangles_ = 0;
+  gfx::Buffer last_shown_;  // one uint per unit: 1 where the last frame's full depth did not hide it
+  std::uint32_t units_ = 0;
+  gfx::Buffer counters_;  // occlusion_cull.comp's u_counters
+  std::vector<glm::ivec4> levels_;
+  gfx::ReadbackRing readback_;
+  std::optional<GpuCullingCounts> counts_;
+};
+
+}  // namespace atrium
