@@ -42,7 +42,7 @@ TEST_F(TextureLimits, ATextureOverTheCapIsDownscaledWithOneWarningAndDrawsTheSam
 
   World capped(options(kBig, 1024));
   EXPECT_THAT(capped.load_report().warnings,
-              ::testing::ElementsAre(::testing::HasSubstr("texture 0 'images[0] (quadrants-16384.png)' is 16384x16384, more than "
+              ::testing::ElementsAre(::testing::HasSubstr("texture 0 '/images/0 (quadrants-16384.png)' is 16384x16384, more than "
                                                           "--max-texture-size allows (1024); it is downscaled to 1024x1024")));
   EXPECT_EQ(uploaded_size(capped), glm::ivec2(1024, 1024));
   EXPECT_GE(assets::psnr(reference, render(capped)), 35.0) << "the 64x64 texture of the same quadrants";
