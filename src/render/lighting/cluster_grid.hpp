@@ -63,6 +63,8 @@ class ClusterGrid {
   [[nodiscard]] std::uint32_t cluster_count() const { return dims_.x * dims_.y * dims_.z; }
   [[nodiscard]] std::uint32_t slice_of(float view_depth) const;
   [[nodiscard]] const std::vector<ClusterBox>& boxes() const { return boxes_; }
+  [[nodiscard]] const glm::mat4& projection() const { return projection_; }
+  [[nodiscard]] float near_plane() const { return near_; }
   [[nodiscard]] const LightIndexList& list() const { return list_; }
   [[nodiscard]] LightIndexList& list() { return list_; }
   [[nodiscard]] std::uint32_t rebuilds() const { return rebuilds_; }

@@ -1,0 +1,138 @@
+#include "render/lighting/cpu_light_lists.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+namespace atrium::lighting {
+namespace {
+
+// Twins of clustered/assign.comp's candidate walk (without pixel boxes, whose
+// pad only widens the walk): which clusters a light may reach.
+struct ClusterWalk {
+  const ClusterGrid& grid;
+  glm::uvec3 dims = grid.dims();
+  float near_plane = grid.near_plane();
+  glm::vec2 scale{1.0f / grid.projection()[0][0], 1.0f / grid.projection()[1][1]};
+
+  [[nodiscard]] std::uint32_t cluster_at(std::uint32_t x, std::uint32_t y, std::uint32_t z) const { return (z * dims.y + y) * dims.x + x; }
+
+  // cell_run: the columns (or rows) of a slice between depths d0 and d1 whose
+  // boxes may reach [lo, hi], one more on each side for rounding.
+  static glm::uvec2 cell_run(float lo, float hi, float d0, float d1, float scale, std::uint32_t cells) {
+    const float t = lo / scale, u = hi / scale;
+    const float least_right = t >= 0.0f ? t / d1 : t / d0;
+    const float most_left = u >= 0.0f ? u / d0 : u / d1;
+    const auto n = static_cast<float>(cells);
+    const float first = std::clamp(std::ceil((least_right + 1.0f) * 0.5f * n) - 2.0f, 0.0f, n - 1.0f);
+    const float last = std::clamp(std::floor((most_left + 1.0f) * 0.5f * n) + 1.0f, 0.0f, n - 1.0f);
+    return {static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last)};
+  }
+
+  // Calls visit(cluster) for every cluster the view-space sphere touches (a
+  // negative radius touches all of them), in the GPU's candidate order.
+  template <typename Visit>
+  void each_touched(glm::vec4 sphere, Visit visit) const {
+    const std::vector<ClusterBox>& boxes = grid.boxes();
+    if (sphere.w < 0.0f) {
+      for (std::uint32_t c = 0; c < boxes.size(); ++c) visit(c);
+      return;
+    }
+    const glm::vec3 centre(sphere);
+    const float far_depth = -sphere.z + sphere.w;
+    if (far_depth < near_plane * 0.5f) return;
+    // The same slack as the GPU's: a slice more each way, a millimetre per metre more reach.
+    const float reach = sphere.w + 2.0f * 1e-3f * (1.0f + std::max(far_depth, 0.0f));
+    const std::uint32_t first_slice = static_cast<std::uint32_t>(std::max(static_cast<int>(grid.slice_of(-sphere.z - sphere.w)) - 1, 0));
+    const std::uint32_t last_slice = std::min(grid.slice_of(far_depth) + 1, dims.z - 1);
+    for (std::uint32_t z = first_slice; z <= last_slice; ++z) {
+      const ClusterBox& slice = boxes[cluster_at(0, 0, z)];
+      const float d0 = -slice.hi.z, d1 = -slice.lo.z;
+      const glm::uvec2 columns = cell_run(centre.x - reach, centre.x + reach, d0, d1, scale.x, dims.x);
+      const glm::uvec2 rows = cell_run(centre.y - reach, centre.y + reach, d0, d1, scale.y, dims.y);
+      for (std::uint32_t y = rows.x; y <= rows.y; ++y) {
+        for (std::uint32_t x = columns.x; x <= columns.y; ++x) {
+          const std::uint32_t cluster = cluster_at(x, y, z);
+          const glm::vec3 nearest = glm::clamp(centre, glm::vec3(boxes[cluster].lo), glm::vec3(boxes[cluster].hi)) - centre;
+          if (glm::dot(nearest, nearest) <= sphere.w * sphere.w) visit(cluster);
+        }
+      }
+    }
+  }
+};
+
+// GLSL twin: view_sphere in common/light_scatter.glsl.
+glm::vec4 view_sphere(const GpuLight& light, const glm::mat4& view) {
+  const bool everywhere = light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+  return glm::vec4(glm::vec3(view * glm::vec4(glm::vec3(light.position_radius), 1.0f)), everywhere ? -1.0f : light.position_radius.w);
+}
+
+}  // namespace
+
+CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid, unsigned threads) {
+  const ClusterWalk walk{grid};
+  const std::size_t bins = grid.boxes().size();
+  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t shares = std::clamp<std::size_t>(lights.size() / kLightsPerBinningThread, 1, threads);
+
+  // Each share (a run of lights in order) keeps the bins its lights touch,
+  // light by light, and counts them per bin.
+  struct Share {
+    std::size_t first_light = 0, end_light = 0;
+    std::vector<std::uint32_t> touched;        // bins, light after light
+    std::vector<std::uint32_t> per_light;      // how many of `touched` each light has
+    std::vector<std::uint32_t> counts;         // per bin; then this share's cursor in each bin
+  };
+  std::vector<Share> split(shares);
+  auto gather = [&](Share& share) {
+    share.counts.assign(bins, 0);
+    share.per_light.reserve(share.end_light - share.first_light);
+    for (std::size_t l = share.first_light; l < share.end_light; ++l) {
+      const std::size_t before = share.touched.size();
+      walk.each_touched(view_sphere(lights[l], view), [&](std::uint32_t bin) {
+        share.touched.push_back(bin);
+        ++share.counts[bin];
+      });
+      share.per_light.push_back(static_cast<std::uint32_t>(share.touched.size() - before));
+    }
+  };
+  for (std::size_t s = 0; s < shares; ++s) {
+    split[s].first_light = lights.size() * s / shares;
+    split[s].end_light = lights.size() * (s + 1) / shares;
+  }
+  {
+    std::vector<std::jthread> workers;
+    for (std::size_t s = 1; s < shares; ++s) workers.emplace_back([&, s] { gather(split[s]); });
+    gather(split[0]);
+  }
+
+  // A bin's entries: every share's, in share (so light) order.
+  CpuLightLists lists;
+  lists.ranges.resize(bins);
+  std::uint32_t total = 0;
+  for (std::size_t b = 0; b < bins; ++b) {
+    lists.ranges[b].x = total;
+    for (Share& share : split) {
+      const std::uint32_t count = share.counts[b];
+      share.counts[b] = total;
+      total += count;
+    }
+    lists.ranges[b].y = total - lists.ranges[b].x;
+  }
+  lists.indices.resize(total);
+  auto write = [&](Share& share) {
+    std::size_t next = 0;
+    for (std::size_t l = share.first_light; l < share.end_light; ++l) {
+      const std::uint32_t count = share.per_light[l - share.first_light];
+      for (std::uint32_t k = 0; k < count; ++k) lists.indices[share.counts[share.touched[next++]]++] = static_cast<std::uint32_t>(l);
+    }
+  };
+  {
+    std::vector<std::jthread> workers;
+    for (std::size_t s = 1; s < shares; ++s) workers.emplace_back([&, s] { write(split[s]); });
+    write(split[0]);
+  }
+  return lists;
+}
+
+}  // namespace atrium::lighting

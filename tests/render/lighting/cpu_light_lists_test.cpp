@@ -1,0 +1,90 @@
+// CPU light binning, the compute-free tier's light assignment: the same lists
+// as the GPU's clustered assignment (grid bounds, light order included) and as
+// the brute-force CPU reference (every light against every cluster), on one
+// thread and on several, for lights a scene draws and for the awkward ones
+// (a sun, a light behind the camera, one across the near plane, one that
+// covers the grid).
+#include <random>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "app/world.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/depth.hpp"
+#include "render/lighting/cpu_light_lists.hpp"
+#include "render/techniques/clustered/clustered.hpp"
+#include "support/gl_test.hpp"
+
+namespace atrium {
+namespace {
+
+using CpuLightLists = testing::GlTest;
+
+// The lists as light indices per bin, as ClusterGrid::read_lists gives them.
+std::vector<std::vector<std::uint32_t>> per_bin(const lighting::CpuLightLists& lists) {
+  std::vector<std::vector<std::uint32_t>> out(lists.ranges.size());
+  for (std::size_t b = 0; b < lists.ranges.size(); ++b) {
+    const glm::uvec2 range = lists.ranges[b];
+    out[b].assign(lists.indices.begin() + range.x, lists.indices.begin() + range.x + range.y);
+  }
+  return out;
+}
+
+TEST_F(CpuLightLists, EqualTheGpuListsOfTheSameGridInLightOrder) {
+  for (const lighting::ZSlicing slicing : {lighting::ZSlicing::Log, lighting::ZSlicing::Uniform}) {
+    World world({.scene = "atrium", .lights = 6000u, .mode = "clustered-forward", .view = 2, .size = {160, 90}, .light_radius = 1.5f});
+    auto& options = world.registry().resource<RendererSettings>().technique_options;
+    options.cluster_grid = {8, 5, 12};
+    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    options.z_slicing = slicing;
+    world.frame(0.0);
+    world.renderer().settle();
+    world.frame(0.0);
+    const auto& technique = dynamic_cast<const lighting::ClusteredTechnique&>(*world.renderer().technique());
+    const auto gpu = technique.grid().read_lists();
+    const auto& lights = world.registry().resource<LightBuffer>().staging;
+    const glm::mat4& view = world.registry().resource<ViewState>().view;
+    std::size_t entries = 0;
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      const auto cpu = per_bin(lighting::bin_lights_in_clusters(lights, view, technique.grid(), threads));
+      ASSERT_EQ(cpu.size(), gpu.size());
+      for (std::size_t c = 0; c < cpu.size(); ++c) EXPECT_EQ(cpu[c], gpu[c]) << "cluster " << c << ", " << threads << " threads";
+      entries = 0;
+      for (const auto& list : cpu) entries += list.size();
+    }
+    EXPECT_GT(entries, 6000u) << "lights reach several clusters";
+  }
+}
+
+TEST_F(CpuLightLists, AwkwardLightsEqualTheBruteForceReference) {
+  constexpr float kNear = 0.1f, kFar = 80.0f;
+  lighting::ClusterGrid grid({16, 9, 24});
+  grid.update(gfx::perspective(glm::radians(60.0f), 16.0f / 9.0f, kNear, kFar), kNear, kFar);
+  const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 2.0f, 10.0f), glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
+  auto light = [](glm::vec3 position, float radius, GpuLightKind kind = GpuLightKind::Point) {
+    GpuLight l{};
+    l.position_radius = glm::vec4(position, radius);
+    l.color_kind = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(kind));
+    return l;
+  };
+  std::vector<GpuLight> lights{
+      light(glm::vec3(0.0f), 0.0f, GpuLightKind::Directional),  // everywhere
+      light(glm::vec3(0.0f, 2.0f, 20.0f), 3.0f),                 // behind the camera
+      light(glm::vec3(0.3f, 2.0f, 10.0f), 1.0f),                 // around the eye, across the near plane
+      light(glm::vec3(0.0f, 2.0f, 0.0f), 200.0f),                // covers the whole grid
+      light(glm::vec3(0.0f, 2.0f, -69.0f), 12.0f),               // across the far plane
+  };
+  std::mt19937 random(3);
+  std::uniform_real_distribution<float> x(-30.0f, 30.0f), y(-5.0f, 15.0f), z(-90.0f, 15.0f), r(0.05f, 6.0f);
+  for (int i = 0; i < 5000; ++i) lights.push_back(light(glm::vec3(x(random), y(random), z(random)), r(random)));
+  const auto reference = grid.assign_on_cpu(lights, view);
+  for (const unsigned threads : {1u, 2u}) {
+    const auto binned = per_bin(lighting::bin_lights_in_clusters(lights, view, grid, threads));
+    ASSERT_EQ(binned.size(), reference.size());
+    for (std::size_t c = 0; c < binned.size(); ++c) EXPECT_EQ(binned[c], reference[c]) << "cluster " << c << ", " << threads << " threads";
+  }
+  EXPECT_EQ(reference[0].front(), 0u) << "the sun is in every cluster";
+}
+
+}  // namespace
+}  // namespace atrium
