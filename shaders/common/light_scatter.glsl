@@ -91,7 +91,7 @@ shared bool s_fits;
 
 // A large light's steps: each invocation of the group takes every 64th candidate.
 void large_light(uint light) {
-  vec4 sphere = view_sphere(u_lights[light]);
+  vec4 sphere = view_sphere(light_at(light));
   uint lane = gl_LocalInvocationIndex;
   g_light = light;
   if (u_step == kStepWriteLarge) {
@@ -125,7 +125,7 @@ void main() {
 void main() {
   uint light = gl_GlobalInvocationID.x;
   if (light >= u_light_count) return;
-  vec4 sphere = view_sphere(u_lights[light]);
+  vec4 sphere = view_sphere(light_at(light));
   g_light = light;
   if (u_step == kStepWrite) {
     if (u_light_fits[light] != kFitsAlone) return;

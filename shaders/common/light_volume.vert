@@ -17,7 +17,7 @@ flat out uint v_light;
 
 void main() {
   v_light = u_instanced != 0 ? u_first_instance + uint(gl_InstanceID) : u_light_index;
-  Light light = u_lights[v_light];
+  Light light = light_at(v_light);
   if (uint(light.color_kind.w) == kLightDirectional) {
     gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing is drawn
     return;

@@ -12,9 +12,25 @@ struct Light {
                          // z = 1 + first shadow view (0: unshadowed), w = shadow view count
 };
 
+#ifdef NO_STORAGE_BUFFERS
+// The compute-free tier (no storage buffers): the same records in a texture,
+// four RGBA32F texels per light, kLightTextureWidth texels a row (C++ twins in
+// src/render/storage_free.hpp).
+const uint kLightTextureWidth = 2048u;
+layout(binding = 10) uniform highp sampler2D u_light_texture;
+
+Light light_at(uint i) {
+  ivec2 at = ivec2((i * 4u) % kLightTextureWidth, (i * 4u) / kLightTextureWidth);
+  return Light(texelFetch(u_light_texture, at, 0), texelFetch(u_light_texture, at + ivec2(1, 0), 0),
+               texelFetch(u_light_texture, at + ivec2(2, 0), 0), texelFetch(u_light_texture, at + ivec2(3, 0), 0));
+}
+#else
 layout(std430, binding = 0) readonly buffer LightBlock {
   Light u_lights[];
 };
+
+Light light_at(uint i) { return u_lights[i]; }
+#endif
 
 // Whether a light can contribute at `position`: directional lights always,
 // point and spot lights within their radius (beyond it the falloff is zero).

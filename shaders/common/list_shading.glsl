@@ -14,10 +14,10 @@ LightSum shade_listed_lights(Surface s, LightRange range) {
   LightSum sum = no_light();
   uint end = range.offset + range.count;
   uint i = range.offset;
-  for (; i < end && has_shadow_maps(u_lights[u_light_indices[i]]); ++i) add_light_as(sum, s, v, u_lights[u_light_indices[i]], true);
-  for (; i < end; ++i) add_light_as(sum, s, v, u_lights[u_light_indices[i]], false);
-  for (uint o = 0u; o < u_overflow_count; ++o) {
-    Light light = u_lights[u_overflow_lights[o]];
+  for (; i < end && has_shadow_maps(light_at(light_index(i))); ++i) add_light_as(sum, s, v, light_at(light_index(i)), true);
+  for (; i < end; ++i) add_light_as(sum, s, v, light_at(light_index(i)), false);
+  for (uint o = 0u; o < overflow_count(); ++o) {
+    Light light = light_at(overflow_light(o));
     if (light_reaches(light, s.position)) add_light(sum, s, v, light);
   }
   return sum;

@@ -16,11 +16,11 @@ flat in uint v_material;
 flat in uint v_material_flags;
 
 // < 0 when the fragment's material is not alpha-masked.
-float material_alpha_cutoff() { return u_materials[v_material].alpha_cutoff; }
+float material_alpha_cutoff() { return material_at(v_material).alpha_cutoff; }
 
 // uv: per texture slot, its coordinates (mesh.vert's v_uv).
 Surface evaluate_surface(vec3 position, vec3 normal, vec4 tangent, vec2 uv[5], vec4 color, bool front_facing) {
-  Material m = u_materials[v_material];
+  Material m = material_at(v_material);
   uint flags = v_material_flags;
   Surface s;
   s.position = position;

@@ -25,7 +25,33 @@ struct Instance {
   mat4 normal_matrix;  // the inverse transpose in the upper-left 3x3
   uvec4 material;      // x: index into the frame's material table (material_data.glsl)
 };
+#ifdef NO_STORAGE_BUFFERS
+// The compute-free tier: the records in a texture, 9 RGBA32F texels each,
+// kInstancesPerRow a row (C++ twin: kInstanceTexels and kInstancesPerRow in
+// src/render/storage_free.hpp).
+// Without base instances (WebGL2, GLES 3.0) a_instance is the draw's first
+// instance, set as a constant attribute, and gl_InstanceID counts from it.
+layout(binding = 11) uniform highp sampler2D u_instance_texture;
+
+const uint kInstancesPerRow = 227u;  // 2,043 texels: within WebGL2's least texture width, 2,048
+
+Instance instance_at(uint i) {
+  ivec2 row = ivec2(int(i % kInstancesPerRow) * 9, int(i / kInstancesPerRow));
+  Instance instance;
+  for (int c = 0; c < 4; ++c) {
+    instance.model[c] = texelFetch(u_instance_texture, row + ivec2(c, 0), 0);
+    instance.normal_matrix[c] = texelFetch(u_instance_texture, row + ivec2(4 + c, 0), 0);
+  }
+  instance.material = uvec4(texelFetch(u_instance_texture, row + ivec2(8, 0), 0));  // whole numbers stored as floats
+  return instance;
+}
+uint instance_index() { return a_instance + uint(gl_InstanceID); }
+#else
 layout(std430, binding = 1) readonly buffer Instances { Instance u_instances[]; };
+
+Instance instance_at(uint i) { return u_instances[i]; }
+uint instance_index() { return a_instance; }
+#endif
 
 #ifndef POSITION_ONLY
 out vec3 v_position;
@@ -51,7 +77,7 @@ uniform mat4 u_shadow_view_projection;
 invariant gl_Position;
 
 void main() {
-  Instance instance = u_instances[a_instance];
+  Instance instance = instance_at(instance_index());
   vec4 world = instance.model * vec4(a_position, 1.0);
 #ifdef SHADOW_PASS
   gl_Position = u_shadow_view_projection * world;
@@ -65,7 +91,7 @@ void main() {
   // cross(normal, tangent) gives, so the handedness turns with it.
   float handedness = determinant(mat3(instance.model)) < 0.0 ? -a_tangent.w : a_tangent.w;
   v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, handedness);
-  Material material = u_materials[instance.material.x];
+  Material material = material_at(instance.material.x);
   for (int slot = 0; slot < 5; ++slot) {
     vec3 uv = vec3((material.uv_sets & (1u << slot)) != 0u ? a_uv1 : a_uv0, 1.0);
     v_uv[slot] = vec2(dot(material.uv_transform[2 * slot].xyz, uv), dot(material.uv_transform[2 * slot + 1].xyz, uv));

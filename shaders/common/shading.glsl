@@ -118,13 +118,13 @@ const bool kShadowedLights = false;
 // beyond its radius).
 void add_buffer_lights_culled(inout LightSum sum, Surface s, vec3 v, bool radius_cull) {
   uint i = 0u;
-  for (; i < u_light_count && has_shadow_maps(u_lights[i]); ++i) {
-    if (radius_cull && !light_reaches(u_lights[i], s.position)) continue;
-    add_light_as(sum, s, v, u_lights[i], true);
+  for (; i < u_light_count && has_shadow_maps(light_at(i)); ++i) {
+    if (radius_cull && !light_reaches(light_at(i), s.position)) continue;
+    add_light_as(sum, s, v, light_at(i), true);
   }
   for (; i < u_light_count; ++i) {
-    if (radius_cull && !light_reaches(u_lights[i], s.position)) continue;
-    add_light_as(sum, s, v, u_lights[i], false);
+    if (radius_cull && !light_reaches(light_at(i), s.position)) continue;
+    add_light_as(sum, s, v, light_at(i), false);
   }
 }
 

@@ -8,5 +8,5 @@ uniform uvec2 u_tiles;
 // The sum of the lights in the tile of `s` (the unlit terms are the caller's).
 LightSum shade_tile_lights(Surface s, vec2 frag_coord) {
   uvec2 tile = uvec2(frag_coord) / 16u;
-  return shade_listed_lights(s, u_light_ranges[tile.y * u_tiles.x + tile.x]);
+  return shade_listed_lights(s, light_range(tile.y * u_tiles.x + tile.x));
 }

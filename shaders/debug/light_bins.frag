@@ -21,10 +21,10 @@ layout(location = 0) out vec4 out_color;
 #ifdef LIGHT_BINS
 // Whether a light of this frame's overflow list reaches the surface at `depth`.
 bool reached_by_overflow(float depth) {
-  if (u_overflow_count == 0u || depth <= kDepthFar) return false;
+  if (overflow_count() == 0u || depth <= kDepthFar) return false;
   vec4 point = u_inverse_view_projection * vec4(gl_FragCoord.xy / u_viewport_size * 2.0 - 1.0, depth, 1.0);
-  for (uint o = 0u; o < u_overflow_count; ++o) {
-    if (light_reaches(u_lights[u_overflow_lights[o]], point.xyz / point.w)) return true;
+  for (uint o = 0u; o < overflow_count(); ++o) {
+    if (light_reaches(light_at(overflow_light(o)), point.xyz / point.w)) return true;
   }
   return false;
 }
@@ -40,9 +40,9 @@ void main() {
 #else
 #if LIGHT_BINS == 1
   uvec2 tile = uvec2(gl_FragCoord.xy) / u_tile_size;
-  LightRange range = u_light_ranges[tile.y * u_tiles.x + tile.x];
+  LightRange range = light_range(tile.y * u_tiles.x + tile.x);
 #else
-  LightRange range = u_light_ranges[cluster_index(gl_FragCoord.xy, u_viewport_size, view_depth)];
+  LightRange range = light_range(cluster_index(gl_FragCoord.xy, u_viewport_size, view_depth));
 #endif
   vec3 color = reached_by_overflow(depth) ? kHeatmapOverflow : count_colour(range.count, u_scale_max);
 #endif

@@ -16,7 +16,7 @@ void main() {
   // Derivatives stay defined: every pixel of a quad runs the same loop, and
   // the light kind is the same for all of them.
   for (uint i = 0u; i < u_light_count; ++i) {
-    Light light = u_lights[i];
+    Light light = light_at(i);
     if (uint(light.color_kind.w) == kLightDirectional) continue;
     // Signed distance to the sphere; its change across a pixel sets the width.
     float edge = distance(light.position_radius.xyz, s.position) - light.position_radius.w;

@@ -46,9 +46,9 @@ void main() {
   if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) discard;
   vec3 v = normalize(u_camera_position.xyz - s.position);
 #ifdef DIRECTIONAL_ONLY
-  accumulate(s, v, u_lights[u_light_index], has_shadow_maps(u_lights[u_light_index]));
+  accumulate(s, v, light_at(u_light_index), has_shadow_maps(light_at(u_light_index)));
 #else
-  accumulate(s, v, u_lights[v_light], kShadowedLights);
+  accumulate(s, v, light_at(v_light), kShadowedLights);
 #endif
   out_diffuse = vec4(g_diffuse, 0.0);
   out_specular_f0 = vec4(g_specular_f0, 0.0);

@@ -30,9 +30,9 @@ void main() {
   vec3 v = normalize(u_camera_position.xyz - s.position);
   LightSum sum = no_light();
 #ifdef DIRECTIONAL_ONLY
-  add_light(sum, s, v, u_lights[u_light_index]);
+  add_light(sum, s, v, light_at(u_light_index));
 #else
-  add_light_as(sum, s, v, u_lights[v_light], kShadowedLights);
+  add_light_as(sum, s, v, light_at(v_light), kShadowedLights);
 #endif
   // Additive: every target gains this pass's light.
   write_lighting(vec3(0.0), sum);

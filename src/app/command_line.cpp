@@ -339,6 +339,11 @@ const std::vector<OptionSpec>& option_table() {
          }
          throw UsageError("unknown --culling '" + std::string(value) + "' (expected auto, cpu or gpu)");
        }},
+      {"--no-compute", "", kDrawing | kInfo,
+       "run on the compute-free tier, as on WebGL2 or OpenGL 4.1: no compute shaders or storage buffers (lights, instances "
+       "and materials in textures, draws issued one by one, tiled and clustered light lists binned on the CPU, no occlusion "
+       "culling); every mode runs there, shadow maps and the counting debug views not yet",
+       [](std::string_view, CliOptions& o) { o.technique_options.compute_free = true; }},
       {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
       {"--memory", "", kInfo,
        "draw one frame of every mode at --size and report its render-target memory: long-lived targets, and transient "

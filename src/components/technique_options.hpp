@@ -1,5 +1,5 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
-// --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa). Plain data, kept apart from the GL-facing technique interface so
+// --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa, --no-compute). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -43,6 +43,11 @@ struct TechniqueOptions {
   // multisampled and the deferred modes shade per sample on the edges their
   // G-buffer pass marks (shaders/common/msaa.glsl, sample_rate.hpp).
   int msaa = 1;
+  // The compute-free tier (--no-compute, and by itself on a context without
+  // compute shaders or storage buffers): records in textures
+  // (render/storage_free.hpp), draws issued from the CPU, no occlusion
+  // culling; modes that need compute say so.
+  bool compute_free = false;
   bool operator==(const TechniqueOptions&) const = default;
 };
 

@@ -18,6 +18,12 @@ class ShaderLibrary {
   ShaderProgram& get(const std::vector<std::string>& files, const std::vector<ShaderDefine>& defines = {});
 
   [[nodiscard]] std::size_t size() const { return programs_.size(); }
+  // Calls visit(files, defines, program) for every cached program, globals
+  // among its defines (what a tier's programs declare, for tests).
+  template <typename Visit>
+  void for_each(Visit visit) const {
+    for (const auto& [key, entry] : programs_) visit(entry.files, entry.defines, *entry.program);
+  }
 
   // Recompiles every cached program from its files (`r` in the window). A
   // program that fails keeps its old version; the errors come back, one per

@@ -12,6 +12,7 @@
 #include "gfx/limits.hpp"
 #include "render/contributors.hpp"
 #include "render/light_buffer.hpp"
+#include "render/storage_free.hpp"
 #include "render/debug/debug_views.hpp"
 #include "render/frame/frame_uniforms.hpp"
 #include "render/lighting/shading_model.hpp"
@@ -31,7 +32,7 @@ void target_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::S
 // (render/shader_globals.hpp), in the order the programs' cache keys list them.
 constexpr render::GlobalDefineRow kGlobalDefines[] = {&lighting::shading_model_defines, &lighting::DebugViews::counting_defines,
                                                       &lighting::GBuffer::layout_defines, &target_defines,
-                                                      &shadows::ShadowAtlas::shadow_defines};
+                                                      &shadows::ShadowAtlas::shadow_defines, &render::storage_defines};
 
 }  // namespace
 
@@ -238,7 +239,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const auto& assets = registry.resource<assets::AssetManager>();
   const auto& gpu = registry.resource<assets::GpuAssets>();
 
-  occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling;
+  // Both culling paths test with compute shaders: the compute-free tier draws what is in view.
+  occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling && !technique_options_.compute_free;
   const CullingDevice device = settings.culling_device != CullingDevice::Automatic ? settings.culling_device
                                : gfx::is_software_renderer()                        ? CullingDevice::Cpu
                                                                                     : CullingDevice::Gpu;
@@ -278,6 +280,17 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
   frame_stats_.shadows = shadows_.stats();
   upload_draws(draws);
+  if (technique_options_.compute_free) {
+    if (settings.shadows > 0 || counting) {
+      throw gfx::ResourceLimitError(std::string(settings.shadows > 0 ? "shadow maps" : "the debug view " + settings.debug_view) +
+                                    " on the compute-free tier: its shaders write or read storage buffers or images, which this tier "
+                                    "lacks (a texture path for them is still to come)");
+    }
+    storage_free_.upload(std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())), draws);
+    storage_free_.bind();
+  }
+  lighting::draw_commands_from_cpu(technique_options_.compute_free ? std::span<const lighting::DrawCommand>(draws_.commands)
+                                                                   : std::span<const lighting::DrawCommand>());
   refuse_unbounded_loops(draws, lights.count);
 
   // The frame's graph: the renderer's long-lived targets, then each

@@ -20,6 +20,7 @@
 #include "gfx/shader_program.hpp"
 #include "gfx/stream_buffer.hpp"
 #include "render/frame_graph.hpp"
+#include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 #include "render/culling/gpu_occlusion_culling.hpp"
 #include "render/culling/occlusion_culling.hpp"
@@ -153,6 +154,7 @@ class MeshRenderer {
   shadows::ShadowAtlas shadows_;
   DepthReader depth_reader_;
   GpuOcclusionCulling gpu_culling_;
+  render::StorageFreeRecords storage_free_;  // the compute-free tier's lights, instances and materials
   bool culling_on_gpu_ = false;     // this frame's occlusion culling runs on the GPU (draws_ is an EachInView list)
   GLuint active_commands_ = 0;      // the indirect buffer passes draw draws_ from (bind_draws)
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes

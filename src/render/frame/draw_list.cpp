@@ -236,6 +236,12 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   return list;
 }
 
+namespace {
+std::span<const DrawCommand> g_cpu_commands;  // draw_commands_from_cpu's
+}  // namespace
+
+void draw_commands_from_cpu(std::span<const DrawCommand> commands) { g_cpu_commands = commands; }
+
 void draw_items(std::span<const DrawBatch> batches) {
   GLuint bound_vertex_array = 0;
   const DrawBatch* bound_textures = nullptr;
@@ -253,9 +259,22 @@ void draw_items(std::span<const DrawBatch> batches) {
     if (batch.double_sided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
     glFrontFace(batch.mirrored ? GL_CW : GL_CCW);
-    glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand)),
-                                static_cast<GLsizei>(batch.command_count), 0);
+    if (g_cpu_commands.empty()) {
+      glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
+                                  reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand)),
+                                  static_cast<GLsizei>(batch.command_count), 0);
+      continue;
+    }
+    glDisableVertexAttribArray(assets::kInstanceIndexLocation);
+    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count && c < g_cpu_commands.size(); ++c) {
+      const DrawCommand& command = g_cpu_commands[c];
+      if (command.instance_count == 0) continue;
+      glVertexAttribI4ui(assets::kInstanceIndexLocation, command.base_instance, 0, 0, 0);
+      glDrawElementsInstancedBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(command.count), GL_UNSIGNED_INT,
+                                        reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t)),
+                                        static_cast<GLsizei>(command.instance_count), command.base_vertex);
+    }
+    glEnableVertexAttribArray(assets::kInstanceIndexLocation);
   }
   glEnable(GL_CULL_FACE);
   glFrontFace(GL_CCW);

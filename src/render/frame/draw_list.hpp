@@ -149,6 +149,14 @@ enum class DrawSelection {
                                        const assets::GpuAssets& gpu, const glm::mat4& view,
                                        DrawSelection selection = DrawSelection::InView);
 
+// Where draw_items takes its commands: from the bound GL_DRAW_INDIRECT_BUFFER
+// (an empty span, the default), or on the compute-free tier (no indirect draws
+// or base instances on WebGL2 and OpenGL ES 3.0) from these CPU copies, one
+// draw each, the first instance given as the constant value of the
+// instance-index attribute (common/mesh.vert adds gl_InstanceID). The span
+// must outlive the draws; the renderer sets it each frame.
+void draw_commands_from_cpu(std::span<const DrawCommand> commands);
+
 // Issues one multi-draw per batch with the program in use, binding each batch's
 // textures to units 0-4, disabling back-face culling for double-sided batches
 // and turning the front face for mirrored ones. The frame's instance, material

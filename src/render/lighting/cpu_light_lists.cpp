@@ -67,11 +67,11 @@ glm::vec4 view_sphere(const GpuLight& light, const glm::mat4& view) {
   return glm::vec4(glm::vec3(view * glm::vec4(glm::vec3(light.position_radius), 1.0f)), everywhere ? -1.0f : light.position_radius.w);
 }
 
-}  // namespace
-
-CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid, unsigned threads) {
-  const ClusterWalk walk{grid};
-  const std::size_t bins = grid.boxes().size();
+// The lists of `bins` bins, each light listed in the bins each_touched(sphere,
+// visit) visits, split over threads by runs of lights.
+template <typename EachTouched>
+CpuLightLists bin_lights(std::span<const GpuLight> lights, const glm::mat4& view, std::size_t bins, unsigned threads,
+                         const EachTouched& each_touched) {
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   const std::size_t shares = std::clamp<std::size_t>(lights.size() / kLightsPerBinningThread, 1, threads);
 
@@ -79,9 +79,9 @@ CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm
   // light by light, and counts them per bin.
   struct Share {
     std::size_t first_light = 0, end_light = 0;
-    std::vector<std::uint32_t> touched;        // bins, light after light
-    std::vector<std::uint32_t> per_light;      // how many of `touched` each light has
-    std::vector<std::uint32_t> counts;         // per bin; then this share's cursor in each bin
+    std::vector<std::uint32_t> touched;    // bins, light after light
+    std::vector<std::uint32_t> per_light;  // how many of `touched` each light has
+    std::vector<std::uint32_t> counts;     // per bin; then this share's cursor in each bin
   };
   std::vector<Share> split(shares);
   auto gather = [&](Share& share) {
@@ -89,7 +89,7 @@ CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm
     share.per_light.reserve(share.end_light - share.first_light);
     for (std::size_t l = share.first_light; l < share.end_light; ++l) {
       const std::size_t before = share.touched.size();
-      walk.each_touched(view_sphere(lights[l], view), [&](std::uint32_t bin) {
+      each_touched(view_sphere(lights[l], view), [&](std::uint32_t bin) {
         share.touched.push_back(bin);
         ++share.counts[bin];
       });
@@ -133,6 +133,76 @@ CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm
     write(split[0]);
   }
   return lists;
+}
+
+// Which screen tiles a light may reach: those under its sphere's screen
+// rectangle (all of them for a sphere across the near plane) whose four side
+// planes through the eye it does not lie wholly outside of.
+struct TileWalk {
+  glm::uvec2 tiles;
+  glm::vec2 tile_ndc;  // a tile's width and height in NDC
+  glm::vec2 scale;     // view-space x and y per unit of NDC at depth 1 (a symmetric frustum)
+  float near_plane, far_plane;
+
+  template <typename Visit>
+  void each_touched(glm::vec4 sphere, Visit visit) const {
+    const std::uint32_t count = tiles.x * tiles.y;
+    if (sphere.w < 0.0f) {
+      for (std::uint32_t t = 0; t < count; ++t) visit(t);
+      return;
+    }
+    const glm::vec3 c(sphere);
+    const float r = sphere.w, depth = -c.z;
+    if (depth + r < near_plane || depth - r > far_plane) return;
+    glm::uvec2 lo(0), hi = tiles - 1u;
+    if (depth - r > near_plane) {
+      // The rectangle of the sphere's view-space box, its nearest face the widest.
+      const float nearest = depth - r;
+      const glm::vec2 low = (glm::vec2(c) - r) / (scale * nearest), high = (glm::vec2(c) + r) / (scale * nearest);
+      const glm::vec2 low_far = (glm::vec2(c) - r) / (scale * (depth + r)), high_far = (glm::vec2(c) + r) / (scale * (depth + r));
+      const glm::vec2 ndc_low = glm::min(low, low_far), ndc_high = glm::max(high, high_far);
+      if (ndc_high.x < -1.0f || ndc_high.y < -1.0f || ndc_low.x > 1.0f || ndc_low.y > 1.0f) return;
+      const glm::vec2 last = glm::vec2(tiles) - 1.0f;
+      // One tile more each way for rounding.
+      lo = glm::uvec2(glm::clamp(glm::floor((ndc_low + 1.0f) / tile_ndc) - 1.0f, glm::vec2(0.0f), last));
+      hi = glm::uvec2(glm::clamp(glm::floor((ndc_high + 1.0f) / tile_ndc) + 1.0f, glm::vec2(0.0f), last));
+    }
+    for (std::uint32_t y = lo.y; y <= hi.y; ++y) {
+      // Planes x = a s_x (-z) through the eye: inside the tile when a point is
+      // right of its left plane and left of its right one (and so for y).
+      const float bottom = -1.0f + static_cast<float>(y) * tile_ndc.y, top = bottom + tile_ndc.y;
+      if (!inside_slab(c.y, c.z, bottom * scale.y, top * scale.y, r)) continue;
+      for (std::uint32_t x = lo.x; x <= hi.x; ++x) {
+        const float left = -1.0f + static_cast<float>(x) * tile_ndc.x, right = left + tile_ndc.x;
+        if (inside_slab(c.x, c.z, left * scale.x, right * scale.x, r)) visit(y * tiles.x + x);
+      }
+    }
+  }
+
+  // Whether a sphere (coordinate u, view z, radius r) reaches the wedge between
+  // the planes u = low (-z) and u = high (-z) through the eye.
+  static bool inside_slab(float u, float z, float low, float high, float r) {
+    const float above_low = (u + low * z) / std::sqrt(1.0f + low * low);     // distance on the inner side of u = low (-z)
+    const float below_high = -(u + high * z) / std::sqrt(1.0f + high * high);
+    return above_low >= -r && below_high >= -r;
+  }
+};
+
+}  // namespace
+
+CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid, unsigned threads) {
+  const ClusterWalk walk{grid};
+  return bin_lights(lights, view, grid.boxes().size(), threads,
+                    [&](glm::vec4 sphere, const auto& visit) { walk.each_touched(sphere, visit); });
+}
+
+CpuLightLists bin_lights_in_tiles(std::span<const GpuLight> lights, const glm::mat4& view, const glm::mat4& projection, glm::ivec2 viewport,
+                                  int tile_size, float near_plane, float far_plane, unsigned threads) {
+  const glm::uvec2 tiles = (glm::uvec2(viewport) + glm::uvec2(tile_size - 1)) / glm::uvec2(tile_size);
+  const TileWalk walk{tiles, 2.0f * static_cast<float>(tile_size) / glm::vec2(viewport),
+                      glm::vec2(1.0f / projection[0][0], 1.0f / projection[1][1]), near_plane, far_plane};
+  return bin_lights(lights, view, std::size_t{tiles.x} * tiles.y, threads,
+                    [&](glm::vec4 sphere, const auto& visit) { walk.each_touched(sphere, visit); });
 }
 
 }  // namespace atrium::lighting

@@ -5,7 +5,7 @@
 // order), so that the shading passes read either alike. Each light visits only
 // the clusters its sphere may reach (the C++ twin of clustered/assign.comp's
 // slice_range, slice_cells and cell_run) and is listed in those whose box it
-// touches; the lights are split over worker threads where there are enough of
+// touches, or the screen tiles whose frustum it reaches; the lights are split over worker threads where there are enough of
 // them to pay for the threads, each writing its share of every bin in order.
 #pragma once
 
@@ -36,5 +36,14 @@ inline constexpr std::size_t kLightsPerBinningThread = 256;
 // `view`, on up to `threads` threads (0: one per hardware thread).
 [[nodiscard]] CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid,
                                                    unsigned threads = 0);
+
+// The lists of the viewport's `tile_size`-pixel screen tiles (row by row from
+// the bottom, as tiled/tiles.glsl numbers them), each light listed in the
+// tiles whose frustum (side planes through the eye, from the near to the far
+// plane: no depth bounds, which would take the depth buffer back) its sphere
+// reaches. `projection` must be symmetric, as gfx::perspective makes it.
+[[nodiscard]] CpuLightLists bin_lights_in_tiles(std::span<const GpuLight> lights, const glm::mat4& view, const glm::mat4& projection,
+                                                glm::ivec2 viewport, int tile_size, float near_plane, float far_plane,
+                                                unsigned threads = 0);
 
 }  // namespace atrium::lighting

@@ -9,8 +9,8 @@
 namespace atrium {
 namespace {
 
-// The storage binding the sprite vertex shader reads (shaders/fireflies/sprite.vert).
-constexpr GLuint kSpriteBinding = 12;
+// The attribute locations of shaders/fireflies/sprite.vert.
+constexpr GLuint kPositionSizeLocation = 0, kColorLocation = 1;
 
 }  // namespace
 
@@ -23,7 +23,14 @@ void FireflySprites::add_pass(render::FrameGraph& graph, ecs::Registry& registry
   if (sprites_.empty()) return;
   if (!program_) {
     program_ = &registry.resource<assets::GpuAssets>().shaders().get({"fireflies/sprite.vert", "fireflies/sprite.frag"});
-    empty_vertex_array_ = gfx::create_vertex_array();
+    vertex_array_ = gfx::create_vertex_array();
+    const GLuint vao = vertex_array_.id();
+    for (const GLuint location : {kPositionSizeLocation, kColorLocation}) {
+      glEnableVertexArrayAttrib(vao, location);
+      glVertexArrayAttribFormat(vao, location, 4, GL_FLOAT, GL_FALSE, location == kColorLocation ? sizeof(glm::vec4) : 0);
+      glVertexArrayAttribBinding(vao, location, 0);
+    }
+    glVertexArrayBindingDivisor(vao, 0, 1);
   }
   graph.add_pass("fireflies", [&](render::PassBuilder& pass) {
     pass.read(frame.scene_depth, render::Access::Attachment);
@@ -43,8 +50,9 @@ void FireflySprites::draw(const lighting::FrameTargets& targets) {
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE);
   program_->use();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSpriteBinding, buffer_.buffer.id());
-  glBindVertexArray(empty_vertex_array_.id());
+  // The buffer is remade when it grows: bound to the vertex array each frame.
+  glVertexArrayVertexBuffer(vertex_array_.id(), 0, buffer_.buffer.id(), 0, sizeof(Sprite));
+  glBindVertexArray(vertex_array_.id());
   glDrawArraysInstanced(GL_TRIANGLES, 0, 6, static_cast<GLsizei>(sprites_.size()));
   glBindVertexArray(0);
   glDisable(GL_BLEND);

@@ -20,7 +20,8 @@ class FireflySprites {
                 const lighting::FrameTargets& targets);
 
  private:
-  // One sprite: xyz world position, w radius; then rgb colour.
+  // One sprite, the instanced attributes of fireflies/sprite.vert: xyz world
+  // position, w radius; then rgb colour.
   struct Sprite {
     glm::vec4 position_size;
     glm::vec4 color;
@@ -30,7 +31,7 @@ class FireflySprites {
   std::vector<Sprite> sprites_;
   gfx::StreamBuffer buffer_;
   gfx::ShaderProgram* program_ = nullptr;  // from the shader library, on first use
-  gfx::VertexArray empty_vertex_array_;
+  gfx::VertexArray vertex_array_;  // the sprites as instanced attributes 0 and 1
 };
 
 }  // namespace atrium

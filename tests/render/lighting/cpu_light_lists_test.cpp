@@ -3,7 +3,8 @@
 // the brute-force CPU reference (every light against every cluster), on one
 // thread and on several, for lights a scene draws and for the awkward ones
 // (a sun, a light behind the camera, one across the near plane, one that
-// covers the grid).
+// covers the grid); and tile lists that hold every light the GPU's tiles
+// (which have depth bounds) hold.
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -13,6 +14,7 @@
 #include "gfx/depth.hpp"
 #include "render/lighting/cpu_light_lists.hpp"
 #include "render/techniques/clustered/clustered.hpp"
+#include "render/techniques/tiled/tiled.hpp"
 #include "support/gl_test.hpp"
 
 namespace atrium {
@@ -84,6 +86,36 @@ TEST_F(CpuLightLists, AwkwardLightsEqualTheBruteForceReference) {
     for (std::size_t c = 0; c < binned.size(); ++c) EXPECT_EQ(binned[c], reference[c]) << "cluster " << c << ", " << threads << " threads";
   }
   EXPECT_EQ(reference[0].front(), 0u) << "the sun is in every cluster";
+}
+
+TEST_F(CpuLightLists, TileListsHoldEveryLightTheGpusTilesHold) {
+  World world({.scene = "atrium", .lights = 3000u, .mode = "tiled-deferred", .view = 5, .size = {200, 120}, .light_radius = 1.0f});
+  world.frame(0.0);
+  world.renderer().settle();
+  world.frame(0.0);
+  const auto& technique = dynamic_cast<const lighting::TiledTechnique&>(*world.renderer().technique());
+  const auto gpu = technique.list().read();
+  const auto& lights = world.registry().resource<LightBuffer>().staging;
+  const ViewState& view = world.registry().resource<ViewState>();
+  std::size_t gpu_entries = 0, cpu_entries = 0;
+  for (const unsigned threads : {1u, 2u}) {
+    const auto cpu = per_bin(lighting::bin_lights_in_tiles(lights, view.view, view.projection, {200, 120}, lighting::kTileSize,
+                                                           view.near_plane, view.far_plane, threads));
+    ASSERT_EQ(cpu.size(), gpu.size());
+    ASSERT_EQ(cpu.size(), std::size_t{technique.tiles().x} * technique.tiles().y);
+    gpu_entries = cpu_entries = 0;
+    for (std::size_t t = 0; t < cpu.size(); ++t) {
+      EXPECT_TRUE(std::is_sorted(cpu[t].begin(), cpu[t].end())) << "tile " << t;
+      EXPECT_TRUE(std::includes(cpu[t].begin(), cpu[t].end(), gpu[t].begin(), gpu[t].end())) << "tile " << t << ", " << threads << " threads";
+      gpu_entries += gpu[t].size();
+      cpu_entries += cpu[t].size();
+    }
+  }
+  EXPECT_GT(gpu_entries, 3000u);
+  // Without depth bounds a tile also lists the lights in front of and behind
+  // its surfaces, but not every light.
+  EXPECT_GT(cpu_entries, gpu_entries);
+  EXPECT_LT(cpu_entries, std::size_t{3000} * gpu.size() / 4);
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include "gfx/depth.hpp"
 #include "render/frame/scene_passes.hpp"
+#include "render/lighting/cpu_light_lists.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -24,12 +25,17 @@ std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::
 
 ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
-      pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels),
-      active_only_(options.active_clusters && !pixel_bounds_),
+      compute_free_(options.compute_free),
+      // Pixel boxes and active flags are marked by compute and storage writes: the tier tests the grid's boxes.
+      pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels && !compute_free_),
+      active_only_(options.active_clusters && !pixel_bounds_ && !compute_free_),
       grid_(options.cluster_grid, options.z_slicing),
-      assign_(ClusterGrid::assign_programs(gpu.shaders(), options.cluster_bounds, options.active_clusters)),
-      mark_(gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
-      mark_blended_(gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
+      assign_(compute_free_ ? std::nullopt
+                            : std::optional<LightScatterPrograms>(ClusterGrid::assign_programs(
+                                  gpu.shaders(), pixel_bounds_ ? ClusterBounds::Pixels : ClusterBounds::Grid, active_only_))),
+      mark_(compute_free_ ? nullptr : &gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
+      mark_blended_(compute_free_ ? nullptr
+                                  : &gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"},
                                   prepass_defines(deferred, options.msaa, {}))),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
@@ -53,7 +59,7 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
   if (deferred_) gbuffer_.bind_textures(res);
   else glBindTextureUnit(0, shading_depth_.valid() ? res.texture(shading_depth_) : targets.depth_stencil);
-  mark_.use();
+  mark_->use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
   if (!frame.draws.blended.empty()) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -63,7 +69,7 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
     glDepthFunc(gfx::kDepthCloser);
     glDepthMask(GL_FALSE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    mark_blended_.use();
+    mark_blended_->use();
     draw_items(frame.draws.blended);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
@@ -83,16 +89,23 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
       if (targets.samples > 1) shading_depth_ = pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth);
     }, [this, &frame, &targets](const render::PassResources& res) { draw_prepass(res, frame, targets); });
   }
-  const render::ResourceId lists = grid_.list().import_into(graph, "cluster-light-lists", render::ViewKind::LightBins);
-  graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_.list(), grid_.uniform_buffer()});
+  const render::ResourceId lists = grid_.list().import_into(graph, "cluster-light-lists", compute_free_ ? render::ViewKind::None : render::ViewKind::LightBins);
+  // The light-bins view reads the GPU's lists: not on the compute-free tier.
+  if (!compute_free_) graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_.list(), grid_.uniform_buffer()});
   graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
     if (deferred_) gbuffer_.read_targets(pass);
     else pass.read(shading_depth_.valid() ? shading_depth_ : frame.scene_depth, render::Access::Sampled);
     pass.read(frame.light_buffer, render::Access::Storage);
     pass.write(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
+    if (compute_free_) {
+      const CpuLightLists cpu = bin_lights_in_clusters(frame.lights, frame.view, grid_);
+      cpu_lists_.upload(cpu.ranges, cpu.indices);
+      cpu_entries_ = static_cast<std::uint32_t>(cpu.indices.size());
+      return;
+    }
     const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;
-    grid_.assign(assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
+    grid_.assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   });
   graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
     if (deferred_) gbuffer_.read_targets(pass);
@@ -103,7 +116,7 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
   // Blended surfaces are shaded forward+ from the same lists: their clusters
   // were marked with the opaque pixels'.
   add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
-                        [this] { grid_.bind(); });
+                        [this] { bind_lists(); });
 }
 
 void ClusteredTechnique::draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
@@ -122,8 +135,17 @@ void ClusteredTechnique::draw_prepass(const render::PassResources& res, const Fr
   }
 }
 
+void ClusteredTechnique::bind_lists() const {
+  if (!compute_free_) {
+    grid_.bind();
+    return;
+  }
+  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, grid_.uniform_buffer());
+  cpu_lists_.bind();
+}
+
 void ClusteredTechnique::shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
-  grid_.bind();
+  bind_lists();
   if (deferred_) {
     gbuffer_.draw_fullscreen(res, shading_, targets);
     return;

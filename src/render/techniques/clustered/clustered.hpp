@@ -6,10 +6,15 @@
 // are those touching the box of the pixels it holds this frame (read from the
 // positions shading lights and from blended fragments); --cluster-bounds grid tests its whole
 // frustum slice instead. Blended surfaces are shaded forward+ from the same lists.
+// On the compute-free tier the lists come from the CPU (grid bounds:
+// cpu_light_lists.hpp) as textures (render/storage_free.hpp).
 #pragma once
 
 #include "render/lighting/cluster_grid.hpp"
+#include <optional>
+
 #include "render/lighting/gbuffer.hpp"
+#include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 
 namespace atrium::lighting {
@@ -21,6 +26,7 @@ class ClusteredTechnique final : public LightingTechnique {
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
   [[nodiscard]] ListStats light_lists() override {
+    if (compute_free_) return {cpu_entries_, 0};
     grid_.list().poll();
     return {grid_.list().last_total(), grid_.list().overflow_frames()};
   }
@@ -34,14 +40,19 @@ class ClusteredTechnique final : public LightingTechnique {
   void draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
   // The opaque surfaces lit from the lists: full-screen (deferred) or forward.
   void shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  // Binds the grid's uniforms and its lists (the GPU's, or the CPU's textures).
+  void bind_lists() const;
 
   bool deferred_;
+  bool compute_free_;
   bool pixel_bounds_;
   bool active_only_;
   ClusterGrid grid_;
-  LightScatterPrograms assign_;
-  gfx::ShaderProgram& mark_;
-  gfx::ShaderProgram& mark_blended_;
+  std::optional<LightScatterPrograms> assign_;  // none on the compute-free tier
+  gfx::ShaderProgram* mark_;                    // nullptr on the compute-free tier
+  gfx::ShaderProgram* mark_blended_;
+  render::ListTextures cpu_lists_;              // the compute-free tier's
+  std::uint32_t cpu_entries_ = 0;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
   gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
   SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)

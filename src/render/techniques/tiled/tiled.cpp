@@ -2,6 +2,7 @@
 
 #include "gfx/depth.hpp"
 #include "render/frame/scene_passes.hpp"
+#include "render/lighting/cpu_light_lists.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -9,12 +10,13 @@ constexpr GLuint kTileBoundsBinding = 4;
 }  // namespace
 
 TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
-    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
-      bounds_(gpu.shaders().get({"tiled/tile_bounds.comp"})),
-      assign_(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp")),
+    : compute_free_(options.compute_free),
+      geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
+      bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"})),
+      assign_(compute_free_ ? std::nullopt : std::optional<LightScatterPrograms>(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp"))),
       lighting_(gpu.shaders(), {"post/fullscreen.vert", "tiled/lighting.frag"}, {}, options.msaa),
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
-      blended_bounds_(gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
+      blended_bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
@@ -24,7 +26,10 @@ void TiledTechnique::resize(const FrameTargets& targets) {
   blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
   tile_bounds_ = gfx::create_buffer();
   glNamedBufferStorage(tile_bounds_.id(), static_cast<GLsizeiptr>(std::size_t{tiles_.x} * tiles_.y * sizeof(TileBounds)), nullptr, 0);
-  for (gfx::ShaderProgram* program : {&bounds_, &blended_bounds_, &assign_.scatter, &assign_.scatter_large, &blended_}) program->set("u_tiles", tiles_);
+  blended_.set("u_tiles", tiles_);
+  if (!compute_free_) {
+    for (gfx::ShaderProgram* program : {bounds_, blended_bounds_, &assign_->scatter, &assign_->scatter_large}) program->set("u_tiles", tiles_);
+  }
   lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
 }
 
@@ -33,11 +38,34 @@ void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& bou
   bounds.use();
   glDispatchCompute(tiles_.x, tiles_.y, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  list.assign(light_count, assign_, [&] { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id()); });
+  list.assign(light_count, *assign_, [&] { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id()); });
+}
+
+void TiledTechnique::bin_on_cpu(const FrameContext& frame, const FrameTargets& targets) {
+  const CpuLightLists cpu = bin_lights_in_tiles(frame.lights, frame.view, frame.projection, targets.size, kTileSize, frame.near_plane,
+                                                frame.far_plane);
+  cpu_lists_.upload(cpu.ranges, cpu.indices);
+  cpu_entries_ = static_cast<std::uint32_t>(cpu.indices.size());
 }
 
 void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
   add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+  if (compute_free_) {
+    const render::ResourceId lists = list_->import_into(graph, "tile-light-lists");
+    graph.add_pass("light culling", [&](render::PassBuilder& pass) { pass.write(lists, render::Access::Transfer); },
+                   [this, &frame, &targets](const render::PassResources&) { bin_on_cpu(frame, targets); });
+    graph.add_pass("lighting", [&](render::PassBuilder& pass) {
+      gbuffer_.read_targets(pass);
+      pass.read(lists, render::Access::Sampled);
+      pass.write(frame.scene_color, render::Access::Attachment);
+    }, [this, &targets](const render::PassResources& res) {
+      cpu_lists_.bind();
+      gbuffer_.draw_fullscreen(res, lighting_, targets);
+    });
+    add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Sampled); },
+                          [this] { cpu_lists_.bind(); });
+    return;
+  }
   const render::ResourceId lists = list_->import_into(graph, "tile-light-lists", render::ViewKind::LightBins);
   graph.publish(LightBins{LightBins::Binning::Tiles, lists, tiles_, static_cast<std::uint32_t>(kTileSize), list_.get(), 0});
   graph.add_pass("light culling", [&](render::PassBuilder& pass) {
@@ -46,7 +74,7 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
     pass.write(lists, render::Access::Storage);
   }, [this, &frame](const render::PassResources& res) {
     gbuffer_.bind_textures(res);
-    assign_lights(*list_, bounds_, static_cast<std::uint32_t>(frame.lights.size()));
+    assign_lights(*list_, *bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   });
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
@@ -86,11 +114,12 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
     draw_items(frame.draws.blended);
     glBindTextureUnit(0, targets.depth_stencil);
     glBindTextureUnit(1, res.texture(front_depth_));
-    assign_lights(*blended_list_, blended_bounds_, static_cast<std::uint32_t>(frame.lights.size()));
+    assign_lights(*blended_list_, *blended_bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   }
 }
 
 LightingTechnique::ListStats TiledTechnique::light_lists() {
+  if (compute_free_) return {cpu_entries_, 0};
   if (!list_) return {};
   list_->poll();
   blended_list_->poll();

@@ -5,12 +5,17 @@
 // lighting pass shades each pixel with its tile's lights.
 // Blended surfaces get lists of their own, bounded by the depths of the glass in
 // front of each tile's opaque surfaces, and are shaded forward from them.
+// On the compute-free tier the lists come from the CPU (cpu_light_lists.hpp:
+// each tile's frustum without depth bounds, which would take the depth buffer
+// back), as textures (render/storage_free.hpp), one list for both.
 #pragma once
 
 #include <memory>
+#include <optional>
 
 #include "render/lighting/gbuffer.hpp"
 #include "render/lighting/light_index_list.hpp"
+#include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 
 namespace atrium::lighting {
@@ -45,12 +50,16 @@ class TiledTechnique final : public LightingTechnique {
   // then their lists (their forward shading reads those lists).
   void cull_for_blended(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
 
+  // The compute-free tier: the lists from the CPU, for opaque and blended surfaces alike.
+  void bin_on_cpu(const FrameContext& frame, const FrameTargets& targets);
+
+  bool compute_free_;
   gfx::ShaderProgram& geometry_;
-  gfx::ShaderProgram& bounds_;          // tiled/tile_bounds.comp, from the G-buffer
-  LightScatterPrograms assign_;
+  gfx::ShaderProgram* bounds_;          // tiled/tile_bounds.comp, from the G-buffer (nullptr on the compute-free tier)
+  std::optional<LightScatterPrograms> assign_;
   SampleRatePrograms lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
-  gfx::ShaderProgram& blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
+  gfx::ShaderProgram* blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
   gfx::ShaderProgram& blended_;         // forward shading from the blended lists
   GBuffer gbuffer_;
   glm::uvec2 tiles_{0};
@@ -58,6 +67,8 @@ class TiledTechnique final : public LightingTechnique {
   gfx::Buffer tile_bounds_;             // per tile: TileBounds (shaders/tiled/tiles.glsl)
   bool blended_listed_ = false;         // this frame filled blended_list_
   render::ResourceId front_depth_;      // this frame's opaque depth with blended surfaces drawn over it
+  render::ListTextures cpu_lists_;      // the compute-free tier's
+  std::uint32_t cpu_entries_ = 0;
 };
 
 }  // namespace atrium::lighting

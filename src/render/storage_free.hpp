@@ -1,0 +1,89 @@
+// The compute-free tier (TechniqueOptions::compute_free, --no-compute: no
+// compute shaders and no storage buffers, as on WebGL2, OpenGL ES 3.0 and
+// OpenGL 4.1): the records the full tier keeps in storage buffers (lights,
+// instances, materials) as RGBA32F textures the shaders read with texelFetch
+// when compiled with NO_STORAGE_BUFFERS (common/lights.glsl, common/mesh.vert,
+// common/material_table.glsl hold the GLSL twins of the layouts below).
+// Whole numbers (flags, indices) are stored as float values, exact below 2^24,
+// since a texel holding raw integer bits could be a denormal a GPU flushes.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gfx/gl.hpp"
+#include "gfx/gl_object.hpp"
+#include "render/frame/draw_list.hpp"
+#include "render/light_buffer.hpp"
+#include "render/shader_globals.hpp"
+
+namespace atrium::render {
+
+// The NO_STORAGE_BUFFERS row of the shader globals (render/shader_globals.hpp).
+void storage_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines);
+
+// Texture units, clear of the material (0-4), G-buffer and target (0-7),
+// depth (14) and shadow atlas (15) units, and within the 16 a WebGL2
+// fragment shader may sample.
+inline constexpr GLuint kLightTextureUnit = 10, kInstanceTextureUnit = 11, kMaterialTextureUnit = 12;
+
+// Texels per record and records per row, each row within WebGL2's least
+// texture width (2,048).
+inline constexpr std::uint32_t kLightTexels = 4, kLightsPerRow = 512;
+inline constexpr std::uint32_t kInstanceTexels = 9, kInstancesPerRow = 227;
+inline constexpr std::uint32_t kMaterialTexels = 14, kMaterialsPerRow = 146;
+static_assert(sizeof(GpuLight) == kLightTexels * sizeof(glm::vec4), "a light is 4 texels (common/lights.glsl)");
+static_assert(sizeof(lighting::InstanceData) == kInstanceTexels * sizeof(glm::vec4), "an instance is 9 texels (common/mesh.vert)");
+static_assert(sizeof(lighting::MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a material is 14 texels (common/material_table.glsl)");
+
+// The texels of each record, in the shaders' order.
+[[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const lighting::InstanceData> instances);
+[[nodiscard]] std::vector<glm::vec4> material_texels(std::span<const lighting::MaterialData> materials);
+
+// A texture of records, `texels` RGBA32F texels each, `per_row` a row, grown
+// (never shrunk) to hold what it is given.
+class RecordTexture {
+ public:
+  RecordTexture(std::uint32_t texels, std::uint32_t per_row) : texels_(texels), per_row_(per_row) {}
+  // `records` whole records' texels.
+  void upload(std::span<const glm::vec4> texels);
+  void bind(GLuint unit) const;
+
+ private:
+  std::uint32_t texels_, per_row_;
+  gfx::Texture texture_;
+  glm::ivec2 size_{0};
+};
+
+// Light lists built on the CPU (render/lighting/cpu_light_lists.hpp) as the
+// tier's shaders read them (common/light_lists.glsl): per bin its range
+// (RG32UI), then the light indices (R32UI), kListTextureWidth texels a row.
+inline constexpr GLuint kLightRangeTextureUnit = 8, kLightIndexTextureUnit = 9;
+inline constexpr std::uint32_t kListTextureWidth = 2048;
+
+class ListTextures {
+ public:
+  void upload(std::span<const glm::uvec2> ranges, std::span<const std::uint32_t> indices);
+  void bind() const;
+
+ private:
+  gfx::Texture ranges_, indices_;
+  int range_rows_ = 0, index_rows_ = 0;
+};
+
+// The frame's records as textures, bound for every pass of the frame.
+class StorageFreeRecords {
+ public:
+  void upload(std::span<const GpuLight> lights, const lighting::DrawList& draws);
+  void bind() const;
+
+ private:
+  RecordTexture lights_{kLightTexels, kLightsPerRow};
+  RecordTexture instances_{kInstanceTexels, kInstancesPerRow};
+  RecordTexture materials_{kMaterialTexels, kMaterialsPerRow};
+};
+
+}  // namespace atrium::render

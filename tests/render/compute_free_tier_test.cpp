@@ -1,0 +1,104 @@
+// The compute-free tier (--no-compute; render/storage_free.hpp): every mode
+// draws there what it draws on the full tier, on the built-in scene and on the
+// real Sponza, from every view, and with MSAA; the programs it compiles
+// declare no storage buffer and are no compute shaders, so what runs here
+// would run where neither exists; and what needs them (shadow maps, counting
+// debug views) says so in one line.
+#include <filesystem>
+#include <string>
+
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
+#include "render/gpu_assets.hpp"
+#include "render/techniques/technique.hpp"
+#include "support/gl_test.hpp"
+
+namespace atrium {
+namespace {
+namespace fs = std::filesystem;
+
+using ComputeFreeTier = testing::GlTest;
+using testing::kSize;
+
+constexpr double kMinimumPsnr = 40.0;
+const fs::path kSponza = fs::path(ATRIUM_TESTDATA_DIR) / "scenes/sponza-crytek/Sponza.gltf";
+
+WorldOptions tier_options(const std::string& scene, bool compute_free) {
+  WorldOptions options{.scene = scene, .lights = 64u, .mode = "forward", .size = kSize};
+  options.technique_options.compute_free = compute_free;
+  options.system_options["fireflies"] = 12;  // a system's own pass draws on the tier too
+  return options;
+}
+
+// Every mode, from every view of `scene`, against the same mode on the full tier.
+void expect_tier_matches_full(const std::string& scene, int samples = 1) {
+  WorldOptions full_options = tier_options(scene, false), free_options = tier_options(scene, true);
+  full_options.technique_options.msaa = free_options.technique_options.msaa = samples;
+  World full(full_options);
+  World free(free_options);
+  std::size_t compared = 0;
+  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+    full.set_mode(std::string(info.name));
+    free.set_mode(std::string(info.name));
+    for (int view = 1; view <= static_cast<int>(full.scene().views.size()); ++view) {
+      full.set_view(view);
+      free.set_view(view);
+      full.frame(0.0);
+      free.frame(0.0);
+      const double psnr = assets::psnr(full.renderer().read_output(), free.renderer().read_output());
+      EXPECT_GE(psnr, kMinimumPsnr) << info.name << ", view " << view << ", MSAA " << samples;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, lighting::technique_table().size() * full.scene().views.size());
+  // What it compiled for the tier: no storage blocks, no compute stage.
+  std::size_t tier_programs = 0;
+  free.registry().resource<assets::GpuAssets>().shaders().for_each(
+      [&](const std::vector<std::string>& files, const std::vector<gfx::ShaderDefine>& defines, const gfx::ShaderProgram& program) {
+        if (std::find_if(defines.begin(), defines.end(), [](const gfx::ShaderDefine& d) { return d.name == "NO_STORAGE_BUFFERS"; }) ==
+            defines.end()) {
+          return;
+        }
+        ++tier_programs;
+        GLint blocks = -1;
+        glGetProgramInterfaceiv(program.id(), GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &blocks);
+        EXPECT_EQ(blocks, 0) << files.front() << " reads or writes a storage buffer on the compute-free tier";
+        for (const std::string& file : files) EXPECT_FALSE(file.ends_with(".comp")) << file << " is a compute shader";
+      });
+  EXPECT_GT(tier_programs, 6u);
+}
+
+TEST_F(ComputeFreeTier, EveryModeDrawsTheFullTiersPictureOfTheBuiltInScene) { expect_tier_matches_full("atrium"); }
+
+TEST_F(ComputeFreeTier, EveryModeDrawsTheFullTiersPictureOfSponza) {
+  if (!fs::exists(kSponza)) GTEST_SKIP() << kSponza << " is not here";
+  expect_tier_matches_full(kSponza.string());
+}
+
+TEST_F(ComputeFreeTier, EveryModeMatchesTheFullTierWithMsaa) { expect_tier_matches_full("atrium", 4); }
+
+TEST_F(ComputeFreeTier, ShadowMapsAndCountingViewsSayTheyNeedStorageInOneLine) {
+  World world(tier_options("atrium", true));
+  auto expect_refused = [&](const std::string& what) {
+    try {
+      world.frame(0.0);
+      ADD_FAILURE() << what << " ran on the compute-free tier";
+    } catch (const gfx::ResourceLimitError& e) {
+      const std::string message = e.what();
+      EXPECT_NE(message.find(what + " on the compute-free tier"), std::string::npos) << message;
+      EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    }
+  };
+  world.registry().resource<RendererSettings>().shadows = 4;
+  expect_refused("shadow maps");
+  world.registry().resource<RendererSettings>().shadows = 0;
+  world.registry().resource<RendererSettings>().debug_view = "heatmap";
+  expect_refused("the debug view heatmap");
+  world.registry().resource<RendererSettings>().debug_view = "";
+  world.frame(0.0);
+}
+
+}  // namespace
+}  // namespace atrium
