@@ -32,6 +32,24 @@ WorldOptions tier_options(const std::string& scene, bool compute_free) {
   return options;
 }
 
+// What `world` compiled for the tier: no storage blocks, no compute stage.
+void expect_storage_free_programs(World& world) {
+  std::size_t tier_programs = 0;
+  world.registry().resource<assets::GpuAssets>().shaders().for_each(
+      [&](const std::vector<std::string>& files, const std::vector<gfx::ShaderDefine>& defines, const gfx::ShaderProgram& program) {
+        if (std::find_if(defines.begin(), defines.end(), [](const gfx::ShaderDefine& d) { return d.name == "NO_STORAGE_BUFFERS"; }) ==
+            defines.end()) {
+          return;
+        }
+        ++tier_programs;
+        GLint blocks = -1;
+        glGetProgramInterfaceiv(program.id(), GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &blocks);
+        EXPECT_EQ(blocks, 0) << files.back() << " reads or writes a storage buffer on the compute-free tier";
+        for (const std::string& file : files) EXPECT_FALSE(file.ends_with(".comp")) << file << " is a compute shader";
+      });
+  EXPECT_GT(tier_programs, 6u);
+}
+
 // Every mode, from every view of `scene`, against the same mode on the full tier.
 void expect_tier_matches_full(const std::string& scene, int samples = 1) {
   WorldOptions full_options = tier_options(scene, false), free_options = tier_options(scene, true);
@@ -53,21 +71,7 @@ void expect_tier_matches_full(const std::string& scene, int samples = 1) {
     }
   }
   EXPECT_EQ(compared, lighting::technique_table().size() * full.scene().views.size());
-  // What it compiled for the tier: no storage blocks, no compute stage.
-  std::size_t tier_programs = 0;
-  free.registry().resource<assets::GpuAssets>().shaders().for_each(
-      [&](const std::vector<std::string>& files, const std::vector<gfx::ShaderDefine>& defines, const gfx::ShaderProgram& program) {
-        if (std::find_if(defines.begin(), defines.end(), [](const gfx::ShaderDefine& d) { return d.name == "NO_STORAGE_BUFFERS"; }) ==
-            defines.end()) {
-          return;
-        }
-        ++tier_programs;
-        GLint blocks = -1;
-        glGetProgramInterfaceiv(program.id(), GL_SHADER_STORAGE_BLOCK, GL_ACTIVE_RESOURCES, &blocks);
-        EXPECT_EQ(blocks, 0) << files.front() << " reads or writes a storage buffer on the compute-free tier";
-        for (const std::string& file : files) EXPECT_FALSE(file.ends_with(".comp")) << file << " is a compute shader";
-      });
-  EXPECT_GT(tier_programs, 6u);
+  expect_storage_free_programs(free);
 }
 
 TEST_F(ComputeFreeTier, EveryModeDrawsTheFullTiersPictureOfTheBuiltInScene) { expect_tier_matches_full("atrium"); }
@@ -75,6 +79,27 @@ TEST_F(ComputeFreeTier, EveryModeDrawsTheFullTiersPictureOfTheBuiltInScene) { ex
 TEST_F(ComputeFreeTier, EveryModeDrawsTheFullTiersPictureOfSponza) {
   if (!fs::exists(kSponza)) GTEST_SKIP() << kSponza << " is not here";
   expect_tier_matches_full(kSponza.string());
+}
+
+// Every debug view each mode offers on the tier draws there (what the tier
+// cannot draw, it does not offer).
+TEST_F(ComputeFreeTier, EveryViewAModeOffersThereDraws) {
+  WorldOptions options = tier_options("atrium", true);
+  options.lights = 16u;
+  options.size = {64, 36};
+  World world(options);
+  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+    world.set_mode(std::string(info.name));
+    world.registry().resource<RendererSettings>().debug_view = "";
+    world.frame(0.0);
+    const std::vector<lighting::OfferedView> views = world.renderer().offered_views();
+    EXPECT_GT(views.size(), 2u) << info.name;
+    for (const lighting::OfferedView& view : views) {
+      world.registry().resource<RendererSettings>().debug_view = view.name;
+      EXPECT_NO_THROW(world.frame(0.0)) << info.name << ", view " << view.name;
+    }
+  }
+  expect_storage_free_programs(world);
 }
 
 TEST_F(ComputeFreeTier, EveryModeMatchesTheFullTierWithMsaa) { expect_tier_matches_full("atrium", 4); }
@@ -98,6 +123,10 @@ TEST_F(ComputeFreeTier, ShadowMapsAndCountingViewsSayTheyNeedStorageInOneLine) {
   expect_refused("the debug view heatmap");
   world.registry().resource<RendererSettings>().debug_view = "";
   world.frame(0.0);
+  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
+    EXPECT_NE(view.name, "heatmap") << "a view the tier refuses is not offered";
+    EXPECT_NE(view.name, "fragments") << "a view the tier refuses is not offered";
+  }
 }
 
 }  // namespace

@@ -134,6 +134,8 @@ std::string debug_view_names() {
 std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const TechniqueOptions& options) {
   std::vector<OfferedView> views;
   for (const DebugView& row : kViews) {
+    // Counting writes image atomics, which the compute-free tier lacks.
+    if (options.compute_free && (row.needs.count_lights || row.needs.count_fragments)) continue;
     if (row.offered(graph, options)) views.push_back({std::string(row.name), std::string(row.help)});
   }
   for (const render::ViewableResource& resource : graph.viewable()) {
