@@ -23,7 +23,24 @@ struct ShadowView {
   vec4 params;           // x texel width (m, or m per m of distance), y cascade's far view depth, z 1 perspective
 };
 
+#ifdef NO_STORAGE_BUFFERS
+// The compute-free tier: six RGBA32F texels per view, kShadowViewsPerRow a row
+// (C++ twins in src/render/storage_free.hpp).
+const uint kShadowViewsPerRow = 341u;  // 2,046 texels
+layout(binding = 13) uniform highp sampler2D u_shadow_view_texture;
+
+ShadowView shadow_view_at(uint i) {
+  ivec2 first = ivec2(int(i % kShadowViewsPerRow) * 6, int(i / kShadowViewsPerRow));
+  mat4 view_projection = mat4(texelFetch(u_shadow_view_texture, first, 0), texelFetch(u_shadow_view_texture, first + ivec2(1, 0), 0),
+                              texelFetch(u_shadow_view_texture, first + ivec2(2, 0), 0), texelFetch(u_shadow_view_texture, first + ivec2(3, 0), 0));
+  return ShadowView(view_projection, texelFetch(u_shadow_view_texture, first + ivec2(4, 0), 0),
+                    texelFetch(u_shadow_view_texture, first + ivec2(5, 0), 0));
+}
+#else
 layout(std430, binding = 9) readonly buffer ShadowViews { ShadowView u_shadow_views[]; };
+
+ShadowView shadow_view_at(uint i) { return u_shadow_views[i]; }
+#endif
 // Compare mode on: a lookup answers "lit?" for the 2x2 texels around it, blended.
 layout(binding = 15) uniform sampler2DShadow u_shadow_atlas;
 
@@ -61,7 +78,7 @@ bool shadow_view_of(Light light, vec3 position, out uint index, out float depth)
     float view_depth = -(u_view * vec4(position, 1.0)).z;
     uint count = uint(light.spot.w);
     uint cascade = 0u;
-    while (cascade < count && view_depth > u_shadow_views[index + cascade].params.y) ++cascade;
+    while (cascade < count && view_depth > shadow_view_at(index + cascade).params.y) ++cascade;
     if (cascade == count) return false;
     index += cascade;
   }
@@ -77,7 +94,7 @@ float shadow_visibility(Light light, vec3 position, vec3 normal, vec3 l) {
   uint index;
   float depth;
   if (!shadow_view_of(light, position, index, depth)) return 1.0;
-  ShadowView view = u_shadow_views[index];
+  ShadowView view = shadow_view_at(index);
   float texel = view.params.x * (view.params.z > 0.5 ? max(depth, 0.0) : 1.0);
   float n_dot_l = clamp(dot(normal, l), 0.0, 1.0);
   vec3 p = position + normal * texel * kNormalOffsetTexels * (0.25 + sqrt(1.0 - n_dot_l * n_dot_l));

@@ -342,7 +342,7 @@ const std::vector<OptionSpec>& option_table() {
       {"--no-compute", "", kDrawing | kInfo,
        "run on the compute-free tier, as on WebGL2 or OpenGL 4.1: no compute shaders or storage buffers (lights, instances "
        "and materials in textures, draws issued one by one, tiled and clustered light lists binned on the CPU, no occlusion "
-       "culling); every mode runs there, shadow maps and the counting debug views not yet",
+       "culling); every mode and shadow maps run there, the counting debug views (heatmap, fragments) do not",
        [](std::string_view, CliOptions& o) { o.technique_options.compute_free = true; }},
       {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
       {"--memory", "", kInfo,

@@ -166,6 +166,10 @@ void MeshRenderer::bind_draws() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, active_commands_);
+  // The compute-free tier's twins: records in textures, commands from the CPU.
+  if (technique_options_.compute_free) storage_free_.bind();
+  lighting::draw_commands_from_cpu(technique_options_.compute_free ? std::span<const lighting::DrawCommand>(draws_.commands)
+                                                                   : std::span<const lighting::DrawCommand>());
 }
 
 void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw) {
@@ -277,20 +281,18 @@ void MeshRenderer::render(ecs::Registry& registry) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
   // Chooses the shadowed lights and moves them to the front of the light
   // buffer, before anything reads it; their maps are drawn by the graph.
+  shadows_.set_compute_free(technique_options_.compute_free);
   const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
   frame_stats_.shadows = shadows_.stats();
   upload_draws(draws);
   if (technique_options_.compute_free) {
-    if (settings.shadows > 0 || counting) {
-      throw gfx::ResourceLimitError(std::string(settings.shadows > 0 ? "shadow maps" : "the debug view " + settings.debug_view) +
-                                    " on the compute-free tier: its shaders write or read storage buffers or images, which this tier "
-                                    "lacks (a texture path for them is still to come)");
+    if (counting) {
+      throw gfx::ResourceLimitError("the debug view " + settings.debug_view +
+                                    " on the compute-free tier: it counts with image atomics, which this tier lacks");
     }
     storage_free_.upload(std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())), draws);
-    storage_free_.bind();
+    bind_draws();
   }
-  lighting::draw_commands_from_cpu(technique_options_.compute_free ? std::span<const lighting::DrawCommand>(draws_.commands)
-                                                                   : std::span<const lighting::DrawCommand>());
   refuse_unbounded_loops(draws, lights.count);
 
   // The frame's graph: the renderer's long-lived targets, then each

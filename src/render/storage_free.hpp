@@ -35,6 +35,8 @@ inline constexpr GLuint kLightTextureUnit = 10, kInstanceTextureUnit = 11, kMate
 inline constexpr std::uint32_t kLightTexels = 4, kLightsPerRow = 512;
 inline constexpr std::uint32_t kInstanceTexels = 9, kInstancesPerRow = 227;
 inline constexpr std::uint32_t kMaterialTexels = 14, kMaterialsPerRow = 146;
+inline constexpr std::uint32_t kShadowViewTexels = 6, kShadowViewsPerRow = 341;  // common/shadows.glsl
+inline constexpr GLuint kShadowViewTextureUnit = 13;
 static_assert(sizeof(GpuLight) == kLightTexels * sizeof(glm::vec4), "a light is 4 texels (common/lights.glsl)");
 static_assert(sizeof(lighting::InstanceData) == kInstanceTexels * sizeof(glm::vec4), "an instance is 9 texels (common/mesh.vert)");
 static_assert(sizeof(lighting::MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a material is 14 texels (common/material_table.glsl)");

@@ -352,6 +352,10 @@ bool ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
   }
   upload_patched_lights(lights, patched);
   view_buffer_.upload(views_.data(), views_.size() * sizeof(ShadowView));
+  if (compute_free_) {
+    static_assert(sizeof(ShadowView) == render::kShadowViewTexels * sizeof(glm::vec4), "a view is 6 texels (common/shadows.glsl)");
+    view_texture_.upload(std::span<const glm::vec4>(reinterpret_cast<const glm::vec4*>(views_.data()), views_.size() * render::kShadowViewTexels));
+  }
   bind();
   return !to_draw.empty();
 }
@@ -429,6 +433,14 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
+  if (compute_free_) {
+    instance_texture_.upload(render::instance_texels(caster_instances_));
+    material_texture_.upload(render::material_texels(caster_materials_));
+    instance_texture_.bind(render::kInstanceTextureUnit);
+    material_texture_.bind(render::kMaterialTextureUnit);
+  }
+  // The casters' commands until the maps are drawn; whoever draws next binds its own.
+  lighting::draw_commands_from_cpu(compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>());
 
   gfx::ShaderProgram& position_only = gpu_.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}, {"SHADOW_PASS"}});
   gfx::ShaderProgram& masked = gpu_.shaders().get({"common/mesh.vert", "common/depth_masked.frag"}, {{"SHADOW_PASS"}});
@@ -458,11 +470,13 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  lighting::draw_commands_from_cpu({});
 }
 
 void ShadowAtlas::bind() const {
   glBindTextureUnit(kShadowAtlasUnit, atlas_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.buffer.id());
+  if (compute_free_) view_texture_.bind(render::kShadowViewTextureUnit);
+  else glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.buffer.id());
 }
 
 }  // namespace atrium::shadows

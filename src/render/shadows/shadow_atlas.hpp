@@ -26,6 +26,7 @@
 #include "render/shadows/atlas_allocator.hpp"
 #include "render/shadows/shadow_selection.hpp"
 #include "render/shadows/shadow_views.hpp"
+#include "render/storage_free.hpp"
 
 namespace atrium::shadows {
 
@@ -59,6 +60,9 @@ class ShadowAtlas {
   }
 
   explicit ShadowAtlas(assets::GpuAssets& gpu);
+  // The compute-free tier (render/storage_free.hpp): views, caster instances
+  // and materials in textures, casters drawn from the CPU's commands.
+  void set_compute_free(bool on) { compute_free_ = on; }
 
   // Chooses this frame's maps, moves the shadowed lights to the front of
   // `lights` and patches them (CPU copy and buffer; light loops rely on the
@@ -118,6 +122,10 @@ class ShadowAtlas {
   gfx::Texture atlas_;
   gfx::Framebuffer framebuffer_;
   gfx::StreamBuffer view_buffer_, instances_, materials_, commands_;
+  bool compute_free_ = false;
+  render::RecordTexture view_texture_{render::kShadowViewTexels, render::kShadowViewsPerRow};
+  render::RecordTexture instance_texture_{render::kInstanceTexels, render::kInstancesPerRow};
+  render::RecordTexture material_texture_{render::kMaterialTexels, render::kMaterialsPerRow};
   std::unordered_map<ecs::Entity, Entry> entries_;
   std::vector<ShadowView> views_;
   // The views update() found stale and their lights' spheres, for draw_pending.
