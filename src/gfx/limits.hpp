@@ -31,6 +31,8 @@ class ResourceLimitError : public std::runtime_error {
 [[nodiscard]] int max_msaa_samples();
 // Mesa's software rasterisers (llvmpipe, lavapipe, softpipe).
 [[nodiscard]] bool is_software_renderer();
+// glMultiDrawElementsIndirectCount: OpenGL 4.6 or ARB_indirect_parameters.
+[[nodiscard]] bool has_indirect_count();
 // The most loop iterations one shader invocation may run, all its loops
 // together, or 0 for no limit. llvmpipe silently leaves every loop once a
 // shader's SIMD vector has run 65,535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS;

@@ -158,14 +158,19 @@ void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
   materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
   commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
-  active_commands_ = commands_.buffer.id();
+  active_phase_.reset();
   bind_draws();
 }
 
 void MeshRenderer::bind_draws() const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, active_commands_);
+  if (active_phase_) {
+    gpu_culling_.bind(*active_phase_);
+  } else {
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
+    lighting::draw_counts_from(-1);
+  }
   // The compute-free tier's twins: records in textures, commands from the CPU.
   if (technique_options_.compute_free) storage_free_.bind();
   lighting::draw_commands_from_cpu(technique_options_.compute_free ? std::span<const lighting::DrawCommand>(draws_.commands)
@@ -181,10 +186,10 @@ void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::Draw
     // The same phases on the GPU: the revealed commands, then the shown ones
     // for every pass after this one.
     gpu_culling_.reveal(depth_stencil_.id(), size_);
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, gpu_culling_.revealed_commands());
+    gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed);
     draw(draws_.opaque);
     gpu_culling_.remember(depth_stencil_.id(), size_);
-    active_commands_ = gpu_culling_.shown_commands();
+    active_phase_ = GpuOcclusionCulling::Phase::Shown;
     bind_draws();
     return;
   }
@@ -327,7 +332,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
     // Before anything draws the list: what the last frame showed.
     graph_.add_pass("occlusion culling", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
       gpu_culling_.begin(draws_, commands_.buffer.id());
-      active_commands_ = gpu_culling_.first_commands();
+      active_phase_ = GpuOcclusionCulling::Phase::First;
       bind_draws();
     });
   }

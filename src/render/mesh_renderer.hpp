@@ -7,6 +7,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -156,7 +157,9 @@ class MeshRenderer {
   GpuOcclusionCulling gpu_culling_;
   render::StorageFreeRecords storage_free_;  // the compute-free tier's lights, instances and materials
   bool culling_on_gpu_ = false;     // this frame's occlusion culling runs on the GPU (draws_ is an EachInView list)
-  GLuint active_commands_ = 0;      // the indirect buffer passes draw draws_ from (bind_draws)
+  // The GPU culling phase whose commands passes draw draws_ from (bind_draws);
+  // none: the uploaded commands.
+  std::optional<GpuOcclusionCulling::Phase> active_phase_;
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)

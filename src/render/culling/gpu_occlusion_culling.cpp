@@ -3,6 +3,7 @@
 #include <cstring>
 #include <span>
 
+#include "gfx/limits.hpp"
 #include "render/culling/occlusion_culling.hpp"
 
 namespace atrium {
@@ -48,7 +49,7 @@ std::vector<glm::ivec4> depth_pyramid_levels(glm::ivec2 viewport) {
 }
 
 GpuOcclusionCulling::GpuOcclusionCulling(gfx::ShaderLibrary& shaders)
-    : shaders_(shaders), counters_(gfx::create_buffer()), readback_(2 * sizeof(std::uint32_t)) {
+    : shaders_(shaders), packs_(gfx::has_indirect_count()), counters_(gfx::create_buffer()), readback_(2 * sizeof(std::uint32_t)) {
   glNamedBufferStorage(counters_.id(), 2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
@@ -63,6 +64,17 @@ void GpuOcclusionCulling::begin(const lighting::DrawList& list, GLuint commands)
   revealed_.reserve(command_bytes);
   shown_.reserve(command_bytes);
   records_.upload(list.cull_records.data(), list.cull_records.size() * sizeof(lighting::CullRecord));
+  if (packs_) {
+    // Every batch, by its count slot: opaque, then blended (draw_list.cpp).
+    std::vector<glm::uvec2> batches;
+    for (const auto* group : {&list.opaque, &list.blended}) {
+      for (const lighting::DrawBatch& batch : *group) batches.emplace_back(batch.first_command, batch.command_count);
+    }
+    batch_count_ = static_cast<std::uint32_t>(batches.size());
+    batches_.upload(batches.data(), batches.size() * sizeof(glm::uvec2));
+    for (gfx::StreamBuffer& packed : packed_) packed.reserve(command_bytes);
+    draw_counts_.reserve(std::max<std::size_t>(3 * batch_count_, 1) * sizeof(std::uint32_t));
+  }
   // A scene whose entities changed renumbers its units: every one counts as
   // shown, so the first frame draws all that is in view in its first phase.
   if (list.cull_units != units_ || !last_shown_) {
@@ -75,12 +87,50 @@ void GpuOcclusionCulling::begin(const lighting::DrawList& list, GLuint commands)
   const std::uint32_t zero = 0;
   glClearNamedBufferData(counters_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   cull(kFirst);
+  pack(Phase::First);
 }
 
 void GpuOcclusionCulling::reveal(GLuint depth, glm::ivec2 size) {
   const KeepProgram keep;
   build_pyramid(depth, size);
   cull(kReveal);
+  pack(Phase::Revealed);
+  pack(Phase::Shown);
+}
+
+const gfx::StreamBuffer& GpuOcclusionCulling::commands_of(Phase phase) const {
+  switch (phase) {
+    case Phase::First: return first_;
+    case Phase::Revealed: return revealed_;
+    case Phase::Shown: return shown_;
+  }
+  return first_;
+}
+
+void GpuOcclusionCulling::pack(Phase phase) {
+  if (!packs_ || batch_count_ == 0) return;
+  const auto p = static_cast<std::uint32_t>(phase);
+  gfx::ShaderProgram& program = shaders_.get({"culling/compact_commands.comp"});
+  program.use();
+  program.set("u_count_offset", p * batch_count_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOutBinding, commands_of(phase).buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShownBinding, packed_[p].buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kRecordsBinding, batches_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, draw_counts_.buffer.id());
+  glDispatchCompute(batch_count_, 1, 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
+}
+
+void GpuOcclusionCulling::bind(Phase phase) const {
+  if (!packs_) {
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_of(phase).buffer.id());
+    lighting::draw_counts_from(-1);
+    return;
+  }
+  const auto p = static_cast<std::uint32_t>(phase);
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, packed_[p].buffer.id());
+  glBindBuffer(GL_PARAMETER_BUFFER_ARB, draw_counts_.buffer.id());
+  lighting::draw_counts_from(static_cast<GLintptr>(p * batch_count_ * sizeof(std::uint32_t)));
 }
 
 void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {

@@ -5,8 +5,11 @@
 // pyramid is built from the depth buffer by culling/depth_tiles.comp and
 // culling/depth_pyramid.comp, and culling/occlusion_cull.comp writes the
 // commands each phase draws (instance count 0 for what it leaves out) and
-// which units the next frame draws first. Its counts come back through a
-// ReadbackRing a frame or more late.
+// which units the next frame draws first. Where GL 4.6 or
+// ARB_indirect_parameters has glMultiDrawElementsIndirectCount,
+// culling/compact_commands.comp then packs each batch's drawn commands to the
+// front of its range, in order, and draws take their count from the GPU.
+// Its counts come back through a ReadbackRing a frame or more late.
 #pragma once
 
 #include <cstddef>
@@ -50,9 +53,11 @@ class GpuOcclusionCulling {
   // hide for the next frame and queues the frame's counts.
   void remember(GLuint depth, glm::ivec2 size);
 
-  [[nodiscard]] GLuint first_commands() const { return first_.buffer.id(); }
-  [[nodiscard]] GLuint revealed_commands() const { return revealed_.buffer.id(); }
-  [[nodiscard]] GLuint shown_commands() const { return shown_.buffer.id(); }
+  // Which commands the next draws take (GL_DRAW_INDIRECT_BUFFER, and with
+  // packing the parameter buffer and lighting::draw_counts_from).
+  enum class Phase { First, Revealed, Shown };
+  void bind(Phase phase) const;
+  [[nodiscard]] bool packs() const { return packs_; }
 
   // The newest counts that have arrived; nullopt until one has. Never waits.
   [[nodiscard]] std::optional<GpuCullingCounts> take_counts();
@@ -60,9 +65,15 @@ class GpuOcclusionCulling {
  private:
   void build_pyramid(GLuint depth, glm::ivec2 size);
   void cull(unsigned phase);
+  // Packs `phase`'s commands and writes its batches' counts.
+  void pack(Phase phase);
+  [[nodiscard]] const gfx::StreamBuffer& commands_of(Phase phase) const;
 
   gfx::ShaderLibrary& shaders_;
   gfx::StreamBuffer first_, revealed_, shown_, records_, pyramid_;
+  bool packs_;  // glMultiDrawElementsIndirectCount is there
+  gfx::StreamBuffer packed_[3], batches_, draw_counts_;  // per phase; per batch (first, count); 3 counts per batch
+  std::uint32_t batch_count_ = 0;
   GLuint commands_ = 0;
   std::uint32_t command_count_ = 0, opaque_count_ = 0;
   std::size_t blended_triangles_ = 0;

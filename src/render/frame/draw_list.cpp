@@ -225,6 +225,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     append(list.opaque, pending_command.state, command, pending_command.instances.front().first);
     if (each_unit) list.cull_records.push_back(pending_command.cull);
   }
+  for (std::size_t b = 0; b < list.opaque.size(); ++b) list.opaque[b].count_slot = static_cast<std::uint32_t>(b);
   // Blended: farthest first, one instance per command.
   std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });
   for (const PendingBlend& item : blended) {
@@ -233,14 +234,18 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     list.instances.push_back(item.instance);
     append(list.blended, item.state, command, item.depth);
   }
+  for (std::size_t b = 0; b < list.blended.size(); ++b) list.blended[b].count_slot = static_cast<std::uint32_t>(list.opaque.size() + b);
   return list;
 }
 
 namespace {
 std::span<const DrawCommand> g_cpu_commands;  // draw_commands_from_cpu's
+GLintptr g_count_base = -1;                   // draw_counts_from's
 }  // namespace
 
 void draw_commands_from_cpu(std::span<const DrawCommand> commands) { g_cpu_commands = commands; }
+
+void draw_counts_from(GLintptr base) { g_count_base = base; }
 
 void draw_items(std::span<const DrawBatch> batches) {
   GLuint bound_vertex_array = 0;
@@ -259,10 +264,15 @@ void draw_items(std::span<const DrawBatch> batches) {
     if (batch.double_sided) glDisable(GL_CULL_FACE);
     else glEnable(GL_CULL_FACE);
     glFrontFace(batch.mirrored ? GL_CW : GL_CCW);
+    const auto* first = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand));
+    if (g_cpu_commands.empty() && g_count_base >= 0) {
+      glMultiDrawElementsIndirectCountARB(GL_TRIANGLES, GL_UNSIGNED_INT, first,
+                                          g_count_base + static_cast<GLintptr>(batch.count_slot) * static_cast<GLintptr>(sizeof(std::uint32_t)),
+                                          static_cast<GLsizei>(batch.command_count), 0);
+      continue;
+    }
     if (g_cpu_commands.empty()) {
-      glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT,
-                                  reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand)),
-                                  static_cast<GLsizei>(batch.command_count), 0);
+      glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, first, static_cast<GLsizei>(batch.command_count), 0);
       continue;
     }
     glDisableVertexAttribArray(assets::kInstanceIndexLocation);

@@ -102,6 +102,9 @@ struct DrawBatch {
   bool alpha_masked = false;
   std::uint32_t first_command = 0;  // into DrawList::commands
   std::uint32_t command_count = 0;
+  // Its draw count's slot in a parameter buffer (draw_counts_from): opaque
+  // batches first, then blended, in list order.
+  std::uint32_t count_slot = 0;
 };
 
 // The state a batch of `material`'s primitives draws with (no commands yet).
@@ -156,6 +159,12 @@ enum class DrawSelection {
 // instance-index attribute (common/mesh.vert adds gl_InstanceID). The span
 // must outlive the draws; the renderer sets it each frame.
 void draw_commands_from_cpu(std::span<const DrawCommand> commands);
+
+// GPU occlusion culling where GL 4.6 or ARB_indirect_parameters has
+// glMultiDrawElementsIndirectCount: each batch draws the first commands of its
+// range, as many as the bound GL_PARAMETER_BUFFER holds at
+// `base + 4 * count_slot` bytes (a negative base: every command, the default).
+void draw_counts_from(GLintptr base);
 
 // Issues one multi-draw per batch with the program in use, binding each batch's
 // textures to units 0-4, disabling back-face culling for double-sided batches

@@ -439,8 +439,9 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     instance_texture_.bind(render::kInstanceTextureUnit);
     material_texture_.bind(render::kMaterialTextureUnit);
   }
-  // The casters' commands until the maps are drawn; whoever draws next binds its own.
+  // The casters' commands, all of them, until the maps are drawn; whoever draws next binds its own.
   lighting::draw_commands_from_cpu(compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>());
+  lighting::draw_counts_from(-1);
 
   gfx::ShaderProgram& position_only = gpu_.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}, {"SHADOW_PASS"}});
   gfx::ShaderProgram& masked = gpu_.shaders().get({"common/mesh.vert", "common/depth_masked.frag"}, {{"SHADOW_PASS"}});
