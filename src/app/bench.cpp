@@ -331,6 +331,12 @@ std::string bench_markdown(const BenchResult& result) {
   if (o.technique_options.msaa > 1) md << ", MSAA " << o.technique_options.msaa << "x";
   if (o.shadow_counts.size() == 1 && o.shadow_counts[0] > 0) md << ", shadow maps for " << o.shadow_counts[0] << " lights";
   if (!o.shadow_counts.empty() && o.shadow_redraw) md << " (every map drawn every frame)";
+  if (o.technique_options.compute_free) md << ", the compute-free tier (--no-compute, no occlusion culling)";
+  else if (!o.occlusion_culling) {
+    md << ", no occlusion culling";
+  } else if (o.culling_device != CullingDevice::Automatic) {
+    md << ", occlusion culling on the " << (o.culling_device == CullingDevice::Gpu ? "GPU" : "CPU");
+  }
   md << ".\nRenderer: " << result.renderer << "; pass timing: " << result.timing_method
      << ". Frames per second from the median frame time (median over views).\n\n";
   md << "| lights |";
