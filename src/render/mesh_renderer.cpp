@@ -155,26 +155,33 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
 
 void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
   gpu_.reserve_instances(draws.instances.size());
-  instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
-  materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
-  commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
+  // The compute-free tier's records went to textures (StorageFreeRecords) and its commands stay on the CPU.
+  if (!technique_options_.compute_free) {
+    instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
+    materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
+    commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
+  }
   active_phase_.reset();
   bind_draws();
 }
 
 void MeshRenderer::bind_draws() const {
+  if (technique_options_.compute_free) {
+    // The tier's twins: records in textures, commands drawn from the CPU; no storage or indirect buffer.
+    storage_free_.bind();
+    lighting::draw_commands_from_cpu(draws_.commands);
+    lighting::draw_counts_from(-1);
+    return;
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+  lighting::draw_commands_from_cpu({});
   if (active_phase_) {
     gpu_culling_.bind(*active_phase_);
   } else {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
     lighting::draw_counts_from(-1);
   }
-  // The compute-free tier's twins: records in textures, commands from the CPU.
-  if (technique_options_.compute_free) storage_free_.bind();
-  lighting::draw_commands_from_cpu(technique_options_.compute_free ? std::span<const lighting::DrawCommand>(draws_.commands)
-                                                                   : std::span<const lighting::DrawCommand>());
 }
 
 void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw) {
@@ -289,15 +296,14 @@ void MeshRenderer::render(ecs::Registry& registry) {
   shadows_.set_compute_free(technique_options_.compute_free);
   const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
   frame_stats_.shadows = shadows_.stats();
-  upload_draws(draws);
   if (technique_options_.compute_free) {
     if (counting) {
       throw gfx::ResourceLimitError("the debug view " + settings.debug_view +
                                     " on the compute-free tier: it counts with image atomics, which this tier lacks");
     }
     storage_free_.upload(std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())), draws);
-    bind_draws();
   }
+  upload_draws(draws);
   refuse_unbounded_loops(draws, lights.count);
 
   // The frame's graph: the renderer's long-lived targets, then each

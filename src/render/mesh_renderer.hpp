@@ -122,10 +122,11 @@ class MeshRenderer {
   void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
   // Copies the frame's instance records, materials and indirect commands to
   // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
-  // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame.
+  // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame; on the compute-free
+  // tier binds the textures storage_free_ holds and the CPU's commands instead.
   void upload_draws(const lighting::DrawList& draws);
-  // Binds the frame's instance, material and command buffers again (after a
-  // pass that bound its own).
+  // Binds the frame's instance, material and command buffers (or the tier's
+  // textures and CPU commands) again, after a pass that bound its own.
   void bind_draws() const;
   // FrameContext::draw_first_pass: draws draws_ (what the last frame showed),
   // then, with occlusion culling and once a frame, what the depth it wrote

@@ -1,7 +1,6 @@
 #include "render/storage_free.hpp"
 
 #include <algorithm>
-#include <cstring>
 
 namespace atrium::render {
 namespace {
@@ -43,66 +42,38 @@ std::vector<glm::vec4> material_texels(std::span<const lighting::MaterialData> m
   return texels;
 }
 
-void RecordTexture::upload(std::span<const glm::vec4> texels) {
-  const std::size_t records = texels.size() / texels_;
-  const auto width = static_cast<int>(per_row_ * texels_);
+void RecordTexture::upload(const void* data, std::size_t records) {
+  const auto width = static_cast<GLsizei>(per_row_ * texels_);
   const int rows = static_cast<int>(std::max<std::size_t>((records + per_row_ - 1) / per_row_, 1));
-  if (!texture_ || rows > size_.y) {
-    size_ = glm::ivec2(width, std::max(rows, 2 * size_.y));
+  if (!texture_ || rows > rows_) {
+    rows_ = std::max(rows, 2 * rows_);
     texture_ = gfx::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture_.id(), 1, GL_RGBA32F, size_.x, size_.y);
+    glTextureStorage2D(texture_.id(), 1, format_.internal_format, width, rows_);
     set_nearest(texture_);
   }
-  if (records == 0) return;
   // Whole rows, then the last row's records.
-  const std::size_t full_rows = records / per_row_;
+  const auto* bytes = static_cast<const unsigned char*>(data);
+  const std::size_t full_rows = records / per_row_, rest = records % per_row_;
   if (full_rows > 0) {
-    glTextureSubImage2D(texture_.id(), 0, 0, 0, width, static_cast<GLsizei>(full_rows), GL_RGBA, GL_FLOAT, texels.data());
+    glTextureSubImage2D(texture_.id(), 0, 0, 0, width, static_cast<GLsizei>(full_rows), format_.pixel_format, format_.type, bytes);
   }
-  const std::size_t rest = records % per_row_;
   if (rest > 0) {
-    glTextureSubImage2D(texture_.id(), 0, 0, static_cast<GLint>(full_rows), static_cast<GLsizei>(rest * texels_), 1, GL_RGBA, GL_FLOAT,
-                        texels.data() + full_rows * per_row_ * texels_);
+    glTextureSubImage2D(texture_.id(), 0, 0, static_cast<GLint>(full_rows), static_cast<GLsizei>(rest * texels_), 1, format_.pixel_format,
+                        format_.type, bytes + full_rows * per_row_ * texels_ * format_.bytes);
   }
 }
 
 void RecordTexture::bind(GLuint unit) const { glBindTextureUnit(unit, texture_.id()); }
 
-namespace {
-
-// Grows `texture` to hold `count` texels of `format` in rows of
-// kListTextureWidth, and uploads `texels` (whole rows, then the rest).
-void upload_rows(gfx::Texture& texture, int& rows, GLenum format, GLenum pixel_format, const void* texels, std::size_t count,
-                 std::size_t texel_bytes) {
-  const int needed = static_cast<int>(std::max<std::size_t>((count + kListTextureWidth - 1) / kListTextureWidth, 1));
-  if (!texture || needed > rows) {
-    rows = std::max(needed, 2 * rows);
-    texture = gfx::create_texture(GL_TEXTURE_2D);
-    glTextureStorage2D(texture.id(), 1, format, static_cast<GLsizei>(kListTextureWidth), rows);
-    set_nearest(texture);
-  }
-  const std::size_t full_rows = count / kListTextureWidth, rest = count % kListTextureWidth;
-  const auto* bytes = static_cast<const unsigned char*>(texels);
-  if (full_rows > 0) {
-    glTextureSubImage2D(texture.id(), 0, 0, 0, static_cast<GLsizei>(kListTextureWidth), static_cast<GLsizei>(full_rows), pixel_format,
-                        GL_UNSIGNED_INT, bytes);
-  }
-  if (rest > 0) {
-    glTextureSubImage2D(texture.id(), 0, 0, static_cast<GLint>(full_rows), static_cast<GLsizei>(rest), 1, pixel_format, GL_UNSIGNED_INT,
-                        bytes + full_rows * kListTextureWidth * texel_bytes);
-  }
-}
-
-}  // namespace
-
-void ListTextures::upload(std::span<const glm::uvec2> ranges, std::span<const std::uint32_t> indices) {
-  upload_rows(ranges_, range_rows_, GL_RG32UI, GL_RG_INTEGER, ranges.data(), ranges.size(), sizeof(glm::uvec2));
-  upload_rows(indices_, index_rows_, GL_R32UI, GL_RED_INTEGER, indices.data(), indices.size(), sizeof(std::uint32_t));
+void ListTextures::upload(const lighting::CpuLightLists& lists) {
+  ranges_.upload(lists.ranges.data(), lists.ranges.size());
+  indices_.upload(lists.indices.data(), lists.indices.size());
+  entries_ = static_cast<std::uint32_t>(lists.indices.size());
 }
 
 void ListTextures::bind() const {
-  glBindTextureUnit(kLightRangeTextureUnit, ranges_.id());
-  glBindTextureUnit(kLightIndexTextureUnit, indices_.id());
+  ranges_.bind(kLightRangeTextureUnit);
+  indices_.bind(kLightIndexTextureUnit);
 }
 
 void StorageFreeRecords::upload(std::span<const GpuLight> lights, const lighting::DrawList& draws) {

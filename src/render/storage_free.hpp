@@ -18,6 +18,7 @@
 #include "gfx/gl_object.hpp"
 #include "render/frame/draw_list.hpp"
 #include "render/light_buffer.hpp"
+#include "render/lighting/cpu_light_lists.hpp"
 #include "render/shader_globals.hpp"
 
 namespace atrium::render {
@@ -45,19 +46,34 @@ static_assert(sizeof(lighting::MaterialData) == kMaterialTexels * sizeof(glm::ve
 [[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const lighting::InstanceData> instances);
 [[nodiscard]] std::vector<glm::vec4> material_texels(std::span<const lighting::MaterialData> materials);
 
-// A texture of records, `texels` RGBA32F texels each, `per_row` a row, grown
-// (never shrunk) to hold what it is given.
+// Texels in a record-texture format: the shaders' float records (RGBA32F)
+// and the light lists' ranges (RG32UI) and indices (R32UI).
+struct TexelFormat {
+  GLenum internal_format;
+  GLenum pixel_format;
+  GLenum type;
+  std::size_t bytes;
+};
+inline constexpr TexelFormat kFloatRecords{GL_RGBA32F, GL_RGBA, GL_FLOAT, sizeof(glm::vec4)};
+inline constexpr TexelFormat kLightRanges{GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, sizeof(glm::uvec2)};
+inline constexpr TexelFormat kLightIndices{GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, sizeof(std::uint32_t)};
+
+// A texture of records, `texels` texels each, `per_row` a row, grown (never
+// shrunk) to hold what it is given.
 class RecordTexture {
  public:
-  RecordTexture(std::uint32_t texels, std::uint32_t per_row) : texels_(texels), per_row_(per_row) {}
-  // `records` whole records' texels.
-  void upload(std::span<const glm::vec4> texels);
+  RecordTexture(std::uint32_t texels, std::uint32_t per_row, TexelFormat format = kFloatRecords)
+      : texels_(texels), per_row_(per_row), format_(format) {}
+  // `records` whole records, `format.bytes` a texel.
+  void upload(const void* data, std::size_t records);
+  void upload(std::span<const glm::vec4> texels) { upload(texels.data(), texels.size() / texels_); }
   void bind(GLuint unit) const;
 
  private:
   std::uint32_t texels_, per_row_;
+  TexelFormat format_;
   gfx::Texture texture_;
-  glm::ivec2 size_{0};
+  int rows_ = 0;
 };
 
 // Light lists built on the CPU (render/lighting/cpu_light_lists.hpp) as the
@@ -68,12 +84,15 @@ inline constexpr std::uint32_t kListTextureWidth = 2048;
 
 class ListTextures {
  public:
-  void upload(std::span<const glm::uvec2> ranges, std::span<const std::uint32_t> indices);
+  void upload(const lighting::CpuLightLists& lists);
   void bind() const;
+  // The entries of the lists last uploaded.
+  [[nodiscard]] std::uint32_t entries() const { return entries_; }
 
  private:
-  gfx::Texture ranges_, indices_;
-  int range_rows_ = 0, index_rows_ = 0;
+  RecordTexture ranges_{1, kListTextureWidth, kLightRanges};
+  RecordTexture indices_{1, kListTextureWidth, kLightIndices};
+  std::uint32_t entries_ = 0;
 };
 
 // The frame's records as textures, bound for every pass of the frame.

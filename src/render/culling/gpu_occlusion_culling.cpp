@@ -9,8 +9,7 @@
 namespace atrium {
 namespace {
 
-// The bindings of culling/depth_tiles.comp, depth_pyramid.comp and occlusion_cull.comp.
-constexpr GLuint kDepthTextureUnit = 14;
+// The bindings of culling/depth_pyramid.comp, occlusion_cull.comp and compact_commands.comp.
 constexpr GLuint kPyramidBinding = 10;
 constexpr GLuint kTemplateBinding = 16, kOutBinding = 17, kShownBinding = 18, kRecordsBinding = 19, kLastShownBinding = 20,
                  kCountersBinding = 21;
@@ -146,11 +145,7 @@ void GpuOcclusionCulling::build_pyramid(GLuint depth, glm::ivec2 size) {
   if (levels_.empty() || static_cast<int>(levels_.size()) > kMaxLevels) return;
   const glm::ivec4 top = levels_.back();
   pyramid_.reserve(static_cast<std::size_t>(top.z + top.x * top.y) * sizeof(float));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPyramidBinding, pyramid_.buffer.id());
-  shaders_.get({"culling/depth_tiles.comp"}).use();
-  glBindTextureUnit(kDepthTextureUnit, depth);
-  glDispatchCompute(static_cast<GLuint>(levels_[0].x), static_cast<GLuint>(levels_[0].y), 1);
-  glBindTextureUnit(kDepthTextureUnit, 0);
+  write_depth_tiles(shaders_, depth, glm::ivec2(levels_[0]), pyramid_.buffer.id());
   gfx::ShaderProgram& reduce = shaders_.get({"culling/depth_pyramid.comp"});
   reduce.use();
   for (std::size_t l = 1; l < levels_.size(); ++l) {

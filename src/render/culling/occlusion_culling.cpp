@@ -149,6 +149,14 @@ OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& dept
   return counts;
 }
 
+void write_depth_tiles(gfx::ShaderLibrary& shaders, GLuint depth, glm::ivec2 tiles, GLuint buffer) {
+  shaders.get({"culling/depth_tiles.comp"}).use();
+  glBindTextureUnit(kDepthTextureUnit, depth);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStorageBinding, buffer);
+  glDispatchCompute(static_cast<GLuint>(tiles.x), static_cast<GLuint>(tiles.y), 1);
+  glBindTextureUnit(kDepthTextureUnit, 0);
+}
+
 DepthPyramid DepthReader::read(GLuint depth, glm::ivec2 size) {
   const glm::ivec2 tiles = (size + DepthPyramid::kTileSize - 1) / DepthPyramid::kTileSize;
   const std::size_t count = static_cast<std::size_t>(tiles.x) * static_cast<std::size_t>(tiles.y);
@@ -160,14 +168,10 @@ DepthPyramid DepthReader::read(GLuint depth, glm::ivec2 size) {
   }
   GLint program = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
-  shaders_.get({"culling/depth_tiles.comp"}).use();
-  glBindTextureUnit(kDepthTextureUnit, depth);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStorageBinding, tiles_.id());
-  glDispatchCompute(static_cast<GLuint>(tiles.x), static_cast<GLuint>(tiles.y), 1);
+  write_depth_tiles(shaders_, depth, tiles, tiles_.id());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> farthest(count);
   gfx::read_buffer(tiles_.id(), 0, static_cast<GLsizeiptr>(count * sizeof(float)), farthest.data());
-  glBindTextureUnit(kDepthTextureUnit, 0);
   glUseProgram(static_cast<GLuint>(program));
   return DepthPyramid(std::move(farthest), tiles, size);
 }

@@ -66,6 +66,12 @@ OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& dep
 // (frustum culling clears it on what leaves the view).
 OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
 
+// Writes the farthest view depth of each 8x8-pixel tile of `depth` (`tiles`
+// of them, rows from the bottom) to the start of `buffer`
+// (culling/depth_tiles.comp): the pyramid's finest level, for the CPU and the
+// GPU path alike. The frame uniforms must be bound; the program it uses stays in use.
+void write_depth_tiles(gfx::ShaderLibrary& shaders, GLuint depth, glm::ivec2 tiles, GLuint buffer);
+
 // Reads a depth buffer back as a DepthPyramid (culling/depth_tiles.comp).
 class DepthReader {
  public:

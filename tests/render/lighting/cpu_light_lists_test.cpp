@@ -32,6 +32,14 @@ std::vector<std::vector<std::uint32_t>> per_bin(const lighting::CpuLightLists& l
   return out;
 }
 
+// Draws until the GPU's lists hold every light: the first frame's total comes
+// back after it (LightIndexList), so the second frame's lists are sized by it.
+void draw_settled(World& world) {
+  world.frame(0.0);
+  world.renderer().settle();
+  world.frame(0.0);
+}
+
 TEST_F(CpuLightLists, EqualTheGpuListsOfTheSameGridInLightOrder) {
   for (const lighting::ZSlicing slicing : {lighting::ZSlicing::Log, lighting::ZSlicing::Uniform}) {
     World world({.scene = "atrium", .lights = 6000u, .mode = "clustered-forward", .view = 2, .size = {160, 90}, .light_radius = 1.5f});
@@ -39,9 +47,7 @@ TEST_F(CpuLightLists, EqualTheGpuListsOfTheSameGridInLightOrder) {
     options.cluster_grid = {8, 5, 12};
     options.cluster_bounds = lighting::ClusterBounds::Grid;
     options.z_slicing = slicing;
-    world.frame(0.0);
-    world.renderer().settle();
-    world.frame(0.0);
+    draw_settled(world);
     const auto& technique = dynamic_cast<const lighting::ClusteredTechnique&>(*world.renderer().technique());
     const auto gpu = technique.grid().read_lists();
     const auto& lights = world.registry().resource<LightBuffer>().staging;
@@ -90,9 +96,7 @@ TEST_F(CpuLightLists, AwkwardLightsEqualTheBruteForceReference) {
 
 TEST_F(CpuLightLists, TileListsHoldEveryLightTheGpusTilesHold) {
   World world({.scene = "atrium", .lights = 3000u, .mode = "tiled-deferred", .view = 5, .size = {200, 120}, .light_radius = 1.0f});
-  world.frame(0.0);
-  world.renderer().settle();
-  world.frame(0.0);
+  draw_settled(world);
   const auto& technique = dynamic_cast<const lighting::TiledTechnique&>(*world.renderer().technique());
   const auto gpu = technique.list().read();
   const auto& lights = world.registry().resource<LightBuffer>().staging;

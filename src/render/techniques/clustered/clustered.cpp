@@ -99,9 +99,7 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
     pass.write(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
     if (compute_free_) {
-      const CpuLightLists cpu = bin_lights_in_clusters(frame.lights, frame.view, grid_);
-      cpu_lists_.upload(cpu.ranges, cpu.indices);
-      cpu_entries_ = static_cast<std::uint32_t>(cpu.indices.size());
+      cpu_lists_.upload(bin_lights_in_clusters(frame.lights, frame.view, grid_));
       return;
     }
     const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;

@@ -10,9 +10,9 @@
 // cpu_light_lists.hpp) as textures (render/storage_free.hpp).
 #pragma once
 
-#include "render/lighting/cluster_grid.hpp"
 #include <optional>
 
+#include "render/lighting/cluster_grid.hpp"
 #include "render/lighting/gbuffer.hpp"
 #include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
@@ -26,7 +26,7 @@ class ClusteredTechnique final : public LightingTechnique {
 
   [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
   [[nodiscard]] ListStats light_lists() override {
-    if (compute_free_) return {cpu_entries_, 0};
+    if (compute_free_) return {cpu_lists_.entries(), 0};
     grid_.list().poll();
     return {grid_.list().last_total(), grid_.list().overflow_frames()};
   }
@@ -52,7 +52,6 @@ class ClusteredTechnique final : public LightingTechnique {
   gfx::ShaderProgram* mark_;                    // nullptr on the compute-free tier
   gfx::ShaderProgram* mark_blended_;
   render::ListTextures cpu_lists_;              // the compute-free tier's
-  std::uint32_t cpu_entries_ = 0;
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
   gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
   SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)

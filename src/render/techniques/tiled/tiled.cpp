@@ -42,10 +42,8 @@ void TiledTechnique::assign_lights(LightIndexList& list, gfx::ShaderProgram& bou
 }
 
 void TiledTechnique::bin_on_cpu(const FrameContext& frame, const FrameTargets& targets) {
-  const CpuLightLists cpu = bin_lights_in_tiles(frame.lights, frame.view, frame.projection, targets.size, kTileSize, frame.near_plane,
-                                                frame.far_plane);
-  cpu_lists_.upload(cpu.ranges, cpu.indices);
-  cpu_entries_ = static_cast<std::uint32_t>(cpu.indices.size());
+  cpu_lists_.upload(
+      bin_lights_in_tiles(frame.lights, frame.view, frame.projection, targets.size, kTileSize, frame.near_plane, frame.far_plane));
 }
 
 void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
@@ -119,7 +117,7 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
 }
 
 LightingTechnique::ListStats TiledTechnique::light_lists() {
-  if (compute_free_) return {cpu_entries_, 0};
+  if (compute_free_) return {cpu_lists_.entries(), 0};
   if (!list_) return {};
   list_->poll();
   blended_list_->poll();

@@ -68,7 +68,6 @@ class TiledTechnique final : public LightingTechnique {
   bool blended_listed_ = false;         // this frame filled blended_list_
   render::ResourceId front_depth_;      // this frame's opaque depth with blended surfaces drawn over it
   render::ListTextures cpu_lists_;      // the compute-free tier's
-  std::uint32_t cpu_entries_ = 0;
 };
 
 }  // namespace atrium::lighting
