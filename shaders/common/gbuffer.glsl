@@ -145,13 +145,13 @@ bool read_gbuffer_sample(ivec2 pixel, int i, out Surface s) {
   return true;
 }
 #else
-layout(binding = 0) uniform target2D u_gbuffer_albedo;
+layout(binding = 0) uniform target2D u_gbuffer_compact_albedo;
 layout(binding = 1) uniform utarget2D u_gbuffer_packed;
 
 bool read_gbuffer_sample(ivec2 pixel, int i, out Surface s) {
   uvec4 words = fetch_sample(u_gbuffer_packed, pixel, i);
   if (words.w == 0u) return false;
-  vec4 albedo = fetch_sample(u_gbuffer_albedo, pixel, i);
+  vec4 albedo = fetch_sample(u_gbuffer_compact_albedo, pixel, i);
   vec4 mr = unpackUnorm4x8(words.z);
   float distance = uintBitsToFloat(words.w);
   s.position = u_camera_position.xyz + view_ray(pixel) * abs(distance);

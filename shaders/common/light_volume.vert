@@ -3,6 +3,7 @@
 // mesh (LightSphere) around a light, scaled to its radius (the mesh
 // circumscribes the true sphere). The light is u_light_index, or the instance
 // (from u_first_instance) for instanced drawing. Directional lights have no volume.
+#include "common/clip.glsl"
 #include "common/frame.glsl"
 #include "common/lights.glsl"
 
@@ -23,5 +24,5 @@ void main() {
     return;
   }
   vec3 world = light.position_radius.xyz + a_position * light.position_radius.w * u_circumscribe;
-  gl_Position = u_view_projection * vec4(world, 1.0);
+  gl_Position = clip_position(depth_clamped(u_view_projection * vec4(world, 1.0)));
 }

@@ -8,6 +8,7 @@
 // POSITION_ONLY (depth-only passes over surfaces without alpha tests) it
 // computes the clip-space position alone; with SHADOW_PASS it projects with
 // u_shadow_view_projection (a shadow map's view) instead of the camera's.
+#include "common/clip.glsl"
 #include "common/frame.glsl"
 #include "common/material_table.glsl"
 
@@ -80,9 +81,9 @@ void main() {
   Instance instance = instance_at(instance_index());
   vec4 world = instance.model * vec4(a_position, 1.0);
 #ifdef SHADOW_PASS
-  gl_Position = u_shadow_view_projection * world;
+  gl_Position = clip_position(u_shadow_view_projection * world);
 #else
-  gl_Position = u_view_projection * world;
+  gl_Position = clip_position(u_view_projection * world);
 #endif
 #ifndef POSITION_ONLY
   v_position = world.xyz;

@@ -7,8 +7,8 @@ flat in vec3 v_color;
 layout(location = 0) out vec4 o_color;
 
 void main() {
-  const float r2 = dot(v_corner, v_corner);
+  float r2 = dot(v_corner, v_corner);
   if (r2 >= 1.0) discard;
-  const float glow = exp(-6.0 * r2) - exp(-6.0);
+  float glow = exp(-6.0 * r2) - exp(-6.0);
   o_color = vec4(v_color * 8.0 * glow, 0.0);
 }

@@ -44,7 +44,7 @@ namespace {
 // `render --debug-view list`: the views the mode's graph (with these options)
 // offers, one per line with what each shows.
 int list_debug_views(const CliOptions& options) {
-  const auto context = gfx::HeadlessContext::create();
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   WorldOptions listed = world_options(options);
   listed.debug_view.clear();
   listed.size = {16, 16};  // one frame makes the technique; its picture is not needed
@@ -62,7 +62,7 @@ int run_render(const CliOptions& options) {
   if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path())) {
     throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");
   }
-  const auto context = gfx::HeadlessContext::create();
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   World world(world_options(options));
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
@@ -109,7 +109,7 @@ int run_render(const CliOptions& options) {
 }  // namespace
 
 int run_info(const CliOptions& options) {
-  const auto context = gfx::HeadlessContext::create();
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   WorldOptions loaded = world_options(options);
   loaded.size = {16, 16};  // info renders nothing worth a large target
   World world(loaded);
@@ -131,7 +131,7 @@ int run_info(const CliOptions& options) {
 // Every mode at every view against forward: PSNR and largest channel difference.
 int run_compare(const CliOptions& options) {
   const std::string below = "  < " + std::to_string(static_cast<int>(kMinimumPsnr)) + " dB";
-  const auto context = gfx::HeadlessContext::create();
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   WorldOptions compared = world_options(options);
   compared.mode = "forward";
   World world(compared);
@@ -181,7 +181,7 @@ void plot(const std::string& csv, const std::string& png) {
 }
 
 int run_bench_command(const CliOptions& options) {
-  const auto context = gfx::HeadlessContext::create();
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   BenchOptions bench = options.bench;
   bench.light_radius = options.light_radius;
   bench.scene = options.scene;

@@ -12,6 +12,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gfx/context.hpp"
 #include "app/bench.hpp"
 #include "app/world.hpp"
 #include "components/light.hpp"
@@ -57,6 +58,7 @@ struct CliOptions {
   int shadows = 0;                      // --shadows K: lights with shadow maps
   std::map<std::string, double> system_options;  // rows of the system options table, by name
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)
+  gfx::GlApi gl_api = gfx::GlApi::Auto; // --gl: which OpenGL the context asks for
   BenchOptions bench;                   // bench: the sweep
   std::string csv, md, plot;            // bench: output files
 };

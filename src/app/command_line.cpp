@@ -344,6 +344,15 @@ const std::vector<OptionSpec>& option_table() {
        "and materials in textures, draws issued one by one, tiled and clustered light lists binned on the CPU, no occlusion "
        "culling); every mode and shadow maps run there, the counting debug views (heatmap, fragments) do not",
        [](std::string_view, CliOptions& o) { o.technique_options.compute_free = true; }},
+      {"--gl", "API", kDrawing | kInfo,
+       "which OpenGL to ask the driver for: 4.5 (core), 4.1 (core, where macOS stops), es3.0 (OpenGL ES 3.0, WebGL2's "
+       "feature set) or auto (default: the first of those the driver gives); a context without compute shaders or storage "
+       "buffers runs the compute-free tier by itself (see --no-compute)",
+       [](std::string_view value, CliOptions& o) {
+         const auto api = gfx::gl_api_from_name(value);
+         if (!api) throw UsageError("unknown --gl '" + std::string(value) + "' (expected auto, 4.5, 4.1 or es3.0)");
+         o.gl_api = *api;
+       }},
       {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
       {"--memory", "", kInfo,
        "draw one frame of every mode at --size and report its render-target memory: long-lived targets, and transient "

@@ -196,6 +196,7 @@ void step_back(World& world, Settings& settled, const gfx::ResourceLimitError& e
 int run_window(const CliOptions& options) {
   gfx::ContextOptions context_options;
   context_options.debug = context_options.debug || options.gl_debug;
+  context_options.api = options.gl_api;
   const auto context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y, context_options);
   GLFWwindow* window = context->window();
   context->set_vsync(true);

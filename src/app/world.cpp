@@ -13,6 +13,7 @@
 #include "assets/asset_manager.hpp"
 #include "assets/scene_file.hpp"
 #include "assets/builtin_scene.hpp"
+#include "gfx/gl_features.hpp"
 #include "render/gpu_assets.hpp"
 #include "components/camera.hpp"
 #include "components/frame_resources.hpp"
@@ -155,6 +156,11 @@ void World::start(const WorldOptions& options) {
   settings.shading = options.shading;
   settings.debug_view = options.debug_view;
   settings.technique_options = options.technique_options;
+  if (const gfx::GlFeatures& gl = gfx::gl_features(); !gl.full_tier() && !settings.technique_options.compute_free) {
+    settings.technique_options.compute_free = true;
+    std::fprintf(stderr, "note: %s has %s: running on the compute-free tier\n", gl.api_name().c_str(),
+                 gl.missing_for_full_tier().c_str());
+  }
   settings.frustum_culling = options.frustum_culling;
   settings.occlusion_culling = options.occlusion_culling;
   settings.culling_device = options.culling_device;

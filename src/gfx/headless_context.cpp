@@ -6,9 +6,7 @@
 #include <epoxy/egl.h>
 
 #include "gfx/context.hpp"
-#include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
-#include "gfx/sanitizer_support.hpp"
 
 namespace atrium::gfx {
 namespace {
@@ -58,6 +56,22 @@ Display open_surfaceless_display(const char* client_extensions) {
   return {display, "egl-surfaceless"};
 }
 
+// A context of the kind `request` names, or EGL_NO_CONTEXT where the driver has none.
+EGLContext create_context(EGLDisplay display, const GlVersionRequest& request, bool debug) {
+  if (!eglBindAPI(request.es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) return EGL_NO_CONTEXT;
+  // No surface is ever created: any surface type will do (the default asks for windows).
+  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, request.es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT,
+                                      EGL_SURFACE_TYPE, 0, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint config_count = 0;
+  if (!eglChooseConfig(display, config_attributes, &config, 1, &config_count) || config_count == 0) return EGL_NO_CONTEXT;
+  std::vector<EGLint> attributes{EGL_CONTEXT_MAJOR_VERSION, request.major, EGL_CONTEXT_MINOR_VERSION, request.minor,
+                                 EGL_CONTEXT_OPENGL_DEBUG, debug ? EGL_TRUE : EGL_FALSE};
+  if (!request.es) attributes.insert(attributes.end(), {EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT});
+  attributes.push_back(EGL_NONE);
+  return eglCreateContext(display, config, EGL_NO_CONTEXT, attributes.data());
+}
+
 }  // namespace
 
 std::unique_ptr<HeadlessContext> HeadlessContext::create(const ContextOptions& options) {
@@ -77,28 +91,18 @@ std::unique_ptr<HeadlessContext> HeadlessContext::create(const ContextOptions& o
   auto context = std::unique_ptr<HeadlessContext>(new HeadlessContext());
   context->display_ = display.handle;
 
-  if (!eglBindAPI(EGL_OPENGL_API)) throw ContextError("EGL: the driver has no desktop OpenGL API");
-  // No surface is ever created: any surface type will do (the default asks for windows).
-  const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_SURFACE_TYPE, 0, EGL_NONE};
-  EGLConfig config = nullptr;
-  EGLint config_count = 0;
-  if (!eglChooseConfig(display.handle, config_attributes, &config, 1, &config_count) || config_count == 0) {
-    throw ContextError("EGL: no config renders desktop OpenGL");
+  for (const GlVersionRequest& request : gl_version_requests(options.api)) {
+    context->context_ = create_context(display.handle, request, options.debug);
+    if (context->context_ != EGL_NO_CONTEXT) break;
   }
-  const EGLint context_attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4,
-                                       EGL_CONTEXT_MINOR_VERSION, 5,
-                                       EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
-                                       EGL_CONTEXT_OPENGL_DEBUG, options.debug ? EGL_TRUE : EGL_FALSE,
-                                       EGL_NONE};
-  context->context_ = eglCreateContext(display.handle, config, EGL_NO_CONTEXT, context_attributes);
   if (context->context_ == EGL_NO_CONTEXT) {
-    throw ContextError("EGL: the driver cannot create an OpenGL 4.5 core context (Mesa 20 or newer is needed)");
+    throw ContextError("EGL: the driver gives none of " + describe_requests(options.api) +
+                       " (Mesa 20 or newer has them all)");
   }
   if (!eglMakeCurrent(display.handle, EGL_NO_SURFACE, EGL_NO_SURFACE, context->context_)) {
     throw ContextError("EGL: cannot make the context current without a surface (EGL_KHR_surfaceless_context)");
   }
-  keep_gl_driver_loaded();
-  if (options.debug) enable_debug_output();
+  detail::prepare_current_context(options);
   context->info_ = current_context_info(display.platform);
   return context;
 }
@@ -109,14 +113,6 @@ HeadlessContext::~HeadlessContext() {
     if (context_) eglDestroyContext(display_, context_);
     eglTerminate(display_);
   }
-}
-
-ContextInfo current_context_info(std::string platform) {
-  auto text = [](GLenum name) {
-    const auto* s = reinterpret_cast<const char*>(glGetString(name));
-    return std::string(s ? s : "?");
-  };
-  return {text(GL_VENDOR), text(GL_RENDERER), text(GL_VERSION), std::move(platform)};
 }
 
 }  // namespace atrium::gfx

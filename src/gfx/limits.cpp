@@ -5,10 +5,12 @@
 #include <string_view>
 
 #include "gfx/gl.hpp"
+#include "gfx/gl_features.hpp"
 
 namespace atrium::gfx {
 
 std::uint64_t storage_block_limit() {
+  if (!gl_features().storage_buffers) return 0;
   GLint64 bytes = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &bytes);
   return static_cast<std::uint64_t>(std::max<GLint64>(bytes, 0));
@@ -23,14 +25,20 @@ int max_texture_size() {
 glm::ivec2 max_render_size() {
   GLint viewport[2] = {0, 0}, width = 0, height = 0, renderbuffer = 0;
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
-  glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
-  glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
   const int texture = max_texture_size();
+  if (gl_features().framebuffer_limits) {
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_WIDTH, &width);
+    glGetIntegerv(GL_MAX_FRAMEBUFFER_HEIGHT, &height);
+  } else {
+    width = height = texture;
+  }
   return {std::min({viewport[0], width, renderbuffer, texture}), std::min({viewport[1], height, renderbuffer, texture})};
 }
 
 int max_msaa_samples() {
+  // The tiers draw into textures: without multisampled ones, no MSAA.
+  if (!gl_features().multisample_textures) return 1;
   GLint samples = 0, color = 0, depth = 0, integer = 0;
   glGetIntegerv(GL_MAX_SAMPLES, &samples);
   glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &color);
@@ -46,7 +54,9 @@ bool is_software_renderer() {
          name.find("lavapipe") != std::string_view::npos;
 }
 
-bool has_indirect_count() { return epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_indirect_parameters"); }
+bool has_indirect_count() {
+  return epoxy_is_desktop_gl() && (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_indirect_parameters"));
+}
 
 std::uint32_t shader_loop_limit() { return is_software_renderer() ? 65535u : 0u; }
 

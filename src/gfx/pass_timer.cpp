@@ -1,19 +1,22 @@
 #include "gfx/pass_timer.hpp"
 
+#include "gfx/gl_features.hpp"
 #include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 
 namespace atrium::gfx {
 
-PassTimer::PassTimer() : PassTimer(is_software_renderer() ? TimingMethod::CpuFinish : TimingMethod::GpuQueries) {}
+PassTimer::PassTimer()
+    : PassTimer(is_software_renderer() || !gl_features().timer_queries ? TimingMethod::CpuFinish : TimingMethod::GpuQueries) {}
 PassTimer::PassTimer(TimingMethod method)
     : method_(method),
-      counts_fragments_(epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query")) {
+      counts_fragments_(epoxy_is_desktop_gl() &&
+                        (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query"))) {
   if (counts_fragments_) cpu_fragments_ = create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
 
 const char* PassTimer::method_name() const {
-  return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer)";
+  return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer, or no GL_TIME_ELAPSED)";
 }
 
 void PassTimer::begin_frame() {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "gfx/gl_features.hpp"
+
 namespace atrium::gfx {
 
 namespace {
@@ -11,8 +13,15 @@ constexpr GLbitfield kMapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP
 ReadbackRing::ReadbackRing(std::size_t slot_bytes, std::size_t slots)
     : slot_bytes_(std::max<std::size_t>(slot_bytes, 4)), buffer_(create_buffer()), slots_(std::max<std::size_t>(slots, 1)) {
   const auto total = static_cast<GLsizeiptr>(slot_bytes_ * slots_.size());
-  glNamedBufferStorage(buffer_.id(), total, nullptr, kMapping);
-  mapped_ = static_cast<const unsigned char*>(glMapNamedBufferRange(buffer_.id(), 0, total, kMapping));
+  if (gl_features().buffer_storage) {
+    glNamedBufferStorage(buffer_.id(), total, nullptr, kMapping);
+    mapped_ = static_cast<const unsigned char*>(glMapNamedBufferRange(buffer_.id(), 0, total, kMapping));
+  } else {
+    // No persistent mapping (OpenGL 4.1, ES 3.0): a slot is read with
+    // glGetBufferSubData once its fence has passed, which does not wait either.
+    glNamedBufferData(buffer_.id(), total, nullptr, GL_STREAM_READ);
+    staging_.resize(slot_bytes_);
+  }
 }
 
 ReadbackRing::~ReadbackRing() {
@@ -24,7 +33,7 @@ ReadbackRing::~ReadbackRing() {
 
 bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::uint64_t tag) {
   Slot& slot = slots_[next_];
-  if (slot.fence || bytes > slot_bytes_ || !mapped_) return false;
+  if (slot.fence || bytes > slot_bytes_ || (!mapped_ && staging_.empty())) return false;
   // The copy reads what shaders wrote through storage or images.
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glCopyNamedBufferSubData(buffer, buffer_.id(), offset, static_cast<GLintptr>(next_ * slot_bytes_), static_cast<GLsizeiptr>(bytes));
@@ -45,7 +54,13 @@ void ReadbackRing::poll(const std::function<void(const void* data, std::size_t b
   for (const std::size_t i : done) {
     glDeleteSync(slots_[i].fence);
     slots_[i].fence = nullptr;
-    arrived(mapped_ + i * slot_bytes_, slots_[i].bytes, slots_[i].tag);
+    if (mapped_) {
+      arrived(mapped_ + i * slot_bytes_, slots_[i].bytes, slots_[i].tag);
+    } else {
+      glGetNamedBufferSubData(buffer_.id(), static_cast<GLintptr>(i * slot_bytes_), static_cast<GLsizeiptr>(slots_[i].bytes),
+                              staging_.data());
+      arrived(staging_.data(), slots_[i].bytes, slots_[i].tag);
+    }
   }
 }
 

@@ -1,6 +1,7 @@
 // What the GPU writes for the CPU to read a frame or more later, without ever
 // waiting: each copy goes to a slot of a persistently mapped buffer with a
-// fence, and poll() hands back the copies whose fences have passed (asked with
+// fence (a plain buffer read after its fence where persistent mapping is
+// missing), and poll() hands back the copies whose fences have passed (asked with
 // timeout 0), oldest first. A copy asked for while every slot is still in
 // flight is dropped: the GPU is that many frames behind, and the next one will
 // do. Used by the light lists (their totals) and the debug views' averages;
@@ -41,7 +42,8 @@ class ReadbackRing {
   };
   std::size_t slot_bytes_;
   Buffer buffer_;
-  const unsigned char* mapped_ = nullptr;
+  const unsigned char* mapped_ = nullptr;     // persistently mapped where the context can
+  std::vector<unsigned char> staging_;        // else where a slot is read into
   std::vector<Slot> slots_;
   std::size_t next_ = 0;
   std::uint64_t copies_ = 0;

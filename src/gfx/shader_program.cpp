@@ -8,6 +8,9 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gfx/gl_features.hpp"
+#include "gfx/glsl_dialect.hpp"
+
 namespace atrium::gfx {
 namespace fs = std::filesystem;
 
@@ -171,6 +174,15 @@ std::string info_log(GLuint object, bool is_program) {
   return log;
 }
 
+// `defines` and what the context itself asks of every program (gfx/gl_features.hpp).
+std::vector<ShaderDefine> context_defines(const std::vector<ShaderDefine>& defines) {
+  std::vector<ShaderDefine> all = defines;
+  const GlFeatures& features = gl_features();
+  if (!features.clip_control) all.push_back({"CLIP_Z_MINUS_ONE_TO_ONE"});
+  if (!features.depth_clamp) all.push_back({"NO_DEPTH_CLAMP"});
+  return all;
+}
+
 }  // namespace
 
 PreprocessedShader preprocess_shader(const ShaderSearchPath& path, const std::string& file,
@@ -200,13 +212,23 @@ ShaderProgram ShaderProgram::load(const std::vector<std::string>& files, const s
                                   const ShaderSearchPath& path) {
   ShaderProgram result;
   std::vector<Shader> shaders;
+  std::vector<GlslBinding> bindings;
   std::string names;
+  const GlslDialect dialect = glsl_dialect(gl_features());
+  const std::vector<ShaderDefine> all_defines = context_defines(defines);
   for (const auto& file : files) {
     names += (names.empty() ? "" : " + ") + file;
     const GLenum stage = stage_of(file);
-    const PreprocessedShader source = preprocess_shader(path, file, defines);
+    const PreprocessedShader source = preprocess_shader(path, file, all_defines);
+    DialectText dialect_text;
+    try {
+      dialect_text = to_dialect(source.text, stage, dialect);
+    } catch (const std::invalid_argument& e) {
+      throw ShaderError(file + ": " + e.what());
+    }
+    bindings.insert(bindings.end(), dialect_text.bindings.begin(), dialect_text.bindings.end());
     Shader shader = Shader::adopt(glCreateShader(stage));
-    const char* text = source.text.c_str();
+    const char* text = dialect_text.text.c_str();
     glShaderSource(shader.id(), 1, &text, nullptr);
     glCompileShader(shader.id());
     GLint ok = GL_FALSE;
@@ -225,6 +247,7 @@ ShaderProgram ShaderProgram::load(const std::vector<std::string>& files, const s
   GLint ok = GL_FALSE;
   glGetProgramiv(result.program_.id(), GL_LINK_STATUS, &ok);
   if (!ok) throw ShaderError(names + ": link failed: " + info_log(result.program_.id(), true));
+  apply_bindings(result.program_.id(), bindings);
   return result;
 }
 

@@ -5,8 +5,6 @@
 #include <GLFW/glfw3.h>
 
 #include "gfx/context.hpp"
-#include "gfx/debug_output.hpp"
-#include "gfx/sanitizer_support.hpp"
 
 namespace atrium::gfx {
 
@@ -20,23 +18,30 @@ std::unique_ptr<WindowContext> WindowContext::create(const std::string& title, i
         "`xvfb-run -a ./run.sh`");
   }
   if (!glfwInit()) throw ContextError("GLFW could not initialise the display connection");
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 5);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
-  glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
-  GLFWwindow* window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  GLFWwindow* window = nullptr;
+  for (const GlVersionRequest& request : gl_version_requests(options.api)) {
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CLIENT_API, request.es ? GLFW_OPENGL_ES_API : GLFW_OPENGL_API);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, request.major);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, request.minor);
+    if (!request.es) {
+      glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+      glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    }
+    glfwWindowHint(GLFW_OPENGL_DEBUG_CONTEXT, options.debug ? GLFW_TRUE : GLFW_FALSE);
+    glfwWindowHint(GLFW_RESIZABLE, GLFW_TRUE);
+    window = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+    if (window) break;
+  }
   if (!window) {
     glfwTerminate();
-    throw ContextError("GLFW could not open a window with an OpenGL 4.5 core context");
+    throw ContextError("GLFW could not open a window with any of " + describe_requests(options.api));
   }
   glfwMakeContextCurrent(window);
   auto context = std::unique_ptr<WindowContext>(new WindowContext());
   context->window_ = window;
   context->set_vsync(true);
-  keep_gl_driver_loaded();
-  if (options.debug) enable_debug_output();
+  detail::prepare_current_context(options);
   context->info_ = current_context_info("glfw");
   return context;
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstddef>
 
+#include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 
 namespace atrium::assets {
@@ -151,14 +152,27 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
       glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(Vertex)),
                            static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
     }
+    // Without glDrawElements*BaseVertex (ES 3.0, WebGL2) the indices are
+    // stored already offset by their buffer's first vertex, and every range
+    // draws from vertex 0.
+    const bool offset_indices = !gfx::gl_features().base_vertex;
+    std::vector<std::uint32_t> offset;
     std::size_t first_index = 0;
     for (const Mesh& mesh : asset.meshes) {
       auto& ranges = gpu.meshes.emplace_back();
       for (const Primitive& p : mesh.primitives) {
-        ranges.push_back({static_cast<std::uint32_t>(first_index), static_cast<std::uint32_t>(p.indices.size()), base_vertex.at(p.vertex_buffer)});
+        const std::int32_t base = base_vertex.at(p.vertex_buffer);
+        ranges.push_back({static_cast<std::uint32_t>(first_index), static_cast<std::uint32_t>(p.indices.size()), offset_indices ? 0 : base});
+        const std::uint32_t* indices = p.indices.data();
+        if (offset_indices) {
+          offset.resize(p.indices.size());
+          std::transform(p.indices.begin(), p.indices.end(), offset.begin(),
+                         [&](std::uint32_t i) { return i + static_cast<std::uint32_t>(base); });
+          indices = offset.data();
+        }
         if (!p.indices.empty()) {
           glNamedBufferSubData(gpu.indices.id(), static_cast<GLintptr>(first_index * sizeof(std::uint32_t)),
-                               static_cast<GLsizeiptr>(p.indices.size() * sizeof(std::uint32_t)), p.indices.data());
+                               static_cast<GLsizeiptr>(p.indices.size() * sizeof(std::uint32_t)), indices);
         }
         first_index += p.indices.size();
       }

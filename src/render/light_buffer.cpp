@@ -3,11 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 
 #include "components/light.hpp"
 #include "components/transform.hpp"
 #include "base/format.hpp"
+#include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 #include "render/lighting/light_falloff.hpp"
 
@@ -87,8 +89,11 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     }
     state->count = static_cast<std::uint32_t>(state->staging.size());
     const std::size_t needed = std::max<std::size_t>(state->staging.size(), 1);
-    const std::uint64_t block = gfx::storage_block_limit();
-    const std::size_t limit = block / sizeof(GpuLight);
+    // Where there are no storage buffers the compute-free tier reads the lights
+    // from a texture (render/storage_free.hpp), and this buffer is a plain one.
+    const std::uint64_t block =
+        gfx::gl_features().storage_buffers ? gfx::storage_block_limit() : std::numeric_limits<std::uint64_t>::max();
+    const std::size_t limit = static_cast<std::size_t>(std::min<std::uint64_t>(block / sizeof(GpuLight), std::numeric_limits<std::uint32_t>::max()));
     if (needed > limit) {
       throw gfx::ResourceLimitError(std::to_string(state->staging.size()) + " lights need a " +
                                     format_bytes(static_cast<double>(needed * sizeof(GpuLight))) + " light buffer, more than one storage buffer may hold here (" +

@@ -290,7 +290,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   uniforms.far_plane = view.far_plane;
   glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
   glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
+  if (!technique_options_.compute_free) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
   // Chooses the shadowed lights and moves them to the front of the light
   // buffer, before anything reads it; their maps are drawn by the graph.
   shadows_.set_compute_free(technique_options_.compute_free);

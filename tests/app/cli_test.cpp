@@ -61,6 +61,7 @@ TEST(Cli, BadArgumentsNameTheProblem) {
   EXPECT_EQ(usage_error({"--size", "640"}), "--size expects WIDTHxHEIGHT (e.g. 640x360), got '640'");
   EXPECT_EQ(usage_error({"--size", "0x10"}), "--size expects WIDTHxHEIGHT with each side from 1 to 16384, got '0x10'");
   EXPECT_EQ(usage_error({"--mode", "deferred-ish"}).rfind("unknown mode 'deferred-ish' (modes: forward", 0), 0u);
+  EXPECT_EQ(usage_error({"--gl", "es2.0"}), "unknown --gl 'es2.0' (expected auto, 4.5, 4.1 or es3.0)");
   EXPECT_EQ(usage_error({"a", "b"}), "unexpected argument 'b' (one scene at most)");
 }
 
@@ -107,7 +108,7 @@ TEST(Cli, SuggestsTheNearestOptionAndNamesWhereAnOptionBelongs) {
 TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
   const std::map<std::string, std::string> sample{
       {"--mode", "deferred"},       {"--shading", "phong"},          {"--cluster-grid", "8x4x8"},
-      {"--cluster-bounds", "grid"}, {"--z-slicing", "uniform"},      {"--gbuffer", "compact"}, {"--culling", "gpu"},
+      {"--cluster-bounds", "grid"}, {"--z-slicing", "uniform"},      {"--gbuffer", "compact"}, {"--culling", "gpu"}, {"--gl", "es3.0"},
       {"--debug-view", "depth"},    {"--lights", "5"},               {"--light-radius", "2"},
       {"--max-texture-size", "64"}, {"--view", "2"},                 {"--camera", "0,1,2,0,0"},
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},

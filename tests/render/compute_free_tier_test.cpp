@@ -14,6 +14,7 @@
 #include "render/gpu_assets.hpp"
 #include "render/techniques/technique.hpp"
 #include "support/gl_test.hpp"
+#include "support/offered_views.hpp"
 
 namespace atrium {
 namespace {
@@ -91,17 +92,7 @@ TEST_F(ComputeFreeTier, EveryViewAModeOffersThereDraws) {
   options.lights = 16u;
   options.size = {64, 36};
   World world(options);
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
-    world.set_mode(std::string(info.name));
-    world.registry().resource<RendererSettings>().debug_view = "";
-    world.frame(0.0);
-    const std::vector<lighting::OfferedView> views = world.renderer().offered_views();
-    EXPECT_GT(views.size(), 2u) << info.name;
-    for (const lighting::OfferedView& view : views) {
-      world.registry().resource<RendererSettings>().debug_view = view.name;
-      EXPECT_NO_THROW(world.frame(0.0)) << info.name << ", view " << view.name;
-    }
-  }
+  testing::expect_every_offered_view_draws(world);
   expect_storage_free_programs(world);
 }
 

@@ -1,6 +1,8 @@
 // main() for GL test programs: creates the headless context (with KHR_debug
 // output) before any test runs and destroys it after the last.
+// $ATRIUM_TEST_GL (auto, 4.5, 4.1, es3.0; as --gl) picks the API it asks for.
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 
 #include <gtest/gtest.h>
@@ -11,9 +13,15 @@ namespace {
 class GlEnvironment : public ::testing::Environment {
  public:
   void SetUp() override {
-    context_ = atrium::gfx::HeadlessContext::create(atrium::gfx::ContextOptions{.debug = true});
-    std::printf("GL context: %s, %s (%s)\n", context_->info().renderer.c_str(), context_->info().version.c_str(),
-                context_->info().platform.c_str());
+    const char* api_name = std::getenv("ATRIUM_TEST_GL");
+    const auto api = atrium::gfx::gl_api_from_name(api_name ? api_name : "auto");
+    if (!api) {
+      std::fprintf(stderr, "ATRIUM_TEST_GL=%s is not an API (auto, 4.5, 4.1, es3.0)\n", api_name);
+      std::exit(2);
+    }
+    context_ = atrium::gfx::HeadlessContext::create(atrium::gfx::ContextOptions{.api = *api, .debug = true});
+    std::printf("GL context: %s, %s, %s (%s)\n", context_->info().renderer.c_str(), context_->info().api.c_str(),
+                context_->info().version.c_str(), context_->info().platform.c_str());
   }
   void TearDown() override { context_.reset(); }
 

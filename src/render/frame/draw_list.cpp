@@ -280,9 +280,15 @@ void draw_items(std::span<const DrawBatch> batches) {
       const DrawCommand& command = g_cpu_commands[c];
       if (command.instance_count == 0) continue;
       glVertexAttribI4ui(assets::kInstanceIndexLocation, command.base_instance, 0, 0, 0);
-      glDrawElementsInstancedBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(command.count), GL_UNSIGNED_INT,
-                                        reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t)),
-                                        static_cast<GLsizei>(command.instance_count), command.base_vertex);
+      const auto* indices = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t));
+      // Base vertex 0 throughout where the context has none (GpuAssets offsets the indices).
+      if (command.base_vertex == 0) {
+        glDrawElementsInstanced(GL_TRIANGLES, static_cast<GLsizei>(command.count), GL_UNSIGNED_INT, indices,
+                                static_cast<GLsizei>(command.instance_count));
+      } else {
+        glDrawElementsInstancedBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(command.count), GL_UNSIGNED_INT, indices,
+                                          static_cast<GLsizei>(command.instance_count), command.base_vertex);
+      }
     }
     glEnableVertexAttribArray(assets::kInstanceIndexLocation);
   }

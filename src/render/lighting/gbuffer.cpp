@@ -3,6 +3,7 @@
 #include <string>
 
 #include "gfx/depth.hpp"
+#include "gfx/gl_features.hpp"
 #include "render/frame_graph.hpp"
 
 namespace atrium::lighting {
@@ -75,11 +76,13 @@ void GBuffer::draw_geometry(const render::PassResources& res, gfx::ShaderProgram
   glDepthFunc(gfx::kDepthCloser);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
-  // The albedo target is sRGB: GL encodes the linear values written to it.
-  glEnable(GL_FRAMEBUFFER_SRGB);
+  // The albedo target is sRGB: GL encodes the linear values written to it
+  // (ES always does).
+  const bool srgb_switch = gfx::gl_features().srgb_write_control;
+  if (srgb_switch) glEnable(GL_FRAMEBUFFER_SRGB);
   program.use();
   frame.draw_first_pass(draw_items);
-  glDisable(GL_FRAMEBUFFER_SRGB);
+  if (srgb_switch) glDisable(GL_FRAMEBUFFER_SRGB);
   if (edges_) mark_edges(res);
 }
 

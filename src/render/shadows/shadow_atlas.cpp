@@ -427,17 +427,19 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     }
   }
   gpu_.reserve_instances(caster_instances_.size());
-  instances_.upload(caster_instances_.data(), caster_instances_.size() * sizeof(lighting::InstanceData));
-  materials_.upload(caster_materials_.data(), caster_materials_.size() * sizeof(lighting::MaterialData));
-  commands_.upload(commands.data(), commands.size() * sizeof(lighting::DrawCommand));
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
-  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
   if (compute_free_) {
+    // The tier's twins: records in textures, commands drawn from the CPU.
     instance_texture_.upload(render::instance_texels(caster_instances_));
     material_texture_.upload(render::material_texels(caster_materials_));
     instance_texture_.bind(render::kInstanceTextureUnit);
     material_texture_.bind(render::kMaterialTextureUnit);
+  } else {
+    instances_.upload(caster_instances_.data(), caster_instances_.size() * sizeof(lighting::InstanceData));
+    materials_.upload(caster_materials_.data(), caster_materials_.size() * sizeof(lighting::MaterialData));
+    commands_.upload(commands.data(), commands.size() * sizeof(lighting::DrawCommand));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
   }
   // The casters' commands, all of them, until the maps are drawn; whoever draws next binds its own.
   lighting::draw_commands_from_cpu(compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>());

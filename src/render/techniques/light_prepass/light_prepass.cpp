@@ -5,6 +5,7 @@
 #include "render/frame/scene_passes.hpp"
 
 #include "gfx/depth.hpp"
+#include "gfx/gl_features.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -71,14 +72,14 @@ void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, 
     // As light-volumes-instanced: every sphere's back faces at or behind the
     // scene's depth cover the pixels inside it, the camera inside one
     // included; depth clamp keeps spheres that cross the near or far plane whole.
-    glEnable(GL_DEPTH_CLAMP);
+    if (gfx::gl_features().depth_clamp) glEnable(GL_DEPTH_CLAMP);  // else common/clip.glsl clamps
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(gfx::kDepthFartherOrEqual);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
     volumes_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), shadowed_light_count(frame.lights));
     glBindVertexArray(0);
-    glDisable(GL_DEPTH_CLAMP);
+    if (gfx::gl_features().depth_clamp) glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);
   }
   glDisable(GL_BLEND);

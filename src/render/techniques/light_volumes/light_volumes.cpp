@@ -3,6 +3,7 @@
 #include "render/frame/scene_passes.hpp"
 
 #include "gfx/depth.hpp"
+#include "gfx/gl_features.hpp"
 
 namespace atrium::lighting {
 
@@ -44,11 +45,11 @@ void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const FrameCont
     gbuffer_.bind_textures(res);
     glEnable(GL_BLEND);
     glBlendFunc(GL_ONE, GL_ONE);
-    glEnable(GL_DEPTH_CLAMP);
+    if (gfx::gl_features().depth_clamp) glEnable(GL_DEPTH_CLAMP);  // else common/clip.glsl clamps
     if (instanced_) draw_volumes_instanced(frame);
     else draw_volumes_with_stencil(frame);
     glBindVertexArray(0);
-    glDisable(GL_DEPTH_CLAMP);
+    if (gfx::gl_features().depth_clamp) glDisable(GL_DEPTH_CLAMP);
     glDisable(GL_BLEND);
     glDisable(GL_STENCIL_TEST);
     glCullFace(GL_BACK);
