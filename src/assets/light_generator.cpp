@@ -21,19 +21,28 @@ glm::vec3 hue_to_rgb(float hue) {
 }  // namespace
 
 std::vector<SceneLight> generate_lights(const LightGenerator& generator) {
+  // The same lights from every build: mt19937's numbers are standard, but
+  // std::uniform_real_distribution's mapping is each standard library's own
+  // (the browser build's libc++ is not the native libstdc++), and so is the
+  // order a constructor's arguments are evaluated in. This is libstdc++'s
+  // mapping (generate_canonical: one 32-bit draw over 2^32), taken in the
+  // order GCC evaluated it, so that native pictures stay as they were.
   std::mt19937 random(generator.seed);
-  std::uniform_real_distribution<float> unit(0.0f, 1.0f);
+  auto unit = [&] {
+    const float value = static_cast<float>(random()) / 4294967296.0f;
+    return value < 1.0f ? value : std::nextafter(1.0f, 0.0f);
+  };
   std::vector<SceneLight> lights;
   lights.reserve(generator.count);
   for (std::uint32_t i = 0; i < generator.count; ++i) {
     SceneLight light;
     light.generated = true;
-    light.position = generator.box_min + (generator.box_max - generator.box_min) *
-                                             glm::vec3(unit(random), unit(random), unit(random));
-    const glm::vec3 hue = hue_to_rgb(unit(random));
+    const float z = unit(), y = unit(), x = unit();
+    light.position = generator.box_min + (generator.box_max - generator.box_min) * glm::vec3(x, y, z);
+    const glm::vec3 hue = hue_to_rgb(unit());
     light.color = generator.color.value_or(hue);
-    light.intensity = glm::mix(generator.intensity_min, generator.intensity_max, unit(random));
-    const float radius_pick = unit(random);
+    light.intensity = glm::mix(generator.intensity_min, generator.intensity_max, unit());
+    const float radius_pick = unit();
     if (generator.radius_range) light.radius = glm::mix(generator.radius_range->x, generator.radius_range->y, radius_pick);
     lights.push_back(light);
   }
