@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs what is missing, builds, and runs every test with ctest. GL tests run
-# headless through EGL; the window test runs under xvfb-run.
+# headless through EGL; the window test runs under xvfb-run; the WebAssembly
+# page (scripts/build-web.sh) runs in headless Chromium.
 #   ./test.sh             Release build in build/
 #   ./test.sh --sanitize  the same suite built with ASan and UBSan in build-sanitize/
 set -euo pipefail
@@ -15,5 +16,7 @@ esac
 ./scripts/install-deps.sh
 cmake -S . -B "$build" "${flags[@]}" >/dev/null
 cmake --build "$build" -j"$(nproc)"
+# The page that the browser test (web.browser) opens in headless Chromium.
+./scripts/build-web.sh >/dev/null
 cd "$build"
 ctest --output-on-failure -j"$(nproc)"

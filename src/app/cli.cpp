@@ -20,25 +20,6 @@
 
 namespace atrium {
 
-WorldOptions world_options(const CliOptions& options) {
-  return {.scene = options.scene,
-          .lights = options.lights,
-          .mode = options.mode,
-          .view = options.view,
-          .size = options.size,
-          .shading = options.shading,
-          .debug_view = options.debug_view,
-          .technique_options = options.technique_options,
-          .light_radius = options.light_radius,
-          .max_texture_size = options.max_texture_size,
-          .camera = options.camera,
-          .frustum_culling = options.frustum_culling,
-          .shadows = options.shadows,
-          .occlusion_culling = options.occlusion_culling,
-          .culling_device = options.culling_device,
-          .system_options = options.system_options};
-}
-
 namespace {
 
 // `render --debug-view list`: the views the mode's graph (with these options)

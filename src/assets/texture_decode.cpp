@@ -6,11 +6,11 @@
 #include <mutex>
 #include <new>
 #include <string>
-#include <thread>
 
 #include <stb_image.h>
 
 #include "assets/dds.hpp"
+#include "base/parallel.hpp"
 #include "assets/load_budget.hpp"
 
 namespace atrium::assets {
@@ -115,11 +115,8 @@ std::vector<DecodedTexture> decode_in_parallel(std::size_t count, const std::fun
       ++finished;
     }
   };
-  const unsigned wanted = threads ? threads : std::clamp<unsigned>(std::thread::hardware_concurrency(), 1, 16);
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < std::min<std::size_t>(wanted, count); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  const unsigned wanted = threads ? threads : std::clamp<unsigned>(hardware_threads(), 1, 16);
+  run_in_parallel(std::max<std::size_t>(1, std::min<std::size_t>(wanted, count)), [&](std::size_t) { worker(); });
   return results;
 }
 

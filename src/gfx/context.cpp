@@ -50,6 +50,7 @@ ContextInfo current_context_info(std::string platform) {
 namespace detail {
 void prepare_current_context(const ContextOptions& options) {
   keep_gl_driver_loaded();
+  load_entry_points();
   adopt_current_context();
   if (options.debug && gl_features().debug_output) enable_debug_output();
 }

@@ -20,6 +20,7 @@ GlFeatures ask_current_context() {
     // on native drivers, and extensions past ES 3.0 are left aside with it.
     f.texture_storage = true;
     f.debug_output = has("GL_KHR_debug");
+    f.float_targets = has("GL_EXT_color_buffer_float") && has("GL_EXT_float_blend");
     return f;
   }
   f.compute_shaders = v >= 43 || has("GL_ARB_compute_shader");
@@ -40,7 +41,7 @@ GlFeatures ask_current_context() {
   f.timer_queries = v >= 33 || has("GL_ARB_timer_query");
   f.debug_output = v >= 43 || has("GL_KHR_debug");
   f.framebuffer_limits = v >= 43 || has("GL_ARB_framebuffer_no_attachments");
-  f.depth_clamp = f.srgb_write_control = true;
+  f.depth_clamp = f.srgb_write_control = f.float_targets = f.norm16_targets = true;
   return f;
 }
 }  // namespace

@@ -33,6 +33,10 @@ struct GlFeatures {
   bool framebuffer_limits = false;   // GL_MAX_FRAMEBUFFER_WIDTH (GL 4.3, ES 3.1)
   bool depth_clamp = false;          // GL_DEPTH_CLAMP (GL 3.2)
   bool srgb_write_control = false;   // GL_FRAMEBUFFER_SRGB (desktop; ES always encodes)
+  bool norm16_targets = false;       // GL_RGBA16 colour targets (desktop; ES by extension, left aside)
+  bool float_targets = false;        // float colour targets, blending included (desktop; ES by
+                                     // EXT_color_buffer_float and EXT_float_blend, which WebGL
+                                     // turns on when asked about)
 
   // The compute-free tier is what this context can run.
   [[nodiscard]] bool full_tier() const { return compute_shaders && storage_buffers; }

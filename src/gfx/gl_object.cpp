@@ -7,6 +7,8 @@
 #include <string>
 #include <unordered_set>
 
+#include "gfx/gl_features.hpp"
+
 namespace atrium::gfx {
 namespace {
 std::array<std::atomic<std::int64_t>, kGlKindCount> g_live{};
@@ -118,6 +120,18 @@ GlObject<K> create_one(Create create, Args... args) {
 }  // namespace
 
 Buffer create_buffer() { return create_one<GlKind::Buffer>(glCreateBuffers); }
+Buffer create_index_buffer() {
+  Buffer buffer = create_buffer();
+  if (!gl_features().direct_state_access) {
+    GLint vertex_array = 0;
+    glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
+    glBindVertexArray(0);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+    glBindVertexArray(static_cast<GLuint>(vertex_array));
+  }
+  return buffer;
+}
 Texture create_texture(GLenum target) { return create_one<GlKind::Texture>(glCreateTextures, target); }
 Framebuffer create_framebuffer() { return create_one<GlKind::Framebuffer>(glCreateFramebuffers); }
 VertexArray create_vertex_array() { return create_one<GlKind::VertexArray>(glCreateVertexArrays); }
@@ -131,6 +145,9 @@ Query create_query(GLenum target) {
 Sampler create_sampler() { return create_one<GlKind::Sampler>(glCreateSamplers); }
 
 Texture create_render_target(GLenum format, int width, int height, int samples) {
+  // 16-bit normalised targets are desktop GL's (ES and WebGL2 have them only
+  // by extension): half floats hold the same [0, 1] values, less precisely.
+  if (format == GL_RGBA16 && !gl_features().norm16_targets) format = GL_RGBA16F;
   if (samples > 1) {
     Texture texture = create_texture(GL_TEXTURE_2D_MULTISAMPLE);
     glTextureStorage2DMultisample(texture.id(), samples, format, width, height, GL_TRUE);
@@ -150,7 +167,8 @@ void require_complete(GLuint framebuffer, std::string_view what) {
   if (status == GL_FRAMEBUFFER_COMPLETE) return;
   char hex[16];
   std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>(status));
-  throw std::runtime_error("render target " + std::string(what) + " is incomplete (status 0x" + hex + ")");
+  const char* why = gl_features().float_targets ? "" : "; this context cannot render to float targets (EXT_color_buffer_float)";
+  throw std::runtime_error("render target " + std::string(what) + " is incomplete (status 0x" + hex + ")" + why);
 }
 
 }  // namespace atrium::gfx

@@ -75,6 +75,10 @@ using Sampler = GlObject<GlKind::Sampler>;
 
 // Creation through GL 4.5 direct state access.
 [[nodiscard]] Buffer create_buffer();
+// A buffer of vertex indices. WebGL2 fixes a buffer's kind at its first bind
+// and never lets data buffers hold indices, so without DSA (where edits bind
+// to GL_COPY_WRITE_BUFFER) its first bind is to GL_ELEMENT_ARRAY_BUFFER.
+[[nodiscard]] Buffer create_index_buffer();
 [[nodiscard]] Texture create_texture(GLenum target);
 [[nodiscard]] Framebuffer create_framebuffer();
 [[nodiscard]] VertexArray create_vertex_array();
@@ -83,6 +87,7 @@ using Sampler = GlObject<GlKind::Sampler>;
 
 // A one-level 2D texture to render into and read back texel by texel: nearest
 // filtering, edges clamped.
+// GL_RGBA16 becomes GL_RGBA16F where the context cannot render to it.
 // With samples > 1 a GL_TEXTURE_2D_MULTISAMPLE texture (fixed sample locations:
 // every target of a framebuffer must agree).
 [[nodiscard]] Texture create_render_target(GLenum format, int width, int height, int samples = 1);

@@ -51,7 +51,7 @@ bool is_software_renderer() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const std::string_view name = renderer ? renderer : "";
   return name.find("llvmpipe") != std::string_view::npos || name.find("softpipe") != std::string_view::npos ||
-         name.find("lavapipe") != std::string_view::npos;
+         name.find("lavapipe") != std::string_view::npos || name.find("SwiftShader") != std::string_view::npos;
 }
 
 bool has_indirect_count() {

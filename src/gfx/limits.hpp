@@ -29,7 +29,8 @@ class ResourceLimitError : public std::runtime_error {
 // GL_MAX_SAMPLES, GL_MAX_COLOR_TEXTURE_SAMPLES, GL_MAX_DEPTH_TEXTURE_SAMPLES and
 // GL_MAX_INTEGER_SAMPLES (the compact G-buffer's packed target is integer).
 [[nodiscard]] int max_msaa_samples();
-// Mesa's software rasterisers (llvmpipe, lavapipe, softpipe).
+// Software rasterisers: Mesa's (llvmpipe, lavapipe, softpipe) and Chromium's
+// SwiftShader (WebGL's unmasked renderer, gfx/web_gl.cpp).
 [[nodiscard]] bool is_software_renderer();
 // glMultiDrawElementsIndirectCount: OpenGL 4.6 or ARB_indirect_parameters.
 [[nodiscard]] bool has_indirect_count();

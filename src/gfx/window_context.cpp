@@ -10,6 +10,7 @@ namespace atrium::gfx {
 
 std::unique_ptr<WindowContext> WindowContext::create(const std::string& title, int width, int height,
                                                      const ContextOptions& options) {
+#ifndef __EMSCRIPTEN__  // the page's canvas is its display
   const char* x11 = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -17,6 +18,7 @@ std::unique_ptr<WindowContext> WindowContext::create(const std::string& title, i
         "no display: run headless with `atrium render --out frame.png`, or start the window under "
         "`xvfb-run -a ./run.sh`");
   }
+#endif
   if (!glfwInit()) throw ContextError("GLFW could not initialise the display connection");
   GLFWwindow* window = nullptr;
   for (const GlVersionRequest& request : gl_version_requests(options.api)) {

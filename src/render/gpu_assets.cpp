@@ -141,7 +141,7 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
       for (const Primitive& p : mesh.primitives) index_total += p.indices.size();
     }
     gpu.vertices = gfx::create_buffer();
-    gpu.indices = gfx::create_buffer();
+    gpu.indices = gfx::create_index_buffer();
     glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(Vertex)), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
     glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t)), nullptr,

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
+
+#include "base/parallel.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -72,7 +73,7 @@ glm::vec4 view_sphere(const GpuLight& light, const glm::mat4& view) {
 template <typename EachTouched>
 CpuLightLists bin_lights(std::span<const GpuLight> lights, const glm::mat4& view, std::size_t bins, unsigned threads,
                          const EachTouched& each_touched) {
-  if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+  if (threads == 0) threads = hardware_threads();
   const std::size_t shares = std::clamp<std::size_t>(lights.size() / kLightsPerBinningThread, 1, threads);
 
   // Each share (a run of lights in order) keeps the bins its lights touch,
@@ -100,11 +101,7 @@ CpuLightLists bin_lights(std::span<const GpuLight> lights, const glm::mat4& view
     split[s].first_light = lights.size() * s / shares;
     split[s].end_light = lights.size() * (s + 1) / shares;
   }
-  {
-    std::vector<std::jthread> workers;
-    for (std::size_t s = 1; s < shares; ++s) workers.emplace_back([&, s] { gather(split[s]); });
-    gather(split[0]);
-  }
+  run_in_parallel(shares, [&](std::size_t s) { gather(split[s]); });
 
   // A bin's entries: every share's, in share (so light) order.
   CpuLightLists lists;
@@ -127,11 +124,7 @@ CpuLightLists bin_lights(std::span<const GpuLight> lights, const glm::mat4& view
       for (std::uint32_t k = 0; k < count; ++k) lists.indices[share.counts[share.touched[next++]]++] = static_cast<std::uint32_t>(l);
     }
   };
-  {
-    std::vector<std::jthread> workers;
-    for (std::size_t s = 1; s < shares; ++s) workers.emplace_back([&, s] { write(split[s]); });
-    write(split[0]);
-  }
+  run_in_parallel(shares, [&](std::size_t s) { write(split[s]); });
   return lists;
 }
 

@@ -59,7 +59,7 @@ SphereMesh make_sphere() {
 }  // namespace
 
 LightSphere::LightSphere()
-    : vertices_(gfx::create_buffer()), indices_(gfx::create_buffer()), vertex_array_(gfx::create_vertex_array()) {
+    : vertices_(gfx::create_buffer()), indices_(gfx::create_index_buffer()), vertex_array_(gfx::create_vertex_array()) {
   const SphereMesh mesh = make_sphere();
   circumscribe_ = mesh.circumscribe;
   index_count_ = static_cast<GLsizei>(mesh.indices.size());

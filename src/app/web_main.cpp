@@ -1,0 +1,228 @@
+// The page's main (the WebAssembly build, web/): the same World the window
+// runs, on a WebGL2 canvas through GLFW. The page turns its URL parameters
+// into command-line options (web/shell.html: ?mode=x&view=3 is --mode x
+// --view 3), which go through the command line's own parser: same values,
+// same messages. The HTML panel drives the world through the atrium_*
+// functions below, and twice a second each frame hands it fps and pass times.
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <emscripten/emscripten.h>
+
+#include "gfx/gl.hpp"  // before GLFW, which would bring in GL/gl.h
+#include <GLFW/glfw3.h>
+
+#include "app/cli.hpp"
+#include "app/world.hpp"
+#include "assets/image.hpp"
+#include "components/frame_resources.hpp"
+#include "components/input.hpp"
+#include "components/light.hpp"
+#include "gfx/context.hpp"
+#include "gfx/limits.hpp"
+#include "render/techniques/technique.hpp"
+#include "systems/fly_camera.hpp"
+#include "systems/input.hpp"
+#include "systems/light_animation.hpp"
+
+namespace atrium {
+namespace {
+
+struct Page {
+  std::unique_ptr<gfx::WindowContext> context;
+  std::unique_ptr<World> world;
+  double last_seconds = 0.0;
+  double stats_seconds = 0.0;
+  int frames_since_stats = 0;
+  std::string reply;  // what the last atrium_* call returns to the page
+};
+Page* g_page = nullptr;
+
+void show_error(const std::string& message) {
+  std::fprintf(stderr, "atrium: %s\n", message.c_str());
+  EM_ASM({ atriumShowError(UTF8ToString($0)); }, message.c_str());
+}
+
+std::string json_string(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) >= 0x20) out += c;
+  }
+  return out + "\"";
+}
+
+// The window's keys that change what is drawn (src/app/window.cpp); the rest
+// (screenshot, benchmark, shader reload) are the panel's or not in the page.
+void handle_keys(World& world) {
+  ecs::Registry& registry = world.registry();
+  const InputState& input = registry.resource<InputState>();
+  auto step = [](const std::vector<std::string>& names, const std::string& current, int by) {
+    const auto count = static_cast<int>(names.size());
+    const auto found = std::find(names.begin(), names.end(), current);
+    const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
+    return names[static_cast<std::size_t>(((index + by) % count + count) % count)];
+  };
+  for (const KeyPress& press : input.pressed) {
+    const int by = (press.mods & GLFW_MOD_SHIFT) != 0 ? -1 : 1;
+    switch (press.key) {
+      case GLFW_KEY_T: world.set_mode(step(lighting::mode_names(), world.mode(), by)); break;
+      case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: case GLFW_KEY_5:
+        if (press.key - GLFW_KEY_0 <= static_cast<int>(world.scene().views.size())) world.set_view(press.key - GLFW_KEY_0);
+        break;
+      case GLFW_KEY_G: {
+        std::vector<std::string> views{""};
+        for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
+        auto& debug_view = registry.resource<RendererSettings>().debug_view;
+        debug_view = step(views, debug_view, by);
+        break;
+      }
+      case GLFW_KEY_EQUAL: world.set_light_count(std::min(std::max(1u, world.light_count() * 2), kMaxLights)); break;
+      case GLFW_KEY_MINUS: world.set_light_count(world.light_count() / 2); break;
+      case GLFW_KEY_P: registry.resource<LightAnimationSettings>().paused ^= true; break;
+      default: break;
+    }
+  }
+}
+
+// fps over the last half second and the latest frame's pass times, as JSON.
+std::string stats_json(World& world, double fps) {
+  const gfx::PassTimer& timer = world.renderer().timer();
+  std::string passes;
+  double total = 0.0;
+  for (const gfx::PassTime& pass : timer.latest()) {
+    passes += std::string(passes.empty() ? "" : ",") + "{\"name\":" + json_string(pass.name) +
+              ",\"ms\":" + std::to_string(pass.milliseconds) + "}";
+    total += pass.milliseconds;
+  }
+  std::string views, modes;
+  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
+    views += std::string(views.empty() ? "" : ",") + json_string(view.name);
+  }
+  for (const std::string& mode : lighting::mode_names()) modes += std::string(modes.empty() ? "" : ",") + json_string(mode);
+  return "{\"fps\":" + std::to_string(fps) + ",\"mode\":" + json_string(world.mode()) +
+         ",\"lights\":" + std::to_string(world.light_count()) + ",\"view\":" + std::to_string(world.view()) +
+         ",\"debug_view\":" + json_string(world.registry().resource<RendererSettings>().debug_view) +
+         ",\"paused\":" + (world.registry().resource<LightAnimationSettings>().paused ? "true" : "false") +
+         ",\"timing\":" + json_string(timer.method_name()) + ",\"passes_ms\":" + std::to_string(total) +
+         ",\"passes\":[" + passes + "],\"views\":[" + views + "],\"modes\":[" + modes + "]}";
+}
+
+void frame() {
+  Page& page = *g_page;
+  World& world = *page.world;
+  const double now = emscripten_get_now() / 1000.0;
+  int width = 0, height = 0;
+  glfwGetFramebufferSize(page.context->window(), &width, &height);
+  if (width > 0 && height > 0) world.set_size({width, height});
+  try {
+    world.frame(page.last_seconds > 0.0 ? now - page.last_seconds : 0.0);
+    handle_keys(world);
+  } catch (const std::exception& e) {
+    show_error(e.what());
+  }
+  page.last_seconds = now;
+  ++page.frames_since_stats;
+  if (now - page.stats_seconds >= 0.5) {
+    const double fps = page.stats_seconds > 0.0 ? page.frames_since_stats / (now - page.stats_seconds) : 0.0;
+    const std::string json = stats_json(world, fps);
+    EM_ASM({ atriumShowStats(UTF8ToString($0)); }, json.c_str());
+    page.stats_seconds = now;
+    page.frames_since_stats = 0;
+  }
+}
+
+// Runs `change` on the world; the reply is empty or the one-line error.
+template <typename Change>
+const char* apply(Change change) {
+  g_page->reply.clear();
+  if (!g_page->world) return "";  // it failed to start, and said why
+  try {
+    change(*g_page->world);
+  } catch (const std::exception& e) {
+    g_page->reply = e.what();
+  }
+  return g_page->reply.c_str();
+}
+
+}  // namespace
+}  // namespace atrium
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_mode(const char* mode) {
+  return atrium::apply([&](atrium::World& world) { world.set_mode(mode); });
+}
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_view(int view) {
+  return atrium::apply([&](atrium::World& world) { world.set_view(view); });
+}
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_lights(int count) {
+  return atrium::apply([&](atrium::World& world) {
+    world.set_light_count(static_cast<std::uint32_t>(std::clamp<int>(count, 0, static_cast<int>(atrium::kMaxLights))));
+  });
+}
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_radius(float radius) {
+  return atrium::apply([&](atrium::World& world) {
+    world.set_light_radius(radius > 0.0f ? std::optional<float>(radius) : std::nullopt);
+  });
+}
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_debug_view(const char* view) {
+  return atrium::apply([&](atrium::World& world) { world.registry().resource<atrium::RendererSettings>().debug_view = view; });
+}
+
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_paused(int paused) {
+  return atrium::apply([&](atrium::World& world) {
+    world.registry().resource<atrium::LightAnimationSettings>().paused = paused != 0;
+  });
+}
+
+// Draws every mode once from the current view and writes each picture to
+// `folder`/MODE.png in the page's file system (the browser tests read them);
+// the reply names the first failure, and any WebGL error.
+EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
+  return atrium::apply([&](atrium::World& world) {
+    std::filesystem::create_directories(folder);
+    for (const std::string& mode : atrium::lighting::mode_names()) {
+      world.set_mode(mode);
+      world.frame(0.0);
+      atrium::assets::write_png(std::filesystem::path(folder) / (mode + ".png"), world.renderer().read_output());
+      if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+        throw std::runtime_error("WebGL error 0x" + std::to_string(error) + " drawing " + mode);
+      }
+    }
+  });
+}
+
+}  // extern "C"
+
+int main(int argc, char** argv) {
+  using namespace atrium;
+  g_page = new Page();
+  try {
+    const std::vector<std::string_view> args(argv + 1, argv + argc);
+    const CliOptions options = parse_cli(args);
+    g_page->context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y, {.api = options.gl_api});
+    g_page->world = std::make_unique<World>(world_options(options));
+    World& world = *g_page->world;
+    world.registry().resource<RendererSettings>().present_to_window = true;
+    register_input(world.scheduler(), world.registry(), g_page->context->window());
+    register_fly_camera(world.scheduler());
+    register_light_animation(world.scheduler());
+    std::printf("Atrium on %s (%s), %s, %u lights\n", g_page->context->info().api.c_str(),
+                g_page->context->info().renderer.c_str(), world.mode().c_str(), world.light_count());
+  } catch (const std::exception& e) {
+    show_error(e.what());
+    g_page->world.reset();
+    return kExitUsage;
+  }
+  emscripten_set_main_loop(frame, 0, false);
+  return kExitOk;
+}

@@ -1,0 +1,36 @@
+// Splitting CPU work over the machine's cores. The WebAssembly build has no
+// threads (it runs on the page's one), so there the work runs in turn on the
+// caller and the core count is 1.
+#pragma once
+
+#include <algorithm>
+#include <cstddef>
+#include <thread>
+#include <vector>
+
+namespace atrium {
+
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+inline constexpr bool kHasThreads = false;
+#else
+inline constexpr bool kHasThreads = true;
+#endif
+
+// The threads CPU work may split over: the machine's cores, at least 1.
+[[nodiscard]] inline unsigned hardware_threads() { return kHasThreads ? std::max(1u, std::thread::hardware_concurrency()) : 1u; }
+
+// Runs work(0) .. work(count - 1), each but the first on a thread of its own
+// and the first on the caller, and returns once all are done.
+template <typename Work>
+void run_in_parallel(std::size_t count, const Work& work) {
+  if constexpr (!kHasThreads) {
+    for (std::size_t i = 0; i < count; ++i) work(i);
+  } else {
+    std::vector<std::thread> workers;
+    for (std::size_t i = 1; i < count; ++i) workers.emplace_back([&work, i] { work(i); });
+    if (count > 0) work(0);
+    for (std::thread& worker : workers) worker.join();
+  }
+}
+
+}  // namespace atrium
