@@ -128,12 +128,20 @@ void frame() {
   page.last_seconds = now;
   ++page.frames_since_stats;
   if (now - page.stats_seconds >= 0.5) {
-    const double fps = page.stats_seconds > 0.0 ? page.frames_since_stats / (now - page.stats_seconds) : 0.0;
+    const double fps = page.frames_since_stats / (now - page.stats_seconds);
     const std::string json = stats_json(world, fps);
     EM_ASM({ atriumShowStats(UTF8ToString($0)); }, json.c_str());
     page.stats_seconds = now;
     page.frames_since_stats = 0;
   }
+}
+
+// Waits until the GPU has drawn the frame: reading back a pixel of the canvas
+// (which the frame's last pass writes) is a round trip to the GPU process.
+void wait_for_frame() {
+  std::uint8_t pixel[4];
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
 }
 
 // Runs `change` on the world; the reply is empty or the one-line error.
@@ -201,6 +209,34 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
   });
 }
 
+// Frame times of every mode from the current view, as JSON ({"forward":
+// 12.3, ...}: the median of `frames` after `warmup`, in milliseconds, as atrium
+// bench reports them). A browser's glFinish does not wait for its GPU
+// process; reading a pixel of the canvas does, so each frame's time is what
+// it cost the GPU as well as the CPU.
+EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
+  std::string json;
+  const char* error = atrium::apply([&](atrium::World& world) {
+    for (const std::string& mode : atrium::lighting::mode_names()) {
+      world.set_mode(mode);
+      for (int i = 0; i < warmup; ++i) world.frame(0.0);
+      atrium::wait_for_frame();
+      std::vector<double> times;
+      for (int i = 0; i < std::max(frames, 1); ++i) {
+        const double start = emscripten_get_now();
+        world.frame(0.0);
+        atrium::wait_for_frame();
+        times.push_back(emscripten_get_now() - start);
+      }
+      std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
+      json += std::string(json.empty() ? "{" : ",") + atrium::json_string(mode) + ":" + std::to_string(times[times.size() / 2]);
+    }
+  });
+  if (*error) return error;
+  atrium::g_page->reply = json + "}";
+  return atrium::g_page->reply.c_str();
+}
+
 }  // extern "C"
 
 int main(int argc, char** argv) {
@@ -223,6 +259,7 @@ int main(int argc, char** argv) {
     g_page->world.reset();
     return kExitUsage;
   }
+  g_page->stats_seconds = emscripten_get_now() / 1000.0;
   emscripten_set_main_loop(frame, 0, false);
   return kExitOk;
 }

@@ -69,6 +69,23 @@ const FormatInfo& format_of(GLenum internal_format) {
                            " has no client format here (gfx/gl_emulation.cpp)");
 }
 
+// Bytes of one texel as the caller hands it over (format and type), for the
+// clears, which read exactly that much.
+std::size_t client_texel_bytes(GLenum format, GLenum type) {
+  std::size_t components = 4;
+  switch (format) {
+    case GL_RED: case GL_RED_INTEGER: case GL_DEPTH_COMPONENT: components = 1; break;
+    case GL_RG: case GL_RG_INTEGER: components = 2; break;
+    case GL_RGB: case GL_RGB_INTEGER: components = 3; break;
+    default: break;
+  }
+  switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return components;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: return 2 * components;
+    default: return 4 * components;
+  }
+}
+
 struct TextureRecord {
   GLenum target = GL_TEXTURE_2D;
   GLenum internal_format = 0;
@@ -196,11 +213,12 @@ void GLAPIENTRY named_buffer_sub_data(GLuint buffer, GLintptr offset, GLsizeiptr
 }
 
 void GLAPIENTRY clear_named_buffer_sub_data(GLuint buffer, GLenum internal_format, GLintptr offset, GLsizeiptr size,
-                                            GLenum, GLenum, const void* data) {
+                                            GLenum format, GLenum type, const void* data) {
   const auto element = static_cast<std::size_t>(format_of(internal_format).bytes);
   std::vector<unsigned char> fill(static_cast<std::size_t>(size), 0);
   if (data) {
-    for (std::size_t at = 0; at + element <= fill.size(); at += element) std::memcpy(fill.data() + at, data, element);
+    const std::size_t given = std::min(element, client_texel_bytes(format, type));
+    for (std::size_t at = 0; at + element <= fill.size(); at += element) std::memcpy(fill.data() + at, data, given);
   }
   named_buffer_sub_data(buffer, offset, size, fill.data());
 }
@@ -384,7 +402,7 @@ void GLAPIENTRY get_texture_image(GLuint texture, GLint level, GLenum format, GL
   });
 }
 
-void GLAPIENTRY clear_tex_image(GLuint texture, GLint level, GLenum, GLenum, const void* data) {
+void GLAPIENTRY clear_tex_image(GLuint texture, GLint level, GLenum format, GLenum type, const void* data) {
   const TextureRecord& record = texture_record(texture);
   const FormatInfo& info = format_of(record.internal_format);
   GLuint framebuffer = 0;
@@ -405,13 +423,13 @@ void GLAPIENTRY clear_tex_image(GLuint texture, GLint level, GLenum, GLenum, con
         attach(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, texture, level);
         const GLenum buffers[] = {GL_COLOR_ATTACHMENT0};
         glDrawBuffers(1, buffers);
-        // A partial texel (one channel given) clears the rest to zero.
+        // Channels the caller's texel leaves out clear to zero.
         std::array<std::uint32_t, 4> texel{};
-        std::memcpy(texel.data(), value, std::min<std::size_t>(static_cast<std::size_t>(info.bytes), sizeof(texel)));
+        std::memcpy(texel.data(), value, data ? std::min(client_texel_bytes(format, type), sizeof(texel)) : sizeof(texel));
         if (info.kind == TexelKind::Uint) glClearBufferuiv(GL_COLOR, 0, texel.data());
         else if (info.kind == TexelKind::Int) glClearBufferiv(GL_COLOR, 0, reinterpret_cast<const GLint*>(texel.data()));
-        else if (info.type == GL_FLOAT) glClearBufferfv(GL_COLOR, 0, reinterpret_cast<const GLfloat*>(texel.data()));
-        else throw std::runtime_error("GL emulation: glClearTexImage of a non-float colour format");
+        else if (!data || type == GL_FLOAT) glClearBufferfv(GL_COLOR, 0, reinterpret_cast<const GLfloat*>(texel.data()));
+        else throw std::runtime_error("GL emulation: glClearTexImage of a float target takes GL_FLOAT texels here");
       }
     }
   });

@@ -21,6 +21,10 @@ GlFeatures ask_current_context() {
     f.texture_storage = true;
     f.debug_output = has("GL_KHR_debug");
     f.float_targets = has("GL_EXT_color_buffer_float") && has("GL_EXT_float_blend");
+#ifdef __EMSCRIPTEN__
+    f.timer_queries = has("GL_EXT_disjoint_timer_query_webgl2");
+    f.finish_waits = false;
+#endif
     return f;
   }
   f.compute_shaders = v >= 43 || has("GL_ARB_compute_shader");

@@ -28,7 +28,9 @@ struct GlFeatures {
   bool read_buffers = false;         // glGetBufferSubData (desktop GL)
   bool level_queries = false;        // glGetTexLevelParameteriv (desktop GL, ES 3.1)
   bool memory_barriers = false;      // glMemoryBarrier (GL 4.2, ES 3.1)
-  bool timer_queries = false;        // GL_TIME_ELAPSED (GL 3.3; ES only by extension)
+  bool timer_queries = false;        // GL_TIME_ELAPSED (GL 3.3; WebGL2 by EXT_disjoint_timer_query_webgl2)
+  bool finish_waits = true;          // glFinish returns once the GPU is done (not in browsers,
+                                     // where the GPU process runs the commands later)
   bool debug_output = false;         // KHR_debug under its desktop names
   bool framebuffer_limits = false;   // GL_MAX_FRAMEBUFFER_WIDTH (GL 4.3, ES 3.1)
   bool depth_clamp = false;          // GL_DEPTH_CLAMP (GL 3.2)

@@ -6,8 +6,12 @@
 
 namespace atrium::gfx {
 
+// Software renderers are timed with glFinish and the clock (their queries
+// add little and cost much), where glFinish waits; a browser's does not, so
+// there queries are the one honest timing.
 PassTimer::PassTimer()
-    : PassTimer(is_software_renderer() || !gl_features().timer_queries ? TimingMethod::CpuFinish : TimingMethod::GpuQueries) {}
+    : PassTimer(gl_features().timer_queries && !(is_software_renderer() && gl_features().finish_waits) ? TimingMethod::GpuQueries
+                                                                                                       : TimingMethod::CpuFinish) {}
 PassTimer::PassTimer(TimingMethod method)
     : method_(method),
       counts_fragments_(epoxy_is_desktop_gl() &&
@@ -16,7 +20,9 @@ PassTimer::PassTimer(TimingMethod method)
 }
 
 const char* PassTimer::method_name() const {
-  return method_ == TimingMethod::GpuQueries ? "GL_TIME_ELAPSED queries" : "glFinish + steady clock (software renderer, or no GL_TIME_ELAPSED)";
+  if (method_ == TimingMethod::GpuQueries) return "GL_TIME_ELAPSED queries";
+  return gl_features().finish_waits ? "glFinish + steady clock (software renderer, or no GL_TIME_ELAPSED)"
+                                    : "steady clock: command submission only (no timer queries, and this glFinish does not wait)";
 }
 
 void PassTimer::begin_frame() {

@@ -107,6 +107,12 @@ void load_entry_points() {
   epoxy_##name = reinterpret_cast<decltype(epoxy_##name)>(emscripten_webgl_get_proc_address(#name));
   ATRIUM_GL_ENTRY_POINTS(ATRIUM_LOAD_ENTRY_POINT)
 #undef ATRIUM_LOAD_ENTRY_POINT
+  // WebGL2 asks for query results unsigned only, and its 64-bit ones come
+  // through the timer-query extension.
+  epoxy_glGetQueryObjectiv =
+      reinterpret_cast<decltype(epoxy_glGetQueryObjectiv)>(emscripten_webgl_get_proc_address("glGetQueryObjectuiv"));
+  epoxy_glGetQueryObjectui64v =
+      reinterpret_cast<decltype(epoxy_glGetQueryObjectui64v)>(emscripten_webgl_get_proc_address("glGetQueryObjectui64vEXT"));
   g_webgl_get_string = epoxy_glGetString;
   epoxy_glGetString = get_string;
 }

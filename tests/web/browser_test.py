@@ -10,15 +10,14 @@ usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--out
 """
 import argparse
 import base64
-import http.server
-import json
 import os
 import queue
-import shutil
 import subprocess
 import sys
 import tempfile
-import threading
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "web"))
+from page_driver import open_page, serve  # noqa: E402
 
 # The bound: two rasterisers. SwiftShader (the page) and llvmpipe (native)
 # agree on nearly every pixel; they part at sub-pixel geometry, the small
@@ -32,47 +31,6 @@ SIZE = "160x90"
 LIGHTS = "64"
 
 
-def serve(site, results):
-    class Handler(http.server.SimpleHTTPRequestHandler):
-        def __init__(self, *args, **kwargs):
-            super().__init__(*args, directory=site, **kwargs)
-
-        def do_POST(self):
-            body = self.rfile.read(int(self.headers["Content-Length"]))
-            results.put(json.loads(body))
-            self.send_response(204)
-            self.end_headers()
-
-        def log_message(self, *args):
-            pass
-
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    return server
-
-
-def open_page(port, query, results, timeout=180):
-    """The page's POST for ?capture&QUERY, with Chromium's console lines."""
-    profile = tempfile.mkdtemp(prefix="atrium-chromium-")
-    url = f"http://127.0.0.1:{port}/atrium.html?capture&{query}"
-    chromium = subprocess.Popen(
-        ["chromium", "--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
-         "--no-first-run", "--disable-extensions", "--enable-logging=stderr", "--v=0",
-         f"--user-data-dir={profile}", url],
-        stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    try:
-        result = results.get(timeout=timeout)
-    except queue.Empty:
-        result = None
-    chromium.kill()
-    _, log = chromium.communicate()
-    shutil.rmtree(profile, ignore_errors=True)
-    if result is None:
-        sys.exit(f"browser_test: no result from {url} within {timeout} s\n{log[-3000:]}")
-    console = [line for line in log.splitlines() if "CONSOLE" in line and ("ERROR" in line or "Uncaught" in line)]
-    return result, console
-
-
 def native_render(atrium, scene, mode, options, out):
     subprocess.run([atrium, "render", scene, "--mode", mode, "--size", SIZE, "--lights", LIGHTS, "--no-compute",
                     "--out", out] + options, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
@@ -84,7 +42,7 @@ def compare(args, port, results, tag, page_scene, native_scene, options):
     query = f"scene={page_scene}&size={SIZE}&lights={LIGHTS}&pause=1"
     for name, value in zip(options[::2], options[1::2]):
         query += f"&{name[2:]}={value}"
-    result, console = open_page(port, query, results)
+    result, console = open_page(port, "capture&" + query, results)
     failures = []
     if result["errors"]:
         failures.append(f"{tag}: the page reported {result['errors']}")
@@ -128,7 +86,7 @@ def main():
         failures += compare(args, port, results, "sponza", "/assets/sponza/glTF/Sponza.gltf", args.sponza,
                             ["--camera", "-10.5,1.7,-0.25,90,4"])
 
-    result, _ = open_page(port, "mode=deferred-ish", results)
+    result, _ = open_page(port, "capture&mode=deferred-ish", results)
     expected = "unknown mode 'deferred-ish' (modes: forward"
     if not any(error.startswith(expected) for error in result["errors"]):
         failures.append(f"a bad URL parameter showed {result['errors']}, not the line starting {expected!r}")
