@@ -19,9 +19,12 @@
 #include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "assets/scene_file.hpp"
+#include "components/camera.hpp"
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
+#include "components/transform.hpp"
 #include "gfx/context.hpp"
 #include "gfx/limits.hpp"
 #include "render/techniques/technique.hpp"
@@ -38,7 +41,8 @@ struct Page {
   double last_seconds = 0.0;
   double stats_seconds = 0.0;
   int frames_since_stats = 0;
-  std::string reply;  // what the last atrium_* call returns to the page
+  std::string reply;       // what the last atrium_* call returns to the page
+  std::string last_error;  // what the last frame failed with
 };
 Page* g_page = nullptr;
 
@@ -56,8 +60,9 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-// The window's keys that change what is drawn (src/app/window.cpp); the rest
-// (screenshot, benchmark, shader reload) are the panel's or not in the page.
+// The window's keys that change what is drawn or where the camera is
+// (src/app/window.cpp); the rest (screenshot, benchmark, shader reload, vsync,
+// overlay) are the panel's or the browser's.
 void handle_keys(World& world) {
   ecs::Registry& registry = world.registry();
   const InputState& input = registry.resource<InputState>();
@@ -81,6 +86,18 @@ void handle_keys(World& world) {
         debug_view = step(views, debug_view, by);
         break;
       }
+      case GLFW_KEY_L: {
+        auto& debug_view = registry.resource<RendererSettings>().debug_view;
+        debug_view = debug_view == "light-volumes" ? "" : "light-volumes";
+        break;
+      }
+      case GLFW_KEY_C:
+        // Where the camera is, as the window prints it (to the console here).
+        registry.view<Transform, Camera, CameraAngles>().each([](const Transform& t, const Camera&, const CameraAngles& angles) {
+          const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
+          std::printf("camera: --camera %s  view: %s\n", assets::camera_argument(here).c_str(), assets::view_json(here).c_str());
+        });
+        break;
       case GLFW_KEY_EQUAL: world.set_light_count(std::min(std::max(1u, world.light_count() * 2), kMaxLights)); break;
       case GLFW_KEY_MINUS: world.set_light_count(world.light_count() / 2); break;
       case GLFW_KEY_P: registry.resource<LightAnimationSettings>().paused ^= true; break;
@@ -122,8 +139,11 @@ void frame() {
   try {
     world.frame(page.last_seconds > 0.0 ? now - page.last_seconds : 0.0);
     handle_keys(world);
+    page.last_error.clear();
   } catch (const std::exception& e) {
-    show_error(e.what());
+    // Once, not every frame: the panel's next change may cure it.
+    if (page.last_error != e.what()) show_error(e.what());
+    page.last_error = e.what();
   }
   page.last_seconds = now;
   ++page.frames_since_stats;

@@ -20,6 +20,14 @@
 namespace atrium {
 namespace {
 
+void require_msaa(int samples) {
+  if (samples <= gfx::max_msaa_samples()) return;
+  throw gfx::ResourceLimitError("MSAA with " + std::to_string(samples) + " samples: this context allows at most " +
+                                std::to_string(gfx::max_msaa_samples()) +
+                                " (the smallest of GL_MAX_SAMPLES and the colour, depth and integer texture sample limits; "
+                                "1 without multisampled textures, as on OpenGL ES 3.0 and WebGL2); use a smaller --msaa");
+}
+
 // The SPLIT_LIGHTING and MSAA_SAMPLES rows of the shader globals: the
 // renderer's light-sum targets and sample count.
 void target_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
@@ -59,12 +67,7 @@ void MeshRenderer::resize(glm::ivec2 size) {
                                   "GL_MAX_RENDERBUFFER_SIZE and GL_MAX_TEXTURE_SIZE); use a smaller --size");
   }
   const int samples = technique_options_.msaa;
-  if (samples > gfx::max_msaa_samples()) {
-    throw gfx::ResourceLimitError("MSAA with " + std::to_string(samples) + " samples: this context allows at most " +
-                                  std::to_string(gfx::max_msaa_samples()) +
-                                  " (the smallest of GL_MAX_SAMPLES and the colour, depth and integer texture sample limits); "
-                                  "use a smaller --msaa");
-  }
+  require_msaa(samples);
   size_ = size;
   hdr_color_ = gfx::create_render_target(GL_RGBA16F, size.x, size.y, samples);
   depth_stencil_ = gfx::create_render_target(gfx::kDepthStencilFormat, size.x, size.y, samples);
@@ -229,6 +232,13 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const bool counting_fragments = needs.count_fragments;
   const bool counting = counting_lights || counting_fragments;
   const bool split_lighting = settings.technique_options.split_lighting || needs.split_lighting;
+  // Refused before any program is compiled for them: a context without image
+  // atomics or multisampled textures could not compile those programs.
+  if (settings.technique_options.compute_free && counting) {
+    throw gfx::ResourceLimitError("the debug view " + settings.debug_view +
+                                  " on the compute-free tier: it counts with image atomics, which this tier lacks");
+  }
+  require_msaa(settings.technique_options.msaa);
   std::vector<gfx::ShaderDefine> globals;
   for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, counting_lights, counting_fragments, split_lighting}, globals);
   if (globals != globals_ || settings.technique_options != technique_options_) {
@@ -297,10 +307,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
   frame_stats_.shadows = shadows_.stats();
   if (technique_options_.compute_free) {
-    if (counting) {
-      throw gfx::ResourceLimitError("the debug view " + settings.debug_view +
-                                    " on the compute-free tier: it counts with image atomics, which this tier lacks");
-    }
     storage_free_.upload(std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())), draws);
   }
   upload_draws(draws);

@@ -18,6 +18,7 @@
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/gl_features.hpp"
+#include "gfx/limits.hpp"
 #include "render/techniques/technique.hpp"
 #include "support/gl_test.hpp"
 #include "support/offered_views.hpp"
@@ -129,6 +130,31 @@ TEST_F(ContextTier, EveryModeDrawsTheFullTiersPictureOfTheBuiltInScene) { expect
 TEST_F(ContextTier, EveryModeDrawsTheFullTiersPictureOfSponza) {
   if (!fs::exists(kSponza)) GTEST_SKIP() << kSponza << " is not here";
   expect_matches_full_tier(kSponzaCase);
+}
+
+// What this context cannot draw is refused in one line before any program
+// for it is compiled (its GLSL would not compile here).
+TEST_F(ContextTier, RefusesWhatItCannotDrawInOneLine) {
+  const auto refusal = [](WorldOptions options) -> std::string {
+    try {
+      World world(options);
+      world.frame(0.0);
+    } catch (const gfx::ResourceLimitError& e) {
+      return e.what();
+    }
+    return "(drawn)";
+  };
+  WorldOptions counting = options_for(kBuiltIn);
+  counting.debug_view = "heatmap";
+  const std::string heatmap = refusal(counting);
+  EXPECT_NE(heatmap.find("the debug view heatmap on the compute-free tier"), std::string::npos) << heatmap;
+  EXPECT_EQ(heatmap.find('\n'), std::string::npos) << heatmap;
+  if (!gfx::gl_features().multisample_textures) {
+    WorldOptions msaa = options_for(kBuiltIn);
+    msaa.technique_options.msaa = 4;
+    const std::string samples = refusal(msaa);
+    EXPECT_NE(samples.find("MSAA with 4 samples: this context allows at most 1"), std::string::npos) << samples;
+  }
 }
 
 // Every debug view a mode offers compiles in this context's GLSL and draws.
