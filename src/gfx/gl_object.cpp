@@ -122,7 +122,9 @@ GlObject<K> create_one(Create create, Args... args) {
 Buffer create_buffer() { return create_one<GlKind::Buffer>(glCreateBuffers); }
 Buffer create_index_buffer() {
   Buffer buffer = create_buffer();
-  if (!gl_features().direct_state_access) {
+  // ES has a vertex array 0 to bind it on; desktop core profiles do not (and
+  // have no such rule).
+  if (gl_features().es) {
     GLint vertex_array = 0;
     glGetIntegerv(GL_VERTEX_ARRAY_BINDING, &vertex_array);
     glBindVertexArray(0);

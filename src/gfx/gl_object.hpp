@@ -76,8 +76,8 @@ using Sampler = GlObject<GlKind::Sampler>;
 // Creation through GL 4.5 direct state access.
 [[nodiscard]] Buffer create_buffer();
 // A buffer of vertex indices. WebGL2 fixes a buffer's kind at its first bind
-// and never lets data buffers hold indices, so without DSA (where edits bind
-// to GL_COPY_WRITE_BUFFER) its first bind is to GL_ELEMENT_ARRAY_BUFFER.
+// and never lets data buffers hold indices, so on ES (where edits bind to
+// GL_COPY_WRITE_BUFFER) its first bind is to GL_ELEMENT_ARRAY_BUFFER.
 [[nodiscard]] Buffer create_index_buffer();
 [[nodiscard]] Texture create_texture(GLenum target);
 [[nodiscard]] Framebuffer create_framebuffer();
