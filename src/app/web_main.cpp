@@ -17,10 +17,11 @@
 #include <GLFW/glfw3.h>
 
 #include "app/cli.hpp"
+#include "app/demo_keys.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "assets/scene_file.hpp"
-#include "components/camera.hpp"
+#include "components/demo.hpp"
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
@@ -60,52 +61,6 @@ std::string json_string(const std::string& text) {
   return out + "\"";
 }
 
-// The window's keys that change what is drawn or where the camera is
-// (src/app/window.cpp); the rest (screenshot, benchmark, shader reload, vsync,
-// overlay) are the panel's or the browser's.
-void handle_keys(World& world) {
-  ecs::Registry& registry = world.registry();
-  const InputState& input = registry.resource<InputState>();
-  auto step = [](const std::vector<std::string>& names, const std::string& current, int by) {
-    const auto count = static_cast<int>(names.size());
-    const auto found = std::find(names.begin(), names.end(), current);
-    const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
-    return names[static_cast<std::size_t>(((index + by) % count + count) % count)];
-  };
-  for (const KeyPress& press : input.pressed) {
-    const int by = (press.mods & GLFW_MOD_SHIFT) != 0 ? -1 : 1;
-    switch (press.key) {
-      case GLFW_KEY_T: world.set_mode(step(lighting::mode_names(), world.mode(), by)); break;
-      case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: case GLFW_KEY_5:
-        if (press.key - GLFW_KEY_0 <= static_cast<int>(world.scene().views.size())) world.set_view(press.key - GLFW_KEY_0);
-        break;
-      case GLFW_KEY_G: {
-        std::vector<std::string> views{""};
-        for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
-        auto& debug_view = registry.resource<RendererSettings>().debug_view;
-        debug_view = step(views, debug_view, by);
-        break;
-      }
-      case GLFW_KEY_L: {
-        auto& debug_view = registry.resource<RendererSettings>().debug_view;
-        debug_view = debug_view == "light-volumes" ? "" : "light-volumes";
-        break;
-      }
-      case GLFW_KEY_C:
-        // Where the camera is, as the window prints it (to the console here).
-        registry.view<Transform, Camera, CameraAngles>().each([](const Transform& t, const Camera&, const CameraAngles& angles) {
-          const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
-          std::printf("camera: --camera %s  view: %s\n", assets::camera_argument(here).c_str(), assets::view_json(here).c_str());
-        });
-        break;
-      case GLFW_KEY_EQUAL: world.set_light_count(std::min(std::max(1u, world.light_count() * 2), kMaxLights)); break;
-      case GLFW_KEY_MINUS: world.set_light_count(world.light_count() / 2); break;
-      case GLFW_KEY_P: registry.resource<LightAnimationSettings>().paused ^= true; break;
-      default: break;
-    }
-  }
-}
-
 // fps over the last half second and the latest frame's pass times, as JSON.
 std::string stats_json(World& world, double fps) {
   const gfx::PassTimer& timer = world.renderer().timer();
@@ -138,7 +93,8 @@ void frame() {
   if (width > 0 && height > 0) world.set_size({width, height});
   try {
     world.frame(page.last_seconds > 0.0 ? now - page.last_seconds : 0.0);
-    handle_keys(world);
+    apply_demo_keys(world);
+    carry_out_demo_requests(world);
     page.last_error.clear();
   } catch (const std::exception& e) {
     // Once, not every frame: the panel's next change may cure it.
@@ -272,6 +228,7 @@ int main(int argc, char** argv) {
     register_input(world.scheduler(), world.registry(), g_page->context->window());
     register_fly_camera(world.scheduler());
     register_light_animation(world.scheduler());
+    world.registry().set_resource<DemoRequests>();
     std::printf("Atrium on %s (%s), %s, %u lights\n", g_page->context->info().api.c_str(),
                 g_page->context->info().renderer.c_str(), world.mode().c_str(), world.light_count());
   } catch (const std::exception& e) {

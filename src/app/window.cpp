@@ -2,22 +2,18 @@
 // systems (input, fly camera, light animation, overlay) and carries out what
 // keys and overlay controls ask for between frames. Every mode, view, light
 // count or debug-view change is also written to stdout as one line.
-#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
 
 #include "app/bench.hpp"
 #include "app/cli.hpp"
+#include "app/demo_keys.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
-#include "assets/scene_file.hpp"
-#include "components/camera.hpp"
 #include "components/demo.hpp"
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
-#include "components/light.hpp"
-#include "components/transform.hpp"
 #include "gfx/context.hpp"
 #include "gfx/debug_output.hpp"
 #include "gfx/gl.hpp"
@@ -25,8 +21,6 @@
 #include "systems/fly_camera.hpp"
 #include "systems/input.hpp"
 #include "systems/light_animation.hpp"
-#include "render/debug/debug_views.hpp"
-#include "render/techniques/technique.hpp"
 #include "systems/overlay.hpp"
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
@@ -34,69 +28,17 @@
 namespace atrium {
 namespace {
 
-void say(const std::string& line) {
-  std::printf("%s\n", line.c_str());
-  std::fflush(stdout);
-}
-
-// The name `step` places after `current` in `names`, wrapping around.
-std::string step_name(const std::vector<std::string>& names, const std::string& current, int step) {
-  const auto count = static_cast<int>(names.size());
-  const auto found = std::find(names.begin(), names.end(), current);
-  const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
-  return names[static_cast<std::size_t>(((index + step) % count + count) % count)];
-}
-
-// Where the camera is, as a line to paste into a scene file's views and as a
-// --camera value, so that users can author views by flying to them.
-void say_camera(World& world) {
-  world.registry().view<Transform, Camera, CameraAngles>().each([](const Transform& t, const Camera&, const CameraAngles& angles) {
-    const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
-    say("camera: --camera " + assets::camera_argument(here) + "  view: " + assets::view_json(here));
-  });
-}
-
-void set_debug_view(World& world, const std::string& view) {
-  world.registry().resource<RendererSettings>().debug_view = view;
-  say("debug view: " + (view.empty() ? std::string("off") : view));
-}
-
-// Turns the frame's key presses into settings and requests.
+// The window's own keys, after the ones that act on the world (demo_keys()).
 void handle_keys(World& world, gfx::WindowContext& context) {
   ecs::Registry& registry = world.registry();
   const InputState& input = registry.resource<InputState>();
   if (input.ui_wants_keyboard) return;
+  apply_demo_keys(world);
   auto& requests = registry.resource<DemoRequests>();
   auto& overlay = registry.resource<OverlayState>();
   for (const KeyPress& press : input.pressed) {
-    const bool shift = (press.mods & GLFW_MOD_SHIFT) != 0;
     switch (press.key) {
       case GLFW_KEY_ESCAPE: glfwSetWindowShouldClose(context.window(), GLFW_TRUE); break;
-      case GLFW_KEY_T: requests.mode = step_name(lighting::mode_names(), world.mode(), shift ? -1 : 1); break;
-      case GLFW_KEY_1: case GLFW_KEY_2: case GLFW_KEY_3: case GLFW_KEY_4: case GLFW_KEY_5:
-        requests.view = press.key - GLFW_KEY_0;
-        break;
-      case GLFW_KEY_G: {
-        std::vector<std::string> views{""};
-        for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
-        set_debug_view(world, step_name(views, registry.resource<RendererSettings>().debug_view, shift ? -1 : 1));
-        break;
-      }
-      case GLFW_KEY_L: {
-        const bool on = registry.resource<RendererSettings>().debug_view == "light-volumes";
-        set_debug_view(world, on ? "" : "light-volumes");
-        break;
-      }
-      case GLFW_KEY_EQUAL: case GLFW_KEY_KP_ADD:
-        requests.light_count = std::min(std::max(1u, world.light_count() * 2), kMaxLights);
-        break;
-      case GLFW_KEY_MINUS: case GLFW_KEY_KP_SUBTRACT: requests.light_count = world.light_count() / 2; break;
-      case GLFW_KEY_P: {
-        bool& paused = registry.resource<LightAnimationSettings>().paused;
-        paused = !paused;
-        say(paused ? "light animation: paused" : "light animation: running");
-        break;
-      }
       case GLFW_KEY_B: requests.benchmark = true; break;
       case GLFW_KEY_F12: requests.screenshot = true; break;
       case GLFW_KEY_R: requests.reload_shaders = true; break;
@@ -111,7 +53,6 @@ void handle_keys(World& world, gfx::WindowContext& context) {
         say(overlay.vsync ? "vsync: on" : "vsync: off");
         break;
       case GLFW_KEY_F1: overlay.visible = !overlay.visible; break;
-      case GLFW_KEY_C: say_camera(world); break;
       default: break;
     }
   }
@@ -129,22 +70,9 @@ std::string screenshot_name() {
 // Carries out what keys and overlay asked for this frame.
 void carry_out(World& world) {
   ecs::Registry& registry = world.registry();
+  carry_out_demo_requests(world);
   auto& requests = registry.resource<DemoRequests>();
   auto& overlay = registry.resource<OverlayState>();
-  if (requests.mode) {
-    world.set_mode(*requests.mode);
-    say("mode: " + world.mode());
-  }
-  if (requests.view) {
-    if (*requests.view <= static_cast<int>(world.scene().views.size())) {
-      world.set_view(*requests.view);
-      say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
-    }
-  }
-  if (requests.light_count) {
-    world.set_light_count(*requests.light_count);
-    say("lights: " + std::to_string(world.light_count()));
-  }
   if (requests.reload_shaders) {
     const std::vector<std::string> errors = world.reload_shaders();
     overlay.message.clear();

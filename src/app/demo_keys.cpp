@@ -1,0 +1,119 @@
+#include "app/demo_keys.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <vector>
+
+#include "assets/scene_file.hpp"
+#include "components/camera.hpp"
+#include "components/demo.hpp"
+#include "components/frame_resources.hpp"
+#include "components/input.hpp"
+#include "components/light.hpp"
+#include "components/transform.hpp"
+#include "render/techniques/technique.hpp"
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+namespace atrium {
+namespace {
+
+// The name `step` places after `current` in `names`, wrapping around.
+std::string step_name(const std::vector<std::string>& names, const std::string& current, int step) {
+  const auto count = static_cast<int>(names.size());
+  const auto found = std::find(names.begin(), names.end(), current);
+  const int index = found == names.end() ? 0 : static_cast<int>(found - names.begin());
+  return names[static_cast<std::size_t>(((index + step) % count + count) % count)];
+}
+
+void set_debug_view(World& world, const std::string& view) {
+  world.registry().resource<RendererSettings>().debug_view = view;
+  say("debug view: " + (view.empty() ? std::string("off") : view));
+}
+
+void request_view(World& world, int view) { world.registry().resource<DemoRequests>().view = view; }
+
+constexpr std::array kDemoKeys{
+    DemoKey{{GLFW_KEY_T, 0},
+            [](World& world, bool shift) {
+              world.registry().resource<DemoRequests>().mode = step_name(lighting::mode_names(), world.mode(), shift ? -1 : 1);
+            }},
+    DemoKey{{GLFW_KEY_1, 0}, [](World& world, bool) { request_view(world, 1); }},
+    DemoKey{{GLFW_KEY_2, 0}, [](World& world, bool) { request_view(world, 2); }},
+    DemoKey{{GLFW_KEY_3, 0}, [](World& world, bool) { request_view(world, 3); }},
+    DemoKey{{GLFW_KEY_4, 0}, [](World& world, bool) { request_view(world, 4); }},
+    DemoKey{{GLFW_KEY_5, 0}, [](World& world, bool) { request_view(world, 5); }},
+    DemoKey{{GLFW_KEY_G, 0},
+            [](World& world, bool shift) {
+              std::vector<std::string> views{""};
+              for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
+              set_debug_view(world, step_name(views, world.registry().resource<RendererSettings>().debug_view, shift ? -1 : 1));
+            }},
+    DemoKey{{GLFW_KEY_L, 0},
+            [](World& world, bool) {
+              const bool on = world.registry().resource<RendererSettings>().debug_view == "light-volumes";
+              set_debug_view(world, on ? "" : "light-volumes");
+            }},
+    DemoKey{{GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD},
+            [](World& world, bool) {
+              world.registry().resource<DemoRequests>().light_count = std::min(std::max(1u, world.light_count() * 2), kMaxLights);
+            }},
+    DemoKey{{GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT},
+            [](World& world, bool) { world.registry().resource<DemoRequests>().light_count = world.light_count() / 2; }},
+    DemoKey{{GLFW_KEY_P, 0},
+            [](World& world, bool) {
+              bool& paused = world.registry().resource<LightAnimationSettings>().paused;
+              paused = !paused;
+              say(paused ? "light animation: paused" : "light animation: running");
+            }},
+    // Where the camera is, as a scene-file view line and a --camera value, so
+    // that users can author views by flying to them.
+    DemoKey{{GLFW_KEY_C, 0},
+            [](World& world, bool) {
+              world.registry().view<Transform, Camera, CameraAngles>().each(
+                  [](const Transform& t, const Camera&, const CameraAngles& angles) {
+                    const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
+                    say("camera: --camera " + assets::camera_argument(here) + "  view: " + assets::view_json(here));
+                  });
+            }},
+};
+
+}  // namespace
+
+std::span<const DemoKey> demo_keys() { return kDemoKeys; }
+
+void say(const std::string& line) {
+  std::printf("%s\n", line.c_str());
+  std::fflush(stdout);
+}
+
+void apply_demo_keys(World& world) {
+  const InputState& input = world.registry().resource<InputState>();
+  if (input.ui_wants_keyboard) return;
+  for (const KeyPress& press : input.pressed) {
+    for (const DemoKey& row : kDemoKeys) {
+      if (press.key == row.keys[0] || (row.keys[1] != 0 && press.key == row.keys[1])) row.act(world, (press.mods & GLFW_MOD_SHIFT) != 0);
+    }
+  }
+}
+
+void carry_out_demo_requests(World& world) {
+  auto& requests = world.registry().resource<DemoRequests>();
+  if (requests.mode) {
+    world.set_mode(*requests.mode);
+    say("mode: " + world.mode());
+  }
+  if (requests.view && *requests.view <= static_cast<int>(world.scene().views.size())) {
+    world.set_view(*requests.view);
+    say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
+  }
+  if (requests.light_count) {
+    world.set_light_count(*requests.light_count);
+    say("lights: " + std::to_string(world.light_count()));
+  }
+  requests.mode.reset();
+  requests.view.reset();
+  requests.light_count.reset();
+}
+
+}  // namespace atrium
