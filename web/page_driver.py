@@ -4,7 +4,8 @@ mode's picture; ?bench=N: every mode's frame time). Used by
 tests/web/browser_test.py and scripts/web-bench.py.
 
 Chromium 156 headless with --use-angle=swiftshader --enable-unsafe-swiftshader
-gives WebGL2 on SwiftShader; it needs --no-sandbox when run as root.
+gives WebGL2 on SwiftShader; it needs --no-sandbox when run as root, and
+--disable-dev-shm-usage keeps it off a container's small /dev/shm.
 """
 import http.server
 import json
@@ -42,7 +43,7 @@ def open_page(port, query, results, timeout=180):
     url = f"http://127.0.0.1:{port}/atrium.html?{query}"
     chromium = subprocess.Popen(
         ["chromium", "--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
-         "--no-first-run", "--disable-extensions", "--enable-logging=stderr", "--v=0",
+         "--no-first-run", "--disable-extensions", "--disable-dev-shm-usage", "--enable-logging=stderr", "--v=0",
          f"--user-data-dir={profile}", url],
         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     try:
