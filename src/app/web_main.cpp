@@ -12,6 +12,7 @@
 #include <vector>
 
 #include <emscripten/emscripten.h>
+#include <nlohmann/json.hpp>
 
 #include "gfx/gl.hpp"  // before GLFW, which would bring in GL/gl.h
 #include <GLFW/glfw3.h>
@@ -52,36 +53,29 @@ void show_error(const std::string& message) {
   EM_ASM({ atriumShowError(UTF8ToString($0)); }, message.c_str());
 }
 
-std::string json_string(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) >= 0x20) out += c;
-  }
-  return out + "\"";
-}
-
 // fps over the last half second and the latest frame's pass times, as JSON.
 std::string stats_json(World& world, double fps) {
   const gfx::PassTimer& timer = world.renderer().timer();
-  std::string passes;
+  nlohmann::ordered_json passes = nlohmann::ordered_json::array(), views = nlohmann::ordered_json::array();
   double total = 0.0;
   for (const gfx::PassTime& pass : timer.latest()) {
-    passes += std::string(passes.empty() ? "" : ",") + "{\"name\":" + json_string(pass.name) +
-              ",\"ms\":" + std::to_string(pass.milliseconds) + "}";
+    passes.push_back({{"name", pass.name}, {"ms", pass.milliseconds}});
     total += pass.milliseconds;
   }
-  std::string views, modes;
-  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
-    views += std::string(views.empty() ? "" : ",") + json_string(view.name);
-  }
-  for (const std::string& mode : lighting::mode_names()) modes += std::string(modes.empty() ? "" : ",") + json_string(mode);
-  return "{\"fps\":" + std::to_string(fps) + ",\"mode\":" + json_string(world.mode()) +
-         ",\"lights\":" + std::to_string(world.light_count()) + ",\"view\":" + std::to_string(world.view()) +
-         ",\"debug_view\":" + json_string(world.registry().resource<RendererSettings>().debug_view) +
-         ",\"paused\":" + (world.registry().resource<LightAnimationSettings>().paused ? "true" : "false") +
-         ",\"timing\":" + json_string(timer.method_name()) + ",\"passes_ms\":" + std::to_string(total) +
-         ",\"passes\":[" + passes + "],\"views\":[" + views + "],\"modes\":[" + modes + "]}";
+  for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
+  const nlohmann::ordered_json stats{
+      {"fps", fps},
+      {"mode", world.mode()},
+      {"lights", world.light_count()},
+      {"view", world.view()},
+      {"debug_view", world.registry().resource<RendererSettings>().debug_view},
+      {"paused", world.registry().resource<LightAnimationSettings>().paused},
+      {"timing", timer.method_name()},
+      {"passes_ms", total},
+      {"passes", passes},
+      {"views", views},
+      {"modes", lighting::mode_names()}};
+  return stats.dump();
 }
 
 void frame() {
@@ -191,7 +185,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
 // process; reading a pixel of the canvas does, so each frame's time is what
 // it cost the GPU as well as the CPU.
 EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
-  std::string json;
+  nlohmann::ordered_json medians = nlohmann::ordered_json::object();
   const char* error = atrium::apply([&](atrium::World& world) {
     for (const std::string& mode : atrium::lighting::mode_names()) {
       world.set_mode(mode);
@@ -205,11 +199,11 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
         times.push_back(emscripten_get_now() - start);
       }
       std::nth_element(times.begin(), times.begin() + static_cast<std::ptrdiff_t>(times.size() / 2), times.end());
-      json += std::string(json.empty() ? "{" : ",") + atrium::json_string(mode) + ":" + std::to_string(times[times.size() / 2]);
+      medians[mode] = times[times.size() / 2];
     }
   });
   if (*error) return error;
-  atrium::g_page->reply = json + "}";
+  atrium::g_page->reply = medians.dump();
   return atrium::g_page->reply.c_str();
 }
 
