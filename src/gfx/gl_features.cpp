@@ -36,6 +36,8 @@ GlFeatures ask_current_context() {
   f.clip_control = v >= 45 || has("GL_ARB_clip_control");
   f.base_vertex = v >= 32;
   f.multi_draw_indirect = v >= 43 || has("GL_ARB_multi_draw_indirect");
+  f.indirect_count = v >= 46 || has("GL_ARB_indirect_parameters");
+  f.pipeline_statistics = v >= 46 || has("GL_ARB_pipeline_statistics_query");
   f.binding_qualifiers = v >= 42 || has("GL_ARB_shading_language_420pack");
   f.program_uniforms = v >= 41 || has("GL_ARB_separate_shader_objects");
   f.multi_bind = v >= 44 || has("GL_ARB_multi_bind");

@@ -21,6 +21,8 @@ struct GlFeatures {
   bool clip_control = false;         // glClipControl: clip-space z in [0, 1]
   bool base_vertex = false;          // glDrawElements*BaseVertex (GL 3.2, ES 3.2)
   bool multi_draw_indirect = false;  // GL 4.3
+  bool indirect_count = false;       // glMultiDrawElementsIndirectCount (GL 4.6, ARB_indirect_parameters)
+  bool pipeline_statistics = false;  // fragment shader invocation queries (GL 4.6, ARB_pipeline_statistics_query)
   bool binding_qualifiers = false;   // GLSL layout(binding = N) (GL 4.2, ES 3.1)
   bool program_uniforms = false;     // glProgramUniform* (GL 4.1, ES 3.1)
   bool multi_bind = false;           // glBindTextures, glBindSamplers (GL 4.4)

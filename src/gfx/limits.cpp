@@ -54,10 +54,6 @@ bool is_software_renderer() {
          name.find("lavapipe") != std::string_view::npos || name.find("SwiftShader") != std::string_view::npos;
 }
 
-bool has_indirect_count() {
-  return epoxy_is_desktop_gl() && (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_indirect_parameters"));
-}
-
 std::uint32_t shader_loop_limit() { return is_software_renderer() ? 65535u : 0u; }
 
 }  // namespace atrium::gfx

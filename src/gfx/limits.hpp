@@ -32,8 +32,6 @@ class ResourceLimitError : public std::runtime_error {
 // Software rasterisers: Mesa's (llvmpipe, lavapipe, softpipe) and Chromium's
 // SwiftShader (WebGL's unmasked renderer, gfx/web_gl.cpp).
 [[nodiscard]] bool is_software_renderer();
-// glMultiDrawElementsIndirectCount: OpenGL 4.6 or ARB_indirect_parameters.
-[[nodiscard]] bool has_indirect_count();
 // The most loop iterations one shader invocation may run, all its loops
 // together, or 0 for no limit. llvmpipe silently leaves every loop once a
 // shader's SIMD vector has run 65,535 iterations (LP_MAX_TGSI_LOOP_ITERATIONS;

@@ -14,8 +14,7 @@ PassTimer::PassTimer()
                                                                                                        : TimingMethod::CpuFinish) {}
 PassTimer::PassTimer(TimingMethod method)
     : method_(method),
-      counts_fragments_(epoxy_is_desktop_gl() &&
-                        (epoxy_gl_version() >= 46 || epoxy_has_gl_extension("GL_ARB_pipeline_statistics_query"))) {
+      counts_fragments_(gl_features().pipeline_statistics) {
   if (counts_fragments_) cpu_fragments_ = create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
 }
 

@@ -3,7 +3,7 @@
 #include <cstring>
 #include <span>
 
-#include "gfx/limits.hpp"
+#include "gfx/gl_features.hpp"
 #include "render/culling/occlusion_culling.hpp"
 
 namespace atrium {
@@ -48,7 +48,7 @@ std::vector<glm::ivec4> depth_pyramid_levels(glm::ivec2 viewport) {
 }
 
 GpuOcclusionCulling::GpuOcclusionCulling(gfx::ShaderLibrary& shaders)
-    : shaders_(shaders), packs_(gfx::has_indirect_count()), counters_(gfx::create_buffer()), readback_(2 * sizeof(std::uint32_t)) {
+    : shaders_(shaders), packs_(gfx::gl_features().indirect_count), counters_(gfx::create_buffer()), readback_(2 * sizeof(std::uint32_t)) {
   glNamedBufferStorage(counters_.id(), 2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
