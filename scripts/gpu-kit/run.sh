@@ -4,7 +4,7 @@
 #   ./run.sh OUT           1920x1080, 128 to 1,048,576 lights, built-in scene and Sponza
 #                          (at most about 6 minutes: each step gets what is left of that)
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
-# Writes into OUT: report.md (the GL context, PSNR of every mode against forward,
+# Writes into OUT: report.md (the GL context, the SMs each shader stage reaches, PSNR of every mode against forward,
 # the bench tables, occlusion culling on the CPU and on the GPU), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
 # plot.png (where python3 has matplotlib), atrium.png, sponza.png and log.txt.
 # Exit 0 when every step ran and every mode is within 40 dB of forward.
@@ -98,6 +98,11 @@ if [ "$quick" = 0 ] && echo "$gl" | grep -qiE 'llvmpipe|softpipe|swiftshader|sof
   exit 1
 fi
 
+# Where shaders run, first: which of the GPU's SMs a compute dispatch and a
+# full-screen fragment pass reach (NVIDIA's GL_NV_shader_thread_group), and the
+# same arithmetic timed in each stage.
+step "where shaders run" 60 "$out/.probe.txt" "$atrium" probe --size "$size"
+
 # Constant density: radii shrink as lights grow (4 m at 1,024 lights, 0.4 m at
 # 2^20), so each pixel is reached by about as many lights at every count.
 bench=("$atrium" bench --modes all --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density)
@@ -157,6 +162,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
     echo "- the driver logged GPU faults (dmesg, NVRM Xid): $(dmesg 2>/dev/null | grep "NVRM: Xid" | tail -n 3 | tr '\n' ' ')"
   fi
   [ -n "$plot_note" ] && echo "- $plot_note"
+  section "Where shaders run: SMs reached by compute and by fragment work" "$out/.probe.txt"
   section "Every mode against forward, built-in scene (PSNR)" "$out/.compare-atrium.txt"
   section "Every mode against forward, Sponza (PSNR)" "$out/.compare-sponza.txt"
   section "Bench, built-in scene" "$out/.bench-atrium.md"

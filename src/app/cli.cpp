@@ -9,11 +9,13 @@
 #include <vector>
 
 #include "app/info.hpp"
+#include "app/probe.hpp"
 #include "app/world.hpp"
 #include "components/frame_resources.hpp"
 #include "assets/image.hpp"
 #include "assets/load_budget.hpp"
 #include "gfx/context.hpp"
+#include "gfx/limits.hpp"
 #include "gfx/shader_program.hpp"
 #include "render/debug/debug_views.hpp"
 #include "render/techniques/technique.hpp"
@@ -207,6 +209,18 @@ int run_bench_command(const CliOptions& options) {
   return kExitOk;
 }
 
+int run_probe(const CliOptions& options) {
+  const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
+  if (options.size.x > gfx::max_render_size().x || options.size.y > gfx::max_render_size().y) {
+    throw UsageError("--size " + std::to_string(options.size.x) + "x" + std::to_string(options.size.y) + " is larger than this context renders (" +
+                     std::to_string(gfx::max_render_size().x) + "x" + std::to_string(gfx::max_render_size().y) + ")");
+  }
+  const gfx::StageProbeResult result = gfx::run_stage_probe(options.size);
+  const std::string& renderer = context->info().renderer;
+  std::fputs((options.json ? format_probe_json(result, renderer) : format_probe_text(result, renderer)).c_str(), stdout);
+  return kExitOk;
+}
+
 int run_command(const CliOptions& options) {
   switch (options.command) {
     case Command::Help: std::fputs(help_text(options.help_topic).c_str(), stdout); return kExitOk;
@@ -215,6 +229,7 @@ int run_command(const CliOptions& options) {
     case Command::Info: return run_info(options);
     case Command::Compare: return run_compare(options);
     case Command::Bench: return run_bench_command(options);
+    case Command::Probe: return run_probe(options);
     case Command::Window: return run_window(options);
   }
   return kExitUsage;

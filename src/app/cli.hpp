@@ -32,7 +32,7 @@ class UsageError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class Command { Window, Render, Info, Compare, Bench, Help, Version };
+enum class Command { Window, Render, Info, Compare, Bench, Probe, Help, Version };
 
 struct CliOptions {
   Command command = Command::Window;
@@ -50,7 +50,7 @@ struct CliOptions {
   glm::ivec2 size{1280, 720};
   std::string out;                 // render: PNG path
   std::optional<std::uint64_t> frames;  // window: quit after this many frames
-  bool json = false;                    // info: print JSON
+  bool json = false;                    // info, probe: print JSON
   bool memory = false;                  // info: every mode's render-target memory at --size
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling

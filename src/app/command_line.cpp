@@ -28,7 +28,7 @@ namespace {
 
 constexpr unsigned on(Command command) { return 1u << static_cast<unsigned>(command); }
 constexpr unsigned kWindow = on(Command::Window), kRender = on(Command::Render), kInfo = on(Command::Info),
-                   kCompare = on(Command::Compare), kBench = on(Command::Bench);
+                   kCompare = on(Command::Compare), kBench = on(Command::Bench), kProbe = on(Command::Probe);
 constexpr unsigned kDrawing = kWindow | kRender | kCompare | kBench;  // the commands that draw frames
 
 struct CommandSpec {
@@ -51,6 +51,9 @@ constexpr std::array kCommands{
     CommandSpec{Command::Bench, "bench", "atrium bench [SCENE] [options]",
                 "frame and pass times over modes, light counts and views (default: all modes, 10,50,110,1024 "
                 "lights, all views, 320x180, 30 frames, 5 warm-up)"},
+    CommandSpec{Command::Probe, "probe", "atrium probe [options]",
+                "the GPU's SMs that compute and fragment shaders run on (NVIDIA's GL_NV_shader_thread_group), and the same "
+                "arithmetic timed in each stage (default 1920x1080)"},
 };
 
 const CommandSpec& command_spec(Command command) {
@@ -284,7 +287,8 @@ const std::vector<OptionSpec>& option_table() {
                             std::string(value) + "'");
          }
        }},
-      {"--size", "WxH", kDrawing | kInfo, "image or window size in pixels (default 1280x720; compare and bench: 320x180; info: for --memory)",
+      {"--size", "WxH", kDrawing | kInfo | kProbe,
+       "image or window size in pixels (default 1280x720; compare and bench: 320x180; info: for --memory; probe: 1920x1080)",
        [](std::string_view value, CliOptions& o) { o.size = parse_size(value); }},
       {"--out", "FILE.png", kRender, "where to write the image", [](std::string_view value, CliOptions& o) { o.out = std::string(value); }},
       {"--frames", "N", kWindow, "quit after N frames (for scripted runs)",
@@ -353,7 +357,7 @@ const std::vector<OptionSpec>& option_table() {
          if (!api) throw UsageError("unknown --gl '" + std::string(value) + "' (expected auto, 4.5, 4.1 or es3.0)");
          o.gl_api = *api;
        }},
-      {"--json", "", kInfo, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
+      {"--json", "", kInfo | kProbe, "print JSON", set_flag([](CliOptions& o) -> bool& { return o.json; })},
       {"--memory", "", kInfo,
        "draw one frame of every mode at --size and report its render-target memory: long-lived targets, and transient "
        "ones with and without sharing GL objects where their lifetimes do not overlap",
@@ -575,6 +579,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   const auto [parsed, command] = chosen();
   options.command = command;
   if (command == Command::Bench || command == Command::Compare) options.size = {320, 180};
+  if (command == Command::Probe) options.size = {1920, 1080};
   for (const std::string& extra : app.remaining(true)) {
     if (extra == "--") continue;
     if (extra.starts_with("-")) throw unknown_option(extra, command);
@@ -610,6 +615,7 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   if (options.command == Command::Render && options.out.empty() && options.debug_view != "list") {
     throw UsageError("render needs --out FILE.png");
   }
+  if (options.command == Command::Probe && scene_given) throw UsageError("probe draws no scene; '" + options.scene + "' does not apply");
   if (options.camera && options.view != 1) throw UsageError("--camera replaces the scene's views; --view does not apply");
   if (options.camera && options.command == Command::Bench && options.bench.views.size() > 0) {
     throw UsageError("--camera replaces the scene's views; --views does not apply");

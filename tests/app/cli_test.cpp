@@ -92,6 +92,17 @@ TEST(Cli, VersionAndPerCommandHelp) {
   EXPECT_NE(help_text(Command::Bench).find("\n  --lights LIST "), std::string::npos);
 }
 
+TEST(Cli, ProbeMeasuresAt1080pAndDrawsNoScene) {
+  const CliOptions probe = parse({"probe", "--json"});
+  EXPECT_EQ(probe.command, Command::Probe);
+  EXPECT_EQ(probe.size, glm::ivec2(1920, 1080));
+  EXPECT_TRUE(probe.json);
+  EXPECT_EQ(parse({"probe", "--size", "320x180"}).size, glm::ivec2(320, 180));
+  EXPECT_EQ(usage_error({"probe", "scenes/sponza.json"}), "probe draws no scene; 'scenes/sponza.json' does not apply");
+  EXPECT_EQ(usage_error({"probe", "--mode", "deferred"}), "--mode is for the window and `atrium render`");
+  EXPECT_NE(help_text(Command::Probe).find("GL_NV_shader_thread_group"), std::string::npos);
+}
+
 TEST(Cli, SuggestsTheNearestOptionAndNamesWhereAnOptionBelongs) {
   EXPECT_EQ(usage_error({"--ligths", "5"}), "unknown option '--ligths' (did you mean --lights? see atrium --help)");
   EXPECT_EQ(usage_error({"render", "--out", "x.png", "--shadng=pbr"}),
@@ -115,7 +126,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--warmup", "1"},            {"--frame-limit", "250"},        {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
       {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"}};
-  for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench}) {
+  for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench, Command::Probe}) {
     std::istringstream help(help_text(command));
     int options = 0;
     for (std::string line; std::getline(help, line);) {
@@ -130,6 +141,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       if (command == Command::Info) args = {"info"};
       if (command == Command::Compare) args = {"compare"};
       if (command == Command::Bench) args = {"bench"};
+      if (command == Command::Probe) args = {"probe"};
       if (flag) {
         args.push_back(name);
       } else {
@@ -140,7 +152,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       EXPECT_NO_THROW((void)parse_cli(views)) << line;
       ++options;
     }
-    EXPECT_GT(options, 2);
+    EXPECT_GE(options, command == Command::Probe ? 2 : 3);
   }
 }
 

@@ -1,0 +1,78 @@
+#include "app/probe.hpp"
+
+#include <algorithm>
+#include <cstdio>
+#include <numeric>
+#include <utility>
+
+#include <nlohmann/json.hpp>
+
+namespace atrium {
+namespace {
+
+double gflops(const gfx::StageProbeResult& r, const gfx::StageReach& reach) {
+  return reach.milliseconds > 0 ? r.flops() / (reach.milliseconds * 1e6) : 0.0;
+}
+
+// The share of the census's invocations that the busiest SM ran: 1/N when N
+// SMs share the work evenly.
+double busiest_share(const gfx::StageReach& reach) {
+  const std::uint64_t total = std::accumulate(reach.invocations.begin(), reach.invocations.end(), std::uint64_t{0});
+  if (total == 0) return 0;
+  return static_cast<double>(*std::max_element(reach.invocations.begin(), reach.invocations.end())) / static_cast<double>(total);
+}
+
+}  // namespace
+
+std::string format_probe_text(const gfx::StageProbeResult& r, const std::string& renderer) {
+  std::string text;
+  char line[512];
+  auto add = [&](const char* format, auto... values) {
+    std::snprintf(line, sizeof line, format, values...);
+    text += line;
+  };
+  add("gpu          %s\n", renderer.c_str());
+  if (r.sm_ids) {
+    add("SMs          %u (GL_SM_COUNT_NV), warps of %u threads, %u warps per SM\n", r.sm_count, r.warp_size, r.warps_per_sm);
+  } else {
+    add("SMs          not reported: the driver has no GL_NV_shader_thread_group (NVIDIA's); times only\n");
+  }
+  add("work         %dx%d pixels, %u iterations of 8 multiply-adds (%.2f Gflop a pass), median of %u runs, %s\n", r.size.x, r.size.y,
+      r.iterations, r.flops() / 1e9, r.runs, r.timing.c_str());
+  for (const auto& [name, reach] : {std::pair{"compute ", &r.compute}, std::pair{"fragment", &r.fragment}}) {
+    add("%s     %.3f ms, %.0f Gflop/s", name, reach->milliseconds, gflops(r, *reach));
+    if (r.sm_ids) {
+      add("; ran on %u of %u SMs, the busiest running %.1f%% of the invocations", reach->sms_reached(), r.sm_count,
+          100.0 * busiest_share(*reach));
+    }
+    text += "\n";
+  }
+  if (r.compute.milliseconds > 0) add("ratio        fragment time / compute time: %.2f\n", r.fragment.milliseconds / r.compute.milliseconds);
+  return text;
+}
+
+std::string format_probe_json(const gfx::StageProbeResult& r, const std::string& renderer) {
+  auto stage = [&](const gfx::StageReach& reach) {
+    nlohmann::json j = {{"milliseconds", reach.milliseconds}, {"gflops", gflops(r, reach)}};
+    if (r.sm_ids) {
+      j["sms_reached"] = reach.sms_reached();
+      j["busiest_sm_share"] = busiest_share(reach);
+      j["invocations_per_sm"] = reach.invocations;
+    }
+    return j;
+  };
+  nlohmann::json j = {{"gpu", renderer},
+                      {"size", {r.size.x, r.size.y}},
+                      {"iterations", r.iterations},
+                      {"flops_per_pass", r.flops()},
+                      {"runs", r.runs},
+                      {"timing", r.timing},
+                      {"sm_ids", r.sm_ids},
+                      {"sm_count", r.sm_ids ? nlohmann::json(r.sm_count) : nlohmann::json(nullptr)},
+                      {"compute", stage(r.compute)},
+                      {"fragment", stage(r.fragment)},
+                      {"fragment_over_compute", r.compute.milliseconds > 0 ? r.fragment.milliseconds / r.compute.milliseconds : 0.0}};
+  return j.dump(2) + "\n";
+}
+
+}  // namespace atrium
