@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Plots an `atrium bench` CSV: frame time against light count on log-log axes,
 one line per mode (the median over views of each mode's median frame time);
-with several --z-slicing schemes in the file, one line per clustered mode and scheme.
+with several --z-slicing schemes in the file, one line per clustered mode and scheme;
+with several lighting stages, one line per mode and stage.
 
 usage: tools/plot_bench.py BENCH.csv OUT.png [TITLE]
 """
@@ -26,6 +27,7 @@ def main() -> int:
     with open(source, newline="") as f:
         rows = list(csv.DictReader(f))
     several_slicings = len({row.get("z_slicing") for row in rows if row.get("z_slicing")}) > 1
+    several_stages = len({row.get("lighting_stage") for row in rows if row.get("lighting_stage")}) > 1
     several_shadows = len({row.get("shadows") for row in rows if row.get("shadows")}) > 1
     for row in rows:
         if row.get("refused"):  # the driver refused this mode at this light count: no time
@@ -33,6 +35,8 @@ def main() -> int:
         label = row["mode"]
         if several_slicings and row.get("z_slicing"):
             label += "/" + row["z_slicing"]
+        if several_stages and row.get("lighting_stage"):
+            label += " (" + row["lighting_stage"] + ")"
         if several_shadows:
             label += f' {row["shadows"]} shadowed'
         times[label][int(row["lights"])].append(float(row["median_ms"]))

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Atrium's GPU kit (made by scripts/gpu-kit.sh): every GPU figure in one
 # command, started with nothing but this folder.
-#   ./run.sh OUT           1920x1080, 128 to 1,048,576 lights, built-in scene and Sponza
-#                          (at most about 6 minutes: each step gets what is left of that)
+#   ./run.sh OUT           1920x1080, 128 to 1,048,576 lights, built-in scene and Sponza, each mode in
+#                          the fragment and the compute stage (at most 8 minutes: each step gets what is
+#                          left of that)
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
 # Writes into OUT: report.md (the GL context, the SMs each shader stage reaches, PSNR of every mode against forward,
 # the bench tables, occlusion culling on the CPU and on the GPU), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
@@ -39,10 +40,10 @@ fi
 atrium=$kit/bin/atrium
 sponza=$kit/scenes/sponza.json
 if [ "$quick" = 1 ]; then
-  size=160x90 lights=16,64 frames=2 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 budget=240
+  size=160x90 lights=16,64 frames=2 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 cluster_lights=64 budget=240
 else
   size=1920x1080 lights=128,1024,16384,131072,1048576 frames=5 warmup=2 shadow_lights=1024 shadowed=256 picture_lights=131072 \
-    picture_radius=0.8 budget=345
+    picture_radius=0.8 cluster_lights=131072 budget=480
 fi
 lights=${ATRIUM_KIT_LIGHTS:-$lights}
 budget=${ATRIUM_KIT_SECONDS:-$budget}
@@ -64,6 +65,11 @@ step() {
     failed+=("$name (no time left)")
     return 1
   fi
+  if [ -n "$gpu_lost" ]; then
+    echo "== $name: not run, $gpu_lost" | tee -a "$log" >&2
+    failed+=("$name (not run: the GPU stopped answering)")
+    return 1
+  fi
   echo "== $name (at most ${limit} s): $*" | tee -a "$log" >&2
   local start rc
   start=$(date +%s)
@@ -72,8 +78,26 @@ step() {
   echo "== $name: exit $rc after $(($(date +%s) - start)) s" | tee -a "$log" >&2
   if [ "$rc" -ne 0 ]; then
     failed+=("$name (exit $rc$([ "$rc" = 124 ] && echo ', out of time'))")
+    check_gpu "$name"
   fi
   return "$rc"
+}
+
+# After a step that failed: a 64x64 frame in its own process must come back
+# within 20 s. A GPU that does not (a hung or reset context: after one such
+# step every later frame once took 20 s and came back black) is taken for
+# lost, and the steps after it are not run rather than measure a broken GPU.
+gpu_lost=""
+check_gpu() {
+  local start rc
+  start=$(date +%s)
+  timeout 20 "$atrium" render --mode forward --lights 16 --size 64x64 --out "$out/.health.png" >/dev/null 2>>"$log"
+  rc=$?
+  echo "== GPU check after $1: exit $rc after $(($(date +%s) - start)) s" >>"$log"
+  if [ "$rc" -ne 0 ]; then
+    gpu_lost="the GPU did not draw a 64x64 frame within 20 s after the step '$1' (exit $rc): later figures would measure a broken GPU"
+    echo "run.sh: $gpu_lost" >&2
+  fi
 }
 
 # The GPU's clocks, power and temperature into the log (where nvidia-smi is):
@@ -105,7 +129,10 @@ step "where shaders run" 60 "$out/.probe.txt" "$atrium" probe --size "$size"
 
 # Constant density: radii shrink as lights grow (4 m at 1,024 lights, 0.4 m at
 # 2^20), so each pixel is reached by about as many lights at every count.
-bench=("$atrium" bench --modes all --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density)
+# Each mode in both stages (--lighting-stage): the fragment passes against the
+# compute passes that replace them, run for run.
+bench=("$atrium" bench --modes all --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density
+  --lighting-stage fragment,compute)
 gpu_state "before the runs"
 step "compare, built-in scene" 90 "$out/.compare-atrium.txt" "$atrium" compare --size "$size"
 step "compare, Sponza" 90 "$out/.compare-sponza.txt" "$atrium" compare "$sponza" --size "$size"
@@ -113,6 +140,13 @@ step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights 
 step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
 step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
   --shadows "$shadowed" --csv "$out/bench-shadows.csv"
+# Clustered lists at 1080p against the grid's tile size: the default 16x9
+# tiles are 120 pixels wide there; 60x34 and 120x68 make them 32 and 16.
+for grid in 16x9x32 60x34x32 120x68x32; do
+  step "clusters $grid" 40 "$out/.clusters-$grid.md" "$atrium" bench --modes clustered-deferred,tiled-deferred --views 1 --size "$size" \
+    --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$cluster_lights" --cluster-grid "$grid" \
+    --lighting-stage compute
+done
 # Occlusion culling where it tests: the grid's street view hides most of what
 # is in view; the same triangles either way, the GPU path with nothing read back.
 grid=$kit/scenes/courtyard-grid.json
@@ -157,6 +191,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   echo "- size $size; light counts $lights at constant density; $frames frames after $warmup warm-up per run, view 1;" \
     "a run stops after a frame over 1 s"
   echo "- steps that failed: ${failed[*]:-none}"
+  [ -n "$gpu_lost" ] && echo "- stopped early: $gpu_lost"
   grep "^== GPU state" "$log" | sed 's/^== /- /'
   if command -v dmesg >/dev/null && dmesg 2>/dev/null | grep -q "NVRM: Xid"; then
     echo "- the driver logged GPU faults (dmesg, NVRM Xid): $(dmesg 2>/dev/null | grep "NVRM: Xid" | tail -n 3 | tr '\n' ' ')"
@@ -168,11 +203,14 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "Bench, built-in scene" "$out/.bench-atrium.md"
   section "Bench, Sponza" "$out/.bench-sponza.md"
   section "Bench, Sponza, $shadowed shadowed lights" "$out/.bench-shadows.md"
+  for grid in 16x9x32 60x34x32 120x68x32; do
+    section "Clustered and tiled lists, compute stage, $cluster_lights lights, cluster grid $grid" "$out/.clusters-$grid.md"
+  done
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
   section "Pictures" "$out/.render-sponza.txt"
   cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
 } >"$report"
-rm -f "$out"/.*.txt "$out"/.*.md
+rm -f "$out"/.*.txt "$out"/.*.md "$out"/.health.png
 echo "run.sh: wrote $report; steps that failed: ${failed[*]:-none}" >&2
 [ ${#failed[@]} -eq 0 ]

@@ -1,8 +1,27 @@
-// The targets a deferred lighting pass writes (FrameTargets::lighting_framebuffer):
-// the HDR colour and, with SPLIT_LIGHTING, the diffuse and specular light sums
-// apart, which the diffuse-light and specular-light debug views show.
+// The targets a deferred lighting pass writes: the HDR colour and, with
+// SPLIT_LIGHTING, the diffuse and specular light sums apart, which the
+// diffuse-light and specular-light debug views show. As a fragment pass it
+// draws into FrameTargets::lighting_framebuffer; as a compute pass
+// (COMPUTE_STAGE, --lighting-stage compute) it stores to the same targets bound
+// as images (units from kLitImageUnit, render/lighting/lighting_stage.hpp).
+// The pass's file defines shade_pixel() and then includes common/lighting_main.glsl.
 #include "shading.glsl"
 
+#ifdef COMPUTE_STAGE
+layout(rgba16f, binding = 2) uniform writeonly image2D u_lit_color;
+#ifdef SPLIT_LIGHTING
+layout(rgba16f, binding = 3) uniform writeonly image2D u_lit_diffuse;
+layout(rgba16f, binding = 4) uniform writeonly image2D u_lit_specular;
+#endif
+
+void write_lighting(vec3 unlit, LightSum sum) {
+  imageStore(u_lit_color, g_shaded_pixel, vec4(unlit + light_total(sum), 1.0));
+#ifdef SPLIT_LIGHTING
+  imageStore(u_lit_diffuse, g_shaded_pixel, vec4(sum.diffuse, 1.0));
+  imageStore(u_lit_specular, g_shaded_pixel, vec4(sum.specular, 1.0));
+#endif
+}
+#else
 layout(location = 0) out vec4 out_color;
 #ifdef SPLIT_LIGHTING
 layout(location = 1) out vec4 out_diffuse;
@@ -16,6 +35,7 @@ void write_lighting(vec3 unlit, LightSum sum) {
   out_specular = vec4(sum.specular, 1.0);
 #endif
 }
+#endif
 
 // A pixel no surface covers: the background, and no light.
 void write_background() { write_lighting(u_background.rgb, no_light()); }

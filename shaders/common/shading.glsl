@@ -29,11 +29,20 @@ vec3 incoming_light(Surface s, Light light, out vec3 l, bool shadowed) {
   return light.color_kind.rgb * attenuation;
 }
 
+// The pixel being shaded: the fragment's, or in a compute lighting pass
+// (COMPUTE_STAGE, common/lighting_targets.glsl) the one its entry point set.
+#ifdef COMPUTE_STAGE
+ivec2 g_shaded_pixel;
+ivec2 shaded_pixel() { return g_shaded_pixel; }
+#else
+ivec2 shaded_pixel() { return ivec2(gl_FragCoord.xy); }
+#endif
+
 // The heatmap debug view compiles every lighting shader with COUNT_LIGHTS:
 // each evaluation of a light for a fragment adds one to the fragment's pixel.
 #ifdef COUNT_LIGHTS
 layout(r32ui, binding = 0) uniform coherent uimage2D u_light_counts;
-void count_light_evaluation() { imageAtomicAdd(u_light_counts, ivec2(gl_FragCoord.xy), 1u); }
+void count_light_evaluation() { imageAtomicAdd(u_light_counts, shaded_pixel(), 1u); }
 #else
 void count_light_evaluation() {}
 #endif

@@ -1,21 +1,3 @@
 #version 450 core
-// Tiled deferred lighting: reads each pixel's surface from the G-buffer and
-// shades it with the lights listed for its 16x16 tile.
-#include "common/frame.glsl"
-#include "common/surface.glsl"
-#include "common/gbuffer.glsl"
-#include "common/tile_shading.glsl"
-#include "common/lighting_targets.glsl"
-
-// With MSAA the stencil picks the pixels each rate shades (sample_rate.hpp);
-// tested before the shader, rejected pixels neither run nor count as shaded.
-layout(early_fragment_tests) in;
-
-void main() {
-  Surface s;
-  if (!read_gbuffer(ivec2(gl_FragCoord.xy), s)) {
-    write_background();
-    return;
-  }
-  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_tile_lights(s, gl_FragCoord.xy));
-}
+// Tiled deferred lighting as a full-screen fragment pass (tiled/lighting.glsl).
+#include "tiled/lighting.glsl"

@@ -102,6 +102,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.mode = mode;
   row.z_slicing = world.registry().resource<RendererSettings>().technique_options.z_slicing;
   row.shadows = world.registry().resource<RendererSettings>().shadows;
+  row.stage_asked = world.registry().resource<RendererSettings>().technique_options.lighting_stage;
   row.lights = world.light_count();
   row.view = world.view();
   row.view_name = world.scene().views[static_cast<std::size_t>(world.view() - 1)].name;
@@ -151,6 +152,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.p95_ms = percentile(frame_ms, 0.95);
   row.gpu_ms = percentile(gpu_ms, 0.5);
   // The camera holds still: every measured frame submits the same draws.
+  row.lighting_stage = world.renderer().stats().lighting_stage;
   row.triangles_drawn = world.renderer().stats().triangles_drawn;
   row.triangles_occluded = world.renderer().stats().triangles_occluded;
   row.draw_calls = world.renderer().stats().draw_calls;
@@ -165,9 +167,10 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
 // Why `mode` is not measured at `lights` after the rows measured so far (empty:
 // measure it): a frame at a smaller count passed the limit, or would at this
 // count if its time grew with the lights (the linear cost of forward shading).
-std::string skip_reason(const std::vector<BenchRow>& rows, const std::string& mode, std::uint32_t lights, int shadows, double frame_limit_ms) {
+std::string skip_reason(const std::vector<BenchRow>& rows, const std::string& mode, lighting::LightingStage stage, std::uint32_t lights,
+                        int shadows, double frame_limit_ms) {
   for (auto row = rows.rbegin(); row != rows.rend(); ++row) {
-    if (row->mode != mode || row->shadows != shadows || row->lights >= lights || !row->skipped.empty()) continue;
+    if (row->mode != mode || row->stage_asked != stage || row->shadows != shadows || row->lights >= lights || !row->skipped.empty()) continue;
     if (!row->refused.empty()) return "refused at " + with_commas(row->lights) + " lights";
     const double estimate = row->median_ms * static_cast<double>(lights) / std::max(1.0, static_cast<double>(row->lights));
     if (row->median_ms > frame_limit_ms) {
@@ -211,6 +214,16 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   return result;
 }
 
+// Every pair of a shadowed-light count and a lighting stage, counts outermost.
+std::vector<std::pair<int, lighting::LightingStage>> sweep(const std::vector<int>& shadow_counts,
+                                                           const std::vector<lighting::LightingStage>& stages) {
+  std::vector<std::pair<int, lighting::LightingStage>> pairs;
+  for (const int shadows : shadow_counts) {
+    for (const lighting::LightingStage stage : stages) pairs.emplace_back(shadows, stage);
+  }
+  return pairs;
+}
+
 BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress) {
   BenchResult result;
   result.options = options;
@@ -218,6 +231,8 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   const std::vector<lighting::ZSlicing> slicings =
       options.z_slicings.empty() ? std::vector{options.technique_options.z_slicing} : options.z_slicings;
   const std::vector<int> shadow_counts = options.shadow_counts.empty() ? std::vector{0} : options.shadow_counts;
+  const std::vector<lighting::LightingStage> stages =
+      options.lighting_stages.empty() ? std::vector{options.technique_options.lighting_stage} : options.lighting_stages;
   std::vector<std::uint32_t> light_counts = options.light_counts;
   std::sort(light_counts.begin(), light_counts.end());  // skipping learns from the smaller counts
   WorldOptions world_options;
@@ -239,7 +254,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   if (views.empty()) {
     for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
   }
-  const std::size_t total = light_counts.size() * modes.size() * slicings.size() * shadow_counts.size() * views.size();
+  const std::size_t total = light_counts.size() * modes.size() * slicings.size() * stages.size() * shadow_counts.size() * views.size();
   std::size_t done = 0;
   auto& settings = world.registry().resource<RendererSettings>();
   settings.redraw_shadows = options.shadow_redraw;
@@ -249,8 +264,9 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
     for (const int view : views) {
       world.set_view(view);
       const double reaching = count_reaching(world);
-      for (const int shadows : shadow_counts) {
+      for (const auto [shadows, stage] : sweep(shadow_counts, stages)) {
         settings.shadows = shadows;
+        settings.technique_options.lighting_stage = stage;
         // Modes that do not slice depth are measured once, with the first slicing.
         std::vector<std::string> to_measure = modes;
         for (const lighting::ZSlicing slicing : slicings) {
@@ -261,7 +277,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
               continue;
             }
             BenchRow row;
-            const std::string skipped = skip_reason(result.rows, mode, lights, shadows, options.frame_limit_ms);
+            const std::string skipped = skip_reason(result.rows, mode, stage, lights, shadows, options.frame_limit_ms);
             if (skipped.empty()) {
               row = measure_mode(world, mode, options.frames, options.warmup, reaching, options.frame_limit_ms);
             } else {
@@ -271,6 +287,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
               row.view_name = world.scene().views[static_cast<std::size_t>(view - 1)].name;
               row.shadows = shadows;
               row.z_slicing = slicing;
+              row.stage_asked = stage;
               row.skipped = skipped;
               mark_unmeasured(row);
               row.reaching_per_pixel = reaching;
@@ -296,6 +313,7 @@ std::string label(const BenchResult& result, const BenchRow& row) {
   if (result.options.z_slicings.size() >= 2 && row.sliced) {
     name += "/" + std::string(lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
   }
+  if (result.options.lighting_stages.size() >= 2) name += "/" + std::string(lighting::kLightingStageNames[static_cast<std::size_t>(row.stage_asked)]);
   if (result.options.shadow_counts.size() >= 2) name += " " + std::to_string(row.shadows) + " shadowed";
   return name;
 }
@@ -399,7 +417,7 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -416,7 +434,9 @@ std::string bench_csv(const BenchResult& result) {
         << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
         << row.shadows << "," << row.triangles_occluded << "," << fixed(row.gpu_ms, 4) << ","
         << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
-        << "\"\n";
+        << "\","
+        << (std::isnan(row.median_ms) ? std::string_view() : lighting::kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
+        << "\n";
   }
   return csv.str();
 }

@@ -35,6 +35,8 @@ struct BenchOptions {
   lighting::TechniqueOptions technique_options;
   // --z-slicing LIST: every mode is measured with each (empty: technique_options').
   std::vector<lighting::ZSlicing> z_slicings;
+  // --lighting-stage LIST: every mode is measured in each stage (empty: technique_options').
+  std::vector<lighting::LightingStage> lighting_stages;
   bool frustum_culling = true;               // --no-culling
   bool occlusion_culling = true;             // --no-occlusion-culling
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
@@ -53,6 +55,9 @@ struct BenchRow {
   lighting::ZSlicing z_slicing = lighting::ZSlicing::Log;
   bool sliced = false;
   int shadows = 0;  // lights with shadow maps (--shadows)
+  // The stage asked for (a sweep's) and the one the full-screen passes ran in.
+  lighting::LightingStage stage_asked = lighting::LightingStage::Automatic;
+  lighting::LightingStage lighting_stage = lighting::LightingStage::Fragment;
   std::uint32_t lights = 0;
   int view = 1;
   std::string view_name;

@@ -18,6 +18,7 @@
 #include "gfx/limits.hpp"
 #include "gfx/shader_program.hpp"
 #include "render/debug/debug_views.hpp"
+#include "render/lighting/lighting_pass.hpp"
 #include "render/techniques/technique.hpp"
 
 namespace atrium {
@@ -111,31 +112,53 @@ int run_info(const CliOptions& options) {
   return kExitOk;
 }
 
-// Every mode at every view against forward: PSNR and largest channel difference.
+// Every mode at every view, in each lighting stage, against forward drawn in
+// the fragment stage: PSNR and largest channel difference.
 int run_compare(const CliOptions& options) {
   const std::string below = "  < " + std::to_string(static_cast<int>(kMinimumPsnr)) + " dB";
   const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   WorldOptions compared = world_options(options);
   compared.mode = "forward";
+  compared.lighting_stage = lighting::LightingStage::Fragment;
   World world(compared);
-  std::printf("%-24s %-18s %10s %9s\n", "mode", "view", "PSNR", "max diff");
+  lighting::TechniqueOptions& technique_options = world.registry().resource<RendererSettings>().technique_options;
+  // By default both stages, less one this context or --msaa cannot run (said once).
+  std::vector<lighting::LightingStage> stages = options.lighting_stages;
+  if (stages.empty()) {
+    for (const lighting::LightingStage stage : {lighting::LightingStage::Fragment, lighting::LightingStage::Compute}) {
+      lighting::TechniqueOptions asked = technique_options;
+      asked.lighting_stage = stage;
+      try {
+        (void)lighting::resolve_lighting_stage(asked);
+        stages.push_back(stage);
+      } catch (const gfx::ResourceLimitError& e) {
+        std::printf("not compared: %s\n", e.what());
+      }
+    }
+  }
+  std::printf("%-24s %-9s %-18s %10s %9s\n", "mode", "stage", "view", "PSNR", "max diff");
   bool all_close = true;
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
     world.set_view(view);
     world.set_mode("forward");
+    technique_options.lighting_stage = lighting::LightingStage::Fragment;
     world.frame(0.0);
     const assets::Image reference = world.renderer().read_output();
     const std::string view_name = std::to_string(view) + " " + world.scene().views[static_cast<std::size_t>(view - 1)].name;
-    for (const auto& technique : lighting::technique_table()) {
-      if (technique.name == "forward") continue;
-      world.set_mode(std::string(technique.name));
-      world.frame(0.0);
-      const assets::Image image = world.renderer().read_output();
-      const double psnr = assets::psnr(reference, image);
-      const bool close = psnr >= kMinimumPsnr;
-      all_close = all_close && close;
-      std::printf("%-24s %-18s %7.2f dB %9d%s\n", std::string(technique.name).c_str(), view_name.c_str(),
-                  std::isinf(psnr) ? 999.99 : psnr, assets::max_channel_difference(reference, image), close ? "" : below.c_str());
+    for (const lighting::LightingStage stage : stages) {
+      technique_options.lighting_stage = stage;
+      for (const auto& technique : lighting::technique_table()) {
+        if (technique.name == "forward" && stage == lighting::LightingStage::Fragment) continue;
+        world.set_mode(std::string(technique.name));
+        world.frame(0.0);
+        const assets::Image image = world.renderer().read_output();
+        const double psnr = assets::psnr(reference, image);
+        const bool close = psnr >= kMinimumPsnr;
+        all_close = all_close && close;
+        const std::string_view ran = lighting::lighting_stage_name(world.renderer().stats().lighting_stage);
+        std::printf("%-24s %-9s %-18s %7.2f dB %9d%s\n", std::string(technique.name).c_str(), std::string(ran).c_str(), view_name.c_str(),
+                    std::isinf(psnr) ? 999.99 : psnr, assets::max_channel_difference(reference, image), close ? "" : below.c_str());
+      }
     }
   }
   std::printf(all_close ? "every mode is within %.0f dB PSNR of forward\n" : "some modes differ from forward by more than %.0f dB PSNR\n",
@@ -175,6 +198,7 @@ int run_bench_command(const CliOptions& options) {
   bench.frustum_culling = options.frustum_culling;
   bench.occlusion_culling = options.occlusion_culling;
   bench.culling_device = options.culling_device;
+  bench.lighting_stages = options.lighting_stages;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   // One line per run on stderr: a long sweep (a GPU kit run) shows where it is.
   const BenchResult result = run_bench(bench, [](std::size_t done, std::size_t total, const BenchRow& row) {

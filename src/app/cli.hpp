@@ -55,6 +55,10 @@ struct CliOptions {
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
+  // --lighting-stage: the window's and render's (absent: the scene file's, else
+  // auto); compare's and bench's list (empty: their defaults).
+  std::optional<lighting::LightingStage> lighting_stage;
+  std::vector<lighting::LightingStage> lighting_stages;
   int shadows = 0;                      // --shadows K: lights with shadow maps
   std::map<std::string, double> system_options;  // rows of the system options table, by name
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)

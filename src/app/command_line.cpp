@@ -21,6 +21,8 @@
 #include "render/techniques/technique.hpp"
 #include "systems/overlay.hpp"
 #include "render/lighting/gbuffer.hpp"
+#include "render/lighting/lighting_pass.hpp"
+#include "gfx/limits.hpp"
 #include "render/shadows/shadow_selection.hpp"
 
 namespace atrium {
@@ -126,6 +128,10 @@ glm::ivec2 parse_size(std::string_view text) {
     throw UsageError("--size expects WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide) +
                      ", got '" + std::string(text) + "'");
   }
+}
+
+lighting::LightingStage parse_lighting_stage(std::string_view text) {
+  return parse_choice<lighting::LightingStage>(text, lighting::kLightingStageNames, "lighting stage", "stages");
 }
 
 std::vector<std::string> split_list(std::string_view text) {
@@ -342,6 +348,18 @@ const std::vector<OptionSpec>& option_table() {
            }
          }
          throw UsageError("unknown --culling '" + std::string(value) + "' (expected auto, cpu or gpu)");
+       }},
+      {"--lighting-stage", "S", kWindow | kRender,
+       "where the full-screen passes run (the deferred modes' lighting, every mode's tone map): fragment (full-screen "
+       "triangles), compute (one invocation per pixel, stored with imageStore; not with --msaa or --no-compute) or auto "
+       "(default, or the scene file's \"lighting_stage\": compute on GPUs, fragment on software renderers, with MSAA and "
+       "on the compute-free tier)",
+       [](std::string_view value, CliOptions& o) { o.lighting_stage = parse_lighting_stage(value); }},
+      {"--lighting-stage", "LIST", kCompare | kBench,
+       "measure each of these stages (fragment, compute, auto; compare: default fragment,compute, leaving out a stage the "
+       "context or --msaa cannot run; bench: default auto)",
+       [](std::string_view value, CliOptions& o) {
+         o.lighting_stages = parse_list<lighting::LightingStage>("--lighting-stage", value, "stages", parse_lighting_stage);
        }},
       {"--no-compute", "", kDrawing | kInfo,
        "run on the compute-free tier, as on WebGL2 or OpenGL 4.1: no compute shaders or storage buffers (lights, instances "
@@ -615,6 +633,16 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   if (options.command == Command::Render && options.out.empty() && options.debug_view != "list") {
     throw UsageError("render needs --out FILE.png");
   }
+  if (options.lighting_stage == lighting::LightingStage::Compute) {
+    // A combination that can never run is bad usage, refused before any context.
+    lighting::TechniqueOptions asked = options.technique_options;
+    asked.lighting_stage = *options.lighting_stage;
+    try {
+      (void)lighting::resolve_lighting_stage(asked);
+    } catch (const gfx::ResourceLimitError& e) {
+      throw UsageError(e.what());
+    }
+  }
   if (options.command == Command::Probe && scene_given) throw UsageError("probe draws no scene; '" + options.scene + "' does not apply");
   if (options.camera && options.view != 1) throw UsageError("--camera replaces the scene's views; --view does not apply");
   if (options.camera && options.command == Command::Bench && options.bench.views.size() > 0) {
@@ -646,6 +674,7 @@ WorldOptions world_options(const CliOptions& options) {
           .shadows = options.shadows,
           .occlusion_culling = options.occlusion_culling,
           .culling_device = options.culling_device,
+          .lighting_stage = options.lighting_stage,
           .system_options = options.system_options};
 }
 

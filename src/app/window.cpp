@@ -97,10 +97,11 @@ void carry_out(World& world) {
   requests = {};
 }
 
-// The last mode and light count that rendered.
+// The last mode, light count and technique options (MSAA, lighting stage...) that rendered.
 struct Settings {
   std::string mode;
   std::uint32_t lights = 0;
+  lighting::TechniqueOptions options;
 };
 
 // A frame asked for more than the driver allows: the window goes back to the
@@ -108,10 +109,12 @@ struct Settings {
 // window, a wider light radius), halves the lights. Only a refusal with no
 // lights left ends the program.
 void step_back(World& world, Settings& settled, const gfx::ResourceLimitError& e) {
-  const bool changed = world.mode() != settled.mode || world.light_count() != settled.lights;
+  lighting::TechniqueOptions& options = world.registry().resource<RendererSettings>().technique_options;
+  const bool changed = world.mode() != settled.mode || world.light_count() != settled.lights || options != settled.options;
   if (!changed && world.light_count() == 0) throw;
   if (!changed) settled.lights /= 2;
   std::fprintf(stderr, "atrium: %s\n", e.what());
+  options = settled.options;
   world.set_mode(settled.mode);
   if (world.light_count() != settled.lights) world.set_light_count(settled.lights);
   const std::string line = "refused: back to " + settled.mode + " with " + std::to_string(settled.lights) + " lights";
@@ -140,7 +143,7 @@ int run_window(const CliOptions& options) {
   say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);
   say("lights: " + std::to_string(world.light_count()) + " (press h for the keys)");
 
-  Settings settled{world.mode(), world.light_count()};
+  Settings settled{world.mode(), world.light_count(), world.registry().resource<RendererSettings>().technique_options};
   using Clock = std::chrono::steady_clock;
   auto last = Clock::now();
   auto title_time = last;
@@ -159,7 +162,7 @@ int run_window(const CliOptions& options) {
     const auto now = Clock::now();
     try {
       world.frame(std::chrono::duration<double>(now - last).count());
-      settled = {world.mode(), world.light_count()};
+      settled = {world.mode(), world.light_count(), world.registry().resource<RendererSettings>().technique_options};
     } catch (const gfx::ResourceLimitError& e) {
       step_back(world, settled, e);
       continue;

@@ -33,6 +33,13 @@
 namespace atrium {
 namespace {
 
+// The scene file's "lighting_stage" (checked when it loaded), else auto.
+lighting::LightingStage scene_lighting_stage(const assets::SceneDescription& scene) {
+  const auto& names = lighting::kLightingStageNames;
+  const auto found = std::find(names.begin(), names.end(), scene.lighting_stage);
+  return found == names.end() ? lighting::LightingStage::Automatic : static_cast<lighting::LightingStage>(found - names.begin());
+}
+
 assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetManager& assets, assets::LoadReport& report) {
   ProgressBar bar(std::filesystem::path(options.scene).filename().string());
   const assets::ProgressCallback progress = [&](std::string_view stage, std::size_t done, std::size_t total) {
@@ -56,6 +63,10 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
       if (!lighting::find_technique(scene.default_mode)) {
         throw InputError(options.scene + ": /default_mode: unknown mode '" + scene.default_mode + "' (modes: " +
                          lighting::technique_names() + ")");
+      }
+      if (!scene.lighting_stage.empty() && std::find(lighting::kLightingStageNames.begin(), lighting::kLightingStageNames.end(),
+                                                     scene.lighting_stage) == lighting::kLightingStageNames.end()) {
+        throw InputError(options.scene + ": /lighting_stage: unknown lighting stage '" + scene.lighting_stage + "' (stages: auto, fragment, compute)");
       }
       if (options.lights) assets::resize_lights(scene, *options.lights);
       return scene;
@@ -156,6 +167,7 @@ void World::start(const WorldOptions& options) {
   settings.shading = options.shading;
   settings.debug_view = options.debug_view;
   settings.technique_options = options.technique_options;
+  settings.technique_options.lighting_stage = options.lighting_stage.value_or(scene_lighting_stage(scene_));
   if (const gfx::GlFeatures& gl = gfx::gl_features(); !gl.full_tier() && !settings.technique_options.compute_free) {
     settings.technique_options.compute_free = true;
     std::fprintf(stderr, "note: %s has %s: running on the compute-free tier\n", gl.api_name().c_str(),

@@ -50,6 +50,9 @@ struct WorldOptions {
   bool occlusion_culling = true;
   // --culling: where it tests (render/culling/): CPU or GPU, chosen per driver by default.
   CullingDevice culling_device = CullingDevice::Automatic;
+  // --lighting-stage: where full-screen passes run; absent: the scene file's
+  // "lighting_stage", else auto (components/technique_options.hpp).
+  std::optional<lighting::LightingStage> lighting_stage;
   // Settings of optional systems by name (components/system_options.hpp),
   // over the scene file's.
   std::map<std::string, double> system_options;

@@ -66,6 +66,9 @@ struct SceneDescription {
   glm::vec3 background{0.0f};      // linear HDR colour behind all geometry
   float exposure = 1.0f;
   std::string default_mode = "forward";
+  // Where full-screen passes run ("fragment", "compute", "auto"); empty: not
+  // set. Checked against the names by the World, like the mode.
+  std::string lighting_stage;
   // Every instance's triangles, world space (empty: none); the World seeds
   // the SceneBounds resource with it, which the bounds system keeps current.
   Box bounds;

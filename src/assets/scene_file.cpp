@@ -151,11 +151,13 @@ void merge_report(LoadReport& report, const ModelImport& model) {
 SceneDescription read_scene(const Reader& r, const Json& root, const fs::path& path, AssetManager& assets, LoadReport& report,
                             const ProgressCallback& progress) {
   const JsonPointer top;
-  r.only_keys(root, top, {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode", "systems"});
+  r.only_keys(root, top, {"name", "models", "lights", "light_generators", "views", "ambient", "background", "exposure", "default_mode",
+                          "lighting_stage", "systems"});
   SceneDescription scene;
   scene.name = r.string_or(root, top, "name", path.stem().string());
   // The mode name is checked against the technique table by the World.
   scene.default_mode = r.string_or(root, top, "default_mode", scene.default_mode);
+  scene.lighting_stage = r.string_or(root, top, "lighting_stage", scene.lighting_stage);
 
   std::map<std::string, ModelImport> imported;  // canonical path -> import, so repeats share one asset
   std::optional<ModelImport> builtin;

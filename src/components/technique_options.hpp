@@ -1,5 +1,6 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
-// --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa, --no-compute). Plain data, kept apart from the GL-facing technique interface so
+// --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa, --no-compute,
+// --lighting-stage). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -30,6 +31,17 @@ inline constexpr std::array<std::string_view, 2> kClusterBoundsNames{"pixels", "
 enum class ZSlicing { Log, Uniform, PlainLog };
 inline constexpr std::array<std::string_view, 3> kZSlicingNames{"log", "uniform", "plain-log"};
 
+// Where the full-screen passes of a frame run (--lighting-stage): the lighting
+// passes of deferred, deferred-radius, tiled-deferred and clustered-deferred,
+// and the tone map of every mode. Fragment: full-screen triangles; Compute:
+// one invocation per pixel, stored with imageStore (render/lighting/lighting_pass.hpp).
+// Automatic takes compute on hardware GPUs, where it reaches every SM (on an
+// H200 fragment shaders run on 4 of its 132: docs/benchmarks.md), and the
+// fragment stage on software renderers, where it measured faster, with MSAA,
+// which the compute stage does not shade per sample, and on the compute-free tier.
+enum class LightingStage { Automatic, Fragment, Compute };
+inline constexpr std::array<std::string_view, 3> kLightingStageNames{"auto", "fragment", "compute"};
+
 struct TechniqueOptions {
   glm::uvec3 cluster_grid{16, 9, 32};
   ClusterBounds cluster_bounds = ClusterBounds::Pixels;
@@ -48,6 +60,7 @@ struct TechniqueOptions {
   // (render/storage_free.hpp), draws issued from the CPU, no occlusion
   // culling; modes that need compute say so.
   bool compute_free = false;
+  LightingStage lighting_stage = LightingStage::Automatic;
   bool operator==(const TechniqueOptions&) const = default;
 };
 

@@ -39,7 +39,9 @@ GLbitfield barrier_for(Access access, ResourceKind kind) {
     case Access::Storage: return kind == ResourceKind::Buffer ? GL_SHADER_STORAGE_BARRIER_BIT : GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
     case Access::Indirect: return GL_COMMAND_BARRIER_BIT;
     case Access::Uniform: return GL_UNIFORM_BARRIER_BIT;
-    case Access::Transfer: return kind == ResourceKind::Buffer ? GL_BUFFER_UPDATE_BARRIER_BIT : GL_TEXTURE_UPDATE_BARRIER_BIT;
+    // Texture transfers go through framebuffers too (blits, clears, glReadPixels).
+    case Access::Transfer:
+      return kind == ResourceKind::Buffer ? GL_BUFFER_UPDATE_BARRIER_BIT : GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT;
   }
   return 0;
 }

@@ -8,6 +8,7 @@
 #include "components/frame_resources.hpp"
 #include "components/visibility.hpp"
 #include "gfx/depth.hpp"
+#include "gfx/gl_features.hpp"
 #include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
 #include "render/contributors.hpp"
@@ -15,6 +16,7 @@
 #include "render/storage_free.hpp"
 #include "render/debug/debug_views.hpp"
 #include "render/frame/frame_uniforms.hpp"
+#include "render/lighting/lighting_pass.hpp"
 #include "render/lighting/shading_model.hpp"
 
 namespace atrium {
@@ -239,12 +241,14 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                   " on the compute-free tier: it counts with image atomics, which this tier lacks");
   }
   require_msaa(settings.technique_options.msaa);
+  const lighting::LightingStage stage = lighting::resolve_lighting_stage(settings.technique_options);
   std::vector<gfx::ShaderDefine> globals;
   for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, counting_lights, counting_fragments, split_lighting}, globals);
   if (globals != globals_ || settings.technique_options != technique_options_) {
     gpu_.shaders().set_global_defines(globals);
     globals_ = std::move(globals);
     tonemap_ = &gpu_.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"});
+    tonemap_compute_ = nullptr;
     // Every target is remade with the new sample count.
     if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
     technique_options_ = settings.technique_options;
@@ -279,6 +283,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   frame_stats_ = {};
   frame_stats_.lights = lights.count;
   frame_stats_.culled_on_gpu = culling_on_gpu_;
+  frame_stats_.lighting_stage = stage;
   if (const auto* culling = registry.try_resource<CullingStats>()) {
     frame_stats_.objects = culling->objects;
     frame_stats_.objects_drawn = culling->objects_visible;
@@ -337,7 +342,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                      view.view,
                                      view.projection,
                                      view.near_plane,
-                                     view.far_plane};
+                                     view.far_plane,
+                                     split_lighting_ ? light_sums[0] : render::ResourceId{},
+                                     split_lighting_ ? light_sums[1] : render::ResourceId{}};
   const lighting::FrameTargets frame_targets = targets();
 
   if (culling_on_gpu_) {
@@ -376,10 +383,18 @@ void MeshRenderer::render(ecs::Registry& registry) {
     for (const RenderContributor& contributor : contributors->after_lighting) contributor(graph_, registry, frame, frame_targets);
   }
 
+  const bool compute_tonemap = stage == lighting::LightingStage::Compute;
   graph_.add_pass("tonemap", [&](render::PassBuilder& pass) {
     pass.read(hdr, render::Access::Sampled);
-    pass.write(output, render::Access::Attachment);
-  }, [&](const render::PassResources&) {
+    pass.write(output, compute_tonemap ? render::Access::Storage : render::Access::Attachment);
+  }, [&](const render::PassResources& res) {
+    if (compute_tonemap) {
+      if (!tonemap_compute_) tonemap_compute_ = &gpu_.shaders().get({"post/tonemap.comp"});
+      glBindTextureUnit(0, res.texture(hdr));
+      glBindImageTexture(lighting::kDisplayImageUnit, res.texture(output), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+      lighting::dispatch_per_pixel(*tonemap_compute_, size_);
+      return;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
     glViewport(0, 0, size_.x, size_.y);
     glDisable(GL_DEPTH_TEST);
@@ -387,7 +402,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
     glDisable(GL_STENCIL_TEST);
     glDisable(GL_CULL_FACE);
     tonemap_->use();
-    glBindTextureUnit(0, hdr_color_.id());
+    glBindTextureUnit(0, res.texture(hdr));
     glBindVertexArray(empty_vertex_array_.id());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
@@ -490,9 +505,16 @@ void MeshRenderer::take_reports(FrameStats& stats) {
   stats.light_list_overflows = lists.overflowed_frames;
 }
 
+// Read-backs come after the frame: the compute stage stored its targets with
+// imageStore, which copies out of a texture see only after a barrier.
+void MeshRenderer::make_shader_writes_readable() const {
+  if (gfx::gl_features().memory_barriers) glMemoryBarrier(GL_TEXTURE_UPDATE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
 assets::Image MeshRenderer::read_output() const {
   assets::Image image{size_.x, size_.y, std::vector<std::uint8_t>(static_cast<std::size_t>(size_.x) * size_.y * 4)};
   if (image.rgba.empty()) return image;
+  make_shader_writes_readable();
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   gfx::read_texture(output_color_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(image.rgba.size()),
                     image.rgba.data());
@@ -542,6 +564,7 @@ std::vector<glm::vec4> MeshRenderer::read_hdr(HdrTarget target) const {
                          : target == HdrTarget::DiffuseLight ? diffuse_light_.id()
                                                              : specular_light_.id();
   if (texture == 0) return {};
+  make_shader_writes_readable();
   std::vector<glm::vec4> texels(static_cast<std::size_t>(size_.x) * static_cast<std::size_t>(size_.y));
   const bool multisampled = technique_options_.msaa > 1;
   const gfx::Texture resolved = multisampled ? resolve(texture, GL_RGBA16F, false) : gfx::Texture{};

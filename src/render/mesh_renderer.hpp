@@ -37,6 +37,8 @@ struct FrameStats {
   std::size_t triangles_drawn = 0;  // one geometry pass submits, after frustum and occlusion culling
   std::size_t triangles_occluded = 0;  // in view, but hidden behind what the first pass drew
   bool culled_on_gpu = false;       // occlusion culling ran on the GPU: the two counts above arrive a frame or more late
+  // Where the full-screen passes ran (--lighting-stage resolved): Fragment or Compute.
+  lighting::LightingStage lighting_stage = lighting::LightingStage::Fragment;
   std::size_t objects = 0;          // entities with a mesh
   std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
@@ -105,6 +107,7 @@ class MeshRenderer {
  private:
   // A single-sample copy of a multisampled target, for reading back.
   [[nodiscard]] gfx::Texture resolve(GLuint texture, GLenum format, bool depth) const;
+  void make_shader_writes_readable() const;
   void resize(glm::ivec2 size);
   // Makes the diffuse and specular light targets and their framebuffer while
   // split_lighting_ is on, drops them while it is off.
@@ -164,6 +167,7 @@ class MeshRenderer {
   gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
   gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
+  gfx::ShaderProgram* tonemap_compute_ = nullptr;  // the compute stage's, fetched on first use after such a change
   FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
   FrameStats frame_stats_;  // the frame being drawn
   // The heatmap's and the fragments view's newest averages (they arrive a

@@ -124,6 +124,7 @@ void Overlay::statistics(ecs::Registry& registry) {
     ImGui::Text("%zu triangles in view hidden by depth, not drawn (tested on the %s)", stats.triangles_occluded,
                 stats.culled_on_gpu ? "GPU" : "CPU");
   }
+  ImGui::Text("full-screen passes in the %s stage", std::string(lighting::kLightingStageNames[static_cast<std::size_t>(stats.lighting_stage)]).c_str());
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
   }
@@ -184,6 +185,13 @@ void Overlay::controls(ecs::Registry& registry) {
   auto& slicing = settings.technique_options.z_slicing;
   if (combo("z slicing", std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]), slicings, chosen)) {
     slicing = static_cast<lighting::ZSlicing>(std::find(slicings.begin(), slicings.end(), chosen) - slicings.begin());
+  }
+  // Where the full-screen passes run: the same pictures; the pass table shows what each stage costs.
+  std::vector<std::string> stages;
+  for (const auto name : lighting::kLightingStageNames) stages.emplace_back(name);
+  auto& stage = settings.technique_options.lighting_stage;
+  if (combo("lighting stage", std::string(lighting::kLightingStageNames[static_cast<std::size_t>(stage)]), stages, chosen)) {
+    stage = static_cast<lighting::LightingStage>(std::find(stages.begin(), stages.end(), chosen) - stages.begin());
   }
   std::vector<std::string> sample_counts{"off"};
   for (int samples = 2; samples <= max_msaa_samples_; samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");

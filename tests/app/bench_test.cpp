@@ -12,6 +12,7 @@
 #include "assets/image.hpp"
 #include "assets/mesh_builder.hpp"
 #include "components/frame_resources.hpp"
+#include "gfx/limits.hpp"
 #include "support/gl_test.hpp"
 
 namespace atrium {
@@ -50,7 +51,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 27u);
+  ASSERT_EQ(header.size(), 28u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -63,6 +64,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[24], "gpu_ms");
   EXPECT_EQ(header[25], "gpu_waits");
   EXPECT_EQ(header[26], "skipped");
+  EXPECT_EQ(header[27], "lighting_stage");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -103,6 +105,40 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   fs::remove_all(folder);
 }
 
+// --lighting-stage LIST: each mode is measured in each stage, named with the
+// stage asked for; the CSV's last column says the stage it ran in (auto takes
+// the fragment stage on llvmpipe), and a stage the frame cannot run is a
+// refused row, not a failed sweep.
+TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_stage_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  auto run = [&](const std::string& options) {
+    const std::string command = std::string(ATRIUM_BINARY) + " bench --modes tiled-deferred --lights 40 --views 1 --size 32x18 --frames 1"
+                                " --warmup 0 " + options + " --csv " + (folder / "s.csv").string() + " > " + (folder / "stdout.txt").string();
+    EXPECT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+    std::istringstream csv(read_text(folder / "s.csv"));
+    std::string line;
+    std::getline(csv, line);
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage")) << line;
+    std::vector<std::vector<std::string>> rows;
+    while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+    return rows;
+  };
+  const auto rows = run("--lighting-stage fragment,compute,auto");
+  ASSERT_EQ(rows.size(), 3u);
+  EXPECT_EQ(rows[0].back(), "fragment");
+  EXPECT_EQ(rows[1].back(), "compute");
+  EXPECT_EQ(rows[2].back(), gfx::is_software_renderer() ? "fragment" : "compute");
+  const std::string md = read_text(folder / "stdout.txt");
+  EXPECT_NE(md.find("| lights | tiled-deferred/fragment | tiled-deferred/compute | tiled-deferred/auto |"), std::string::npos) << md;
+  const auto refused = run("--msaa 2 --lighting-stage fragment,compute");
+  ASSERT_EQ(refused.size(), 2u);
+  EXPECT_EQ(refused[0][17], "");
+  EXPECT_NE(refused[1][17].find("the compute stage does not shade MSAA edges per sample"), std::string::npos) << refused[1][17];
+  EXPECT_EQ(refused[1].back(), "") << "a refused run has no stage";
+  fs::remove_all(folder);
+}
+
 // --z-slicing LIST: each clustered mode is measured once per scheme and named
 // with it; a mode without a cluster grid is measured once.
 TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
@@ -119,7 +155,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 27u) << line;
+    ASSERT_EQ(f.size(), 28u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     EXPECT_NE(f[11], "-") << "lights evaluated per pixel, counted under each scheme";
   }

@@ -125,7 +125,8 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--size", "32x18"},          {"--out", "x.png"},              {"--frames", "2"},
       {"--warmup", "1"},            {"--frame-limit", "250"},        {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
-      {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"}};
+      {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"},
+      {"--lighting-stage", "compute"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench, Command::Probe}) {
     std::istringstream help(help_text(command));
     int options = 0;

@@ -110,6 +110,32 @@ TEST_F(SponzaScene, EveryModeDrawsForwardsPictureFromEveryView) {
   });
 }
 
+// The compute stage (--lighting-stage compute) on the real scene: its alpha-tested
+// foliage, normal maps and blended surfaces light as in the fragment stage.
+TEST_F(SponzaScene, TheComputeStageDrawsTheFragmentStagesPicture) {
+  World world(options());
+  auto& stage = world.registry().resource<RendererSettings>().technique_options.lighting_stage;
+  for (int view = 1; view <= 5; ++view) {
+    world.set_view(view);
+    world.set_mode("forward");
+    stage = lighting::LightingStage::Fragment;
+    world.frame(0.0);
+    const assets::Image reference = world.renderer().read_output();
+    for (const char* mode : {"deferred-radius", "tiled-deferred", "clustered-deferred"}) {
+      world.set_mode(mode);
+      stage = lighting::LightingStage::Fragment;
+      world.frame(0.0);
+      const assets::Image fragment = world.renderer().read_output();
+      stage = lighting::LightingStage::Compute;
+      world.frame(0.0);
+      const assets::Image compute = world.renderer().read_output();
+      EXPECT_EQ(world.renderer().stats().lighting_stage, lighting::LightingStage::Compute);
+      EXPECT_GE(assets::psnr(fragment, compute), 50.0) << mode << " view " << view;
+      EXPECT_GE(assets::psnr(reference, compute), kMinimumPsnr) << mode << " view " << view;
+    }
+  }
+}
+
 // The stored views shade within a small factor of each other; against, inside
 // and just behind walls, a frame shades no more fragments than the costliest
 // stored view, within a small factor, and finishes: Sponza's view 1 once

@@ -2,8 +2,8 @@
 # scripts/gpu-kit.sh packs this build's atrium into a kit, and the kit's
 # run.sh --quick runs from that folder alone (an environment emptied of
 # everything but PATH, so the libraries come from the kit): every step passes,
-# every mode agrees with forward on both scenes, and OUT holds the files the
-# kit promises, no more than 8.
+# every mode agrees with forward on both scenes in both lighting stages, each
+# mode is benched in both, and OUT holds the files the kit promises, no more than 8.
 #   gpu_kit_test.sh ATRIUM_BINARY WORK_DIR
 set -euo pipefail
 binary=$1 work=$2
@@ -34,11 +34,14 @@ env -i PATH=/usr/bin:/bin HOME="$work" "$work/kit/run.sh" "$work/out" --quick 2>
 report=$work/out/report.md
 [ "$(grep -c "every mode is within 40 dB PSNR of forward" "$report")" = 2 ] || fail "both scenes' PSNR tables: $(cat "$report")"
 grep -q "steps that failed: none" "$report" || fail "a step failed: $(cat "$report")"
-grep -q "^| lights | forward | deferred |" "$report" || fail "no bench table in the report"
+grep -q "^| lights | forward/fragment | deferred/fragment |" "$report" || fail "no bench table of both stages in the report"
+grep -q "^compute .* ms, .* Gflop/s" "$report" || fail "no stage probe in the report"
+[ "$(grep -c "^## Clustered and tiled lists, compute stage" "$report")" = 3 ] || fail "not every cluster grid measured"
 for scene in atrium sponza shadows; do
   csv=$work/out/bench-$scene.csv
   [ -s "$csv" ] || fail "$csv is missing"
-  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped$" || fail "$csv has no gpu_waits column"
+  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped,lighting_stage$" || fail "$csv has no lighting_stage column"
+  grep -q ",compute$" "$csv" || fail "$csv has no run in the compute stage"
   # Every mode in the technique table has a row.
   for mode in forward deferred deferred-radius light-volumes tiled-deferred clustered-forward clustered-deferred \
     light-volumes-instanced light-prepass; do

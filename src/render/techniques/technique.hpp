@@ -51,6 +51,9 @@ struct FrameContext {
   glm::mat4 projection{1.0f};
   float near_plane = 0.05f;
   float far_plane = 200.0f;
+  // With the split on (TechniqueOptions::split_lighting), the diffuse and
+  // specular light sums a deferred lighting pass writes; invalid otherwise.
+  render::ResourceId diffuse_light{}, specular_light{};
 };
 
 // The frame's named targets, owned by the MeshRenderer.

@@ -40,8 +40,9 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
                                   prepass_defines(deferred, options.msaa, {}))),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
                                        prepass_defines(deferred, options.msaa, {{"POSITION_ONLY"}}))),
-      shading_(deferred ? SampleRatePrograms(gpu.shaders(), {"post/fullscreen.vert", "clustered/lighting.frag"}, {}, options.msaa)
-                        : SampleRatePrograms(gpu.shaders(), {"common/mesh.vert", "clustered/shade.frag"}, {}, 1)),
+      lighting_(deferred ? std::optional<LightingPass>(std::in_place, gpu.shaders(), "clustered/lighting", std::vector<gfx::ShaderDefine>{}, options)
+                         : std::nullopt),
+      shading_(deferred ? nullptr : &gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
@@ -106,10 +107,10 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
     grid_.assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   });
   graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
-    if (deferred_) gbuffer_.read_targets(pass);
+    if (deferred_) lighting_->declare(pass, gbuffer_, frame);
+    else pass.write(frame.scene_color, render::Access::Attachment);
     pass.read(frame.light_buffer, render::Access::Storage);
     pass.read(lists, render::Access::Storage);
-    pass.write(frame.scene_color, render::Access::Attachment);
   }, [this, &frame, &targets](const render::PassResources& res) { shade(res, frame, targets); });
   // Blended surfaces are shaded forward+ from the same lists: their clusters
   // were marked with the opaque pixels'.
@@ -145,7 +146,7 @@ void ClusteredTechnique::bind_lists() const {
 void ClusteredTechnique::shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
   bind_lists();
   if (deferred_) {
-    gbuffer_.draw_fullscreen(res, shading_, targets);
+    lighting_->run(res, gbuffer_, frame, targets);
     return;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
@@ -154,7 +155,7 @@ void ClusteredTechnique::shade(const render::PassResources& res, const FrameCont
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloserOrEqual);
   glDepthMask(GL_FALSE);
-  shading_.per_pixel().use();
+  shading_->use();
   draw_items(frame.draws.opaque);
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);

@@ -2,7 +2,8 @@
 // frustum is cut into a 3D grid of clusters; a compute pass assigns each light
 // to the clusters its sphere touches; shading then loops over the pixel's
 // cluster's lights only. Forward+ runs a depth pre-pass and shades each visible
-// fragment once; deferred shades from the G-buffer. By default a cluster's lights
+// fragment once; deferred shades from the G-buffer (fragment or compute,
+// --lighting-stage). By default a cluster's lights
 // are those touching the box of the pixels it holds this frame (read from the
 // positions shading lights and from blended fragments); --cluster-bounds grid tests its whole
 // frustum slice instead. Blended surfaces are shaded forward+ from the same lists.
@@ -14,6 +15,7 @@
 
 #include "render/lighting/cluster_grid.hpp"
 #include "render/lighting/gbuffer.hpp"
+#include "render/lighting/lighting_pass.hpp"
 #include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 
@@ -54,7 +56,8 @@ class ClusteredTechnique final : public LightingTechnique {
   render::ListTextures cpu_lists_;              // the compute-free tier's
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
   gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
-  SampleRatePrograms shading_;    // deferred: full-screen lighting; forward+: forward shading (per pixel)
+  std::optional<LightingPass> lighting_;  // deferred: the full-screen lighting (fragment or compute)
+  gfx::ShaderProgram* shading_;           // forward+: forward shading of opaque surfaces
   gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
   GBuffer gbuffer_;
   // Forward+ with MSAA: this frame's pre-pass depth at pixel centres (R32F,

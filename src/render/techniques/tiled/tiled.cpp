@@ -14,7 +14,7 @@ TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& o
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"})),
       assign_(compute_free_ ? std::nullopt : std::optional<LightScatterPrograms>(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp"))),
-      lighting_(gpu.shaders(), {"post/fullscreen.vert", "tiled/lighting.frag"}, {}, options.msaa),
+      lighting_(gpu.shaders(), "tiled/lighting", {}, options),
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       blended_bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
@@ -53,12 +53,11 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
     graph.add_pass("light culling", [&](render::PassBuilder& pass) { pass.write(lists, render::Access::Transfer); },
                    [this, &frame, &targets](const render::PassResources&) { bin_on_cpu(frame, targets); });
     graph.add_pass("lighting", [&](render::PassBuilder& pass) {
-      gbuffer_.read_targets(pass);
+      lighting_.declare(pass, gbuffer_, frame);
       pass.read(lists, render::Access::Sampled);
-      pass.write(frame.scene_color, render::Access::Attachment);
-    }, [this, &targets](const render::PassResources& res) {
+    }, [this, &frame, &targets](const render::PassResources& res) {
       cpu_lists_.bind();
-      gbuffer_.draw_fullscreen(res, lighting_, targets);
+      lighting_.run(res, gbuffer_, frame, targets);
     });
     add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Sampled); },
                           [this] { cpu_lists_.bind(); });
@@ -75,13 +74,12 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
     assign_lights(*list_, *bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   });
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
-    gbuffer_.read_targets(pass);
+    lighting_.declare(pass, gbuffer_, frame);
     pass.read(frame.light_buffer, render::Access::Storage);
     pass.read(lists, render::Access::Storage);
-    pass.write(frame.scene_color, render::Access::Attachment);
-  }, [this, &targets](const render::PassResources& res) {
+  }, [this, &frame, &targets](const render::PassResources& res) {
     list_->bind();
-    gbuffer_.draw_fullscreen(res, lighting_, targets);
+    lighting_.run(res, gbuffer_, frame, targets);
   });
   blended_listed_ = !frame.draws.blended.empty();
   if (!blended_listed_) return;

@@ -2,7 +2,8 @@
 // compute pass over 16x16-pixel tiles takes each tile's frustum and depth
 // bounds from the G-buffer's positions (the points the lighting pass shades),
 // then each light writes itself into the lists of the tiles it touches; the
-// lighting pass shades each pixel with its tile's lights.
+// lighting pass (fragment or compute, --lighting-stage) shades each pixel with
+// its tile's lights.
 // Blended surfaces get lists of their own, bounded by the depths of the glass in
 // front of each tile's opaque surfaces, and are shaded forward from them.
 // On the compute-free tier the lists come from the CPU (cpu_light_lists.hpp:
@@ -14,6 +15,7 @@
 #include <optional>
 
 #include "render/lighting/gbuffer.hpp"
+#include "render/lighting/lighting_pass.hpp"
 #include "render/lighting/light_index_list.hpp"
 #include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
@@ -57,7 +59,7 @@ class TiledTechnique final : public LightingTechnique {
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram* bounds_;          // tiled/tile_bounds.comp, from the G-buffer (nullptr on the compute-free tier)
   std::optional<LightScatterPrograms> assign_;
-  SampleRatePrograms lighting_;
+  LightingPass lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
   gfx::ShaderProgram* blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
   gfx::ShaderProgram& blended_;         // forward shading from the blended lists

@@ -1,0 +1,67 @@
+// The full-screen lighting pass of the deferred techniques (deferred,
+// deferred-radius, tiled-deferred, clustered-deferred), in the stage the frame
+// runs it in (--lighting-stage). It reads the G-buffer and the light data and
+// writes the lit HDR colour and, with the split on, the diffuse and specular
+// light sums. The fragment stage draws a full-screen triangle per sample rate
+// (sample_rate.hpp); the compute stage runs one invocation per pixel and
+// stores each result with imageStore: on GPUs whose graphics pipeline reaches
+// few of their cores (an H200's fragment shaders run on 4 of 132 SMs) the
+// same shading runs on all of them. One GLSL file serves both stages
+// (shaders/common/lighting_main.glsl).
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "components/technique_options.hpp"
+#include "gfx/shader_library.hpp"
+#include "render/frame_graph.hpp"
+#include "render/lighting/gbuffer.hpp"
+#include "render/lighting/sample_rate.hpp"
+#include "render/techniques/technique.hpp"
+
+namespace atrium::lighting {
+
+// Image units of a compute lighting pass's targets (shaders/common/lighting_targets.glsl):
+// the heatmap's light counts take unit 0, the fragment counts unit 1.
+inline constexpr GLuint kLitColorImageUnit = 2;
+inline constexpr GLuint kDiffuseLightImageUnit = 3;
+inline constexpr GLuint kSpecularLightImageUnit = 4;
+// The tone map's output image in the compute stage (shaders/post/tonemap.comp).
+inline constexpr GLuint kDisplayImageUnit = 2;
+
+// The stage `options` ask for, Automatic resolved for the current context
+// (never Automatic). Throws gfx::ResourceLimitError naming what is missing
+// when the compute stage is asked for where it cannot run: the compute-free
+// tier, or MSAA (the compute stage does not shade edges per sample).
+[[nodiscard]] LightingStage resolve_lighting_stage(const TechniqueOptions& options);
+[[nodiscard]] std::string_view lighting_stage_name(LightingStage stage);
+
+// Runs a compute program over every pixel of `size` in the program's own work
+// group size (GL_COMPUTE_WORK_GROUP_SIZE): the shader's layout is the one fact.
+void dispatch_per_pixel(gfx::ShaderProgram& program, glm::ivec2 size);
+
+class LightingPass {
+ public:
+  // `file` names the pass's GLSL without its stage's extension
+  // ("tiled/lighting": tiled/lighting.frag or tiled/lighting.comp).
+  LightingPass(gfx::ShaderLibrary& shaders, const std::string& file, std::vector<gfx::ShaderDefine> defines,
+               const TechniqueOptions& options);
+
+  [[nodiscard]] LightingStage stage() const { return compute_ ? LightingStage::Compute : LightingStage::Fragment; }
+  // Calls `f` with each program (to set the same uniforms on all).
+  void each(const std::function<void(gfx::ShaderProgram&)>& f) const;
+  // Declares what the pass reads (the G-buffer; its other inputs are the
+  // technique's) and the lit targets it writes, as the stage reaches them.
+  void declare(render::PassBuilder& pass, const GBuffer& gbuffer, const FrameContext& frame) const;
+  // Shades every pixel of the lit targets from the G-buffer.
+  void run(const render::PassResources& res, const GBuffer& gbuffer, const FrameContext& frame, const FrameTargets& targets) const;
+
+ private:
+  std::optional<SampleRatePrograms> fragment_;
+  gfx::ShaderProgram* compute_ = nullptr;
+};
+
+}  // namespace atrium::lighting
