@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
 #include <optional>
 
@@ -47,20 +48,23 @@ std::optional<std::string> light_problem(const Transform& transform, const Light
 
 }  // namespace
 
-GatheredLights gather_lights(ecs::Registry& registry) {
-  GatheredLights gathered;
-  gathered.lights.reserve(registry.count<LightColor>());
-  registry.view<Transform, LightColor>().each([&](ecs::Entity entity, const Transform& transform, const LightColor& light) {
+namespace {
+
+// Calls light(entity, gpu) for each drawable light entity in pool order and
+// rejected(entity, problem) for each that is not.
+template <typename Light, typename Rejected>
+void for_each_light(ecs::Registry& registry, const Light& light, const Rejected& rejected) {
+  registry.view<Transform, LightColor>().each([&](ecs::Entity entity, const Transform& transform, const LightColor& color) {
     const LightRadius* radius = registry.try_get<LightRadius>(entity);
     const SpotCone* cone = registry.try_get<SpotCone>(entity);
     const bool directional = registry.has<DirectionalLight>(entity);
-    if (auto problem = light_problem(transform, light, radius, directional)) {
-      gathered.rejected.push_back({entity, std::move(*problem)});
+    if (auto problem = light_problem(transform, color, radius, directional)) {
+      rejected(entity, std::move(*problem));
       return;
     }
     GpuLightKind kind = directional ? GpuLightKind::Directional : cone ? GpuLightKind::Spot : GpuLightKind::Point;
-    const float r = directional ? 0.0f : radius ? radius->radius : lighting::light_radius_from_intensity(light.color, light.intensity);
-    GpuLight gpu{glm::vec4(transform.position, r), glm::vec4(light.color * light.intensity, static_cast<float>(kind)),
+    const float r = directional ? 0.0f : radius ? radius->radius : lighting::light_radius_from_intensity(color.color, color.intensity);
+    GpuLight gpu{glm::vec4(transform.position, r), glm::vec4(color.color * color.intensity, static_cast<float>(kind)),
                  glm::vec4(transform.rotation * glm::vec3(0.0f, 0.0f, -1.0f), 0.0f), glm::vec4(0.0f)};
     if (cone) {
       // glTF's smooth spot falloff: clamp(cos * scale + offset, 0, 1)^2.
@@ -68,9 +72,53 @@ GatheredLights gather_lights(ecs::Registry& registry) {
       const float scale = 1.0f / std::max(cos_inner - cos_outer, 1e-4f);
       gpu.spot = glm::vec4(scale, -cos_outer * scale, 0.0f, 0.0f);
     }
-    gathered.lights.push_back(gpu);
-    gathered.entities.push_back(entity);
+    light(entity, gpu);
   });
+}
+
+// Lights apart by fewer than this many unchanged ones are sent in one upload:
+// a call costs more than a few hundred bytes of copying.
+constexpr std::size_t kRunGap = 64;
+
+// Overwrites the buffer's staging copy with this frame's lights where they
+// differ and returns the runs of indices that changed: the staging copy is
+// what the GPU buffer holds (the shadow atlas keeps its patches in both), so
+// only those runs need sending. A frame whose lights hold still sends nothing.
+std::vector<LightRun> refresh_staging(ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
+  std::vector<LightRun> runs;
+  std::size_t n = 0;
+  const auto changed = [&](std::size_t i) {
+    if (!runs.empty() && i <= runs.back().end + kRunGap) runs.back().end = i + 1;
+    else runs.push_back({i, i + 1});
+  };
+  for_each_light(registry, [&](ecs::Entity entity, const GpuLight& light) {
+    if (n == state.staging.size()) {
+      state.staging.push_back(light);
+      state.entities.push_back(entity);
+      changed(n);
+    } else {
+      if (std::memcmp(&state.staging[n], &light, sizeof light) != 0) {
+        state.staging[n] = light;
+        changed(n);
+      }
+      state.entities[n] = entity;
+    }
+    ++n;
+  }, [&](ecs::Entity entity, std::string problem) { rejected.push_back({entity, std::move(problem)}); });
+  state.staging.resize(n);
+  state.entities.resize(n);
+  return runs;
+}
+
+}  // namespace
+
+GatheredLights gather_lights(ecs::Registry& registry) {
+  GatheredLights gathered;
+  gathered.lights.reserve(registry.count<LightColor>());
+  for_each_light(registry, [&](ecs::Entity entity, const GpuLight& light) {
+    gathered.lights.push_back(light);
+    gathered.entities.push_back(entity);
+  }, [&](ecs::Entity entity, std::string problem) { gathered.rejected.push_back({entity, std::move(problem)}); });
   return gathered;
 }
 
@@ -78,14 +126,13 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
   scheduler.add(ecs::Phase::Render, "light_buffer", [](ecs::Registry& registry) {
     LightBuffer* state = registry.try_resource<LightBuffer>();
     if (!state) state = &registry.set_resource<LightBuffer>();
-    GatheredLights gathered = gather_lights(registry);
-    state->staging = std::move(gathered.lights);
-    state->entities = std::move(gathered.entities);
-    state->rejected = static_cast<std::uint32_t>(gathered.rejected.size());
-    for (const RejectedLight& rejected : gathered.rejected) {
-      if (!state->warned.insert(rejected.entity).second) continue;
+    std::vector<RejectedLight> rejected;
+    std::vector<LightRun> runs = refresh_staging(registry, *state, rejected);
+    state->rejected = static_cast<std::uint32_t>(rejected.size());
+    for (const RejectedLight& light : rejected) {
+      if (!state->warned.insert(light.entity).second) continue;
       std::fprintf(stderr, "warning: light entity %u left out: %s (a system wrote it; lights need a finite position, "
-                   "a non-negative colour and intensity and a positive radius)\n", rejected.entity.index, rejected.problem.c_str());
+                   "a non-negative colour and intensity and a positive radius)\n", light.entity.index, light.problem.c_str());
     }
     state->count = static_cast<std::uint32_t>(state->staging.size());
     const std::size_t needed = std::max<std::size_t>(state->staging.size(), 1);
@@ -95,6 +142,9 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
         gfx::gl_features().storage_buffers ? gfx::storage_block_limit() : std::numeric_limits<std::uint64_t>::max();
     const std::size_t limit = static_cast<std::size_t>(std::min<std::uint64_t>(block / sizeof(GpuLight), std::numeric_limits<std::uint32_t>::max()));
     if (needed > limit) {
+      // The staging copy no longer matches the buffer: the next frame sends it whole.
+      state->buffer = {};
+      state->capacity = 0;
       throw gfx::ResourceLimitError(std::to_string(state->staging.size()) + " lights need a " +
                                     format_bytes(static_cast<double>(needed * sizeof(GpuLight))) + " light buffer, more than one storage buffer may hold here (" +
                                     format_bytes(static_cast<double>(block)) + ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use fewer lights");
@@ -103,10 +153,14 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
       state->capacity = std::min(std::max(needed, state->capacity * 2), limit);
       state->buffer = gfx::create_buffer();
       glNamedBufferData(state->buffer.id(), static_cast<GLsizeiptr>(state->capacity * sizeof(GpuLight)), nullptr, GL_DYNAMIC_DRAW);
+      runs = {{0, state->staging.size()}};
     }
-    if (!state->staging.empty()) {
-      glNamedBufferSubData(state->buffer.id(), 0, static_cast<GLsizeiptr>(state->staging.size() * sizeof(GpuLight)),
-                           state->staging.data());
+    state->uploaded = 0;
+    for (const LightRun& run : runs) {
+      if (run.end <= run.begin) continue;
+      glNamedBufferSubData(state->buffer.id(), static_cast<GLintptr>(run.begin * sizeof(GpuLight)),
+                           static_cast<GLsizeiptr>((run.end - run.begin) * sizeof(GpuLight)), &state->staging[run.begin]);
+      state->uploaded += static_cast<std::uint32_t>(run.end - run.begin);
     }
   });
 }

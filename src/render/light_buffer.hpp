@@ -1,6 +1,7 @@
 // The LightBuffer system (Render phase, before the MeshRenderer): mirrors every
 // light entity (Transform + LightColor; optional LightRadius, SpotCone,
-// DirectionalLight) into one shader storage buffer each frame. The buffer grows
+// DirectionalLight) into one shader storage buffer each frame, sending only the
+// lights that changed since the last frame. The buffer grows
 // geometrically up to what one storage buffer may hold (gfx::storage_block_limit),
 // beyond which the frame is refused with gfx::ResourceLimitError. Lights whose
 // values cannot be drawn (NaN, infinite, negative) are left out with a warning.
@@ -39,10 +40,18 @@ static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights
 // ShadowAtlas moves the shadowed lights to the front.
 [[nodiscard]] std::uint32_t shadowed_light_count(std::span<const GpuLight> lights);
 
+// Lights [begin, end) of the buffer.
+struct LightRun {
+  std::size_t begin = 0, end = 0;
+};
+
 struct LightBuffer {
   gfx::Buffer buffer;
   std::size_t capacity = 0;  // lights the buffer can hold
   std::uint32_t count = 0;   // lights written this frame
+  std::uint32_t uploaded = 0;  // of which sent to the GPU this frame: those that changed
+  // What the buffer holds, kept across frames so that a frame sends only the
+  // lights that changed (and reuses this memory rather than allocate anew).
   std::vector<GpuLight> staging;
   std::vector<ecs::Entity> entities;  // staging[i] is the light of entities[i]
   std::uint32_t rejected = 0;  // light entities left out this frame

@@ -53,6 +53,35 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   EXPECT_EQ(glm::vec3(after[0].position_radius), glm::vec3(7, 8, 9));
 }
 
+// A frame sends only the lights that changed: none while they hold still (the
+// bench's frames, a paused animation), one run for one moved light; what the
+// GPU holds is every light all the same.
+TEST_F(LightBufferSystem, SendsOnlyTheLightsThatChanged) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  register_light_buffer(scheduler);
+  std::vector<ecs::Entity> lights;
+  for (int i = 0; i < 1000; ++i) lights.push_back(add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f));
+  scheduler.run_frame(registry, 0.0);
+  const LightBuffer& buffer = registry.resource<LightBuffer>();
+  EXPECT_EQ(buffer.uploaded, 1000u);
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 0u) << "lights that hold still are not sent again";
+  registry.get<Transform>(lights[500]).position.y = 3.0f;
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 1u);
+  EXPECT_EQ(read_back(buffer)[500].position_radius.y, 3.0f);
+  // Two lights far apart go as two runs, not everything between them.
+  registry.get<LightColor>(lights[10]).intensity = 2.0f;
+  registry.get<LightColor>(lights[900]).intensity = 2.0f;
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 2u);
+  const auto after = read_back(buffer);
+  EXPECT_EQ(after[10].color_kind.x, 2.0f);
+  EXPECT_EQ(after[900].color_kind.x, 2.0f);
+  EXPECT_EQ(after[899].color_kind.x, 1.0f);
+}
+
 TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
