@@ -30,7 +30,7 @@ def main() -> int:
     several_stages = len({row.get("lighting_stage") for row in rows if row.get("lighting_stage")}) > 1
     several_shadows = len({row.get("shadows") for row in rows if row.get("shadows")}) > 1
     for row in rows:
-        if row.get("refused"):  # the driver refused this mode at this light count: no time
+        if row.get("refused") or row["median_ms"] in ("", "-"):  # refused or skipped: no time
             continue
         label = row["mode"]
         if several_slicings and row.get("z_slicing"):
@@ -45,9 +45,14 @@ def main() -> int:
         print(f"plot_bench: {source} has no rows", file=sys.stderr)
         return 1
     figure, axes = plt.subplots(figsize=(8, 5), dpi=100)
-    for mode, by_lights in times.items():
+    # One colour per mode; with several lighting stages the compute stage's line is dashed.
+    colours = {}
+    for label, by_lights in times.items():
+        mode = label.split(" (")[0]
+        colour = colours.setdefault(mode, f"C{len(colours) % 10}" if len(colours) < 10 else plt.cm.tab20(len(colours) % 20))
         counts = sorted(by_lights)
-        axes.plot(counts, [statistics.median(by_lights[c]) for c in counts], marker="o", label=mode)
+        axes.plot(counts, [statistics.median(by_lights[c]) for c in counts], marker="o", label=label, color=colour,
+                  linestyle="--" if label.endswith("(compute)") else "-")
     axes.set_xscale("log")
     axes.set_yscale("log")
     axes.set_xlabel("lights")

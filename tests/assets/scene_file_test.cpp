@@ -136,7 +136,7 @@ TEST_F(SceneFile, MistakesNameThePathAndWhatWasExpected) {
   EXPECT_EQ(error(R"({"lights": [{"type": "area", "position": [0, 0, 0], "intensity": 1}]})"),
             file + ": /lights/0/type: expected \"point\", \"spot\" or \"directional\", got \"area\"");
   EXPECT_EQ(error(R"({"colour": 1})"),
-            file + ": /colour: unknown key (expected one of: name, models, lights, light_generators, views, ambient, background, exposure, default_mode, systems)");
+            file + ": /colour: unknown key (expected one of: name, models, lights, light_generators, views, ambient, background, exposure, default_mode, lighting_stage, systems)");
   EXPECT_EQ(error(R"({"light_generators": [{"count": -5, "intensity": 1}]})"),
             file + ": /light_generators/0/count: expected a whole number from 0 to 1,048,576, got -5");
   EXPECT_EQ(error(R"({"light_generators": [{"count": 5, "intensity": [2, 1]}]})"),
