@@ -29,6 +29,7 @@
 #include <typeinfo>
 #include <unordered_map>
 #include <utility>
+#include <span>
 #include <vector>
 
 #include "ecs/entity.hpp"
@@ -130,6 +131,27 @@ class Registry {
     ViewAlignment* alignment = nullptr;
     if constexpr (sizeof...(Ts) > 1) alignment = &alignments_[{detail::component_id<Ts>()...}];
     return View<Ts...>(alignment, pool<Ts>()...);
+  }
+
+  // The entities holding T and their components, in pool order (index i of
+  // one is index i of the other): for read-only walks split over threads,
+  // during which nothing may add or remove components (a View allows that,
+  // this does not).
+  template <typename T>
+  [[nodiscard]] std::span<const Entity> entities_with() const {
+    const auto* p = find_pool<T>();
+    return p ? std::span<const Entity>(p->entities()) : std::span<const Entity>();
+  }
+  template <typename T>
+  [[nodiscard]] std::span<const T> components_of() const {
+    const auto* p = find_pool<T>();
+    return p ? std::span<const T>(p->components()) : std::span<const T>();
+  }
+  // try_get for such walks: reads only.
+  template <typename T>
+  [[nodiscard]] const T* find(Entity e) const {
+    const auto* p = find_pool<T>();
+    return (alive(e) && p && p->contains(e)) ? &p->get(e) : nullptr;
   }
 
   template <typename T>

@@ -106,6 +106,7 @@ class SparseSet final : public SparseSetBase {
   [[nodiscard]] T* try_get(Entity e) { return contains(e) ? &components_[slot_of(e)] : nullptr; }
 
   [[nodiscard]] std::vector<T>& components() { return components_; }
+  [[nodiscard]] const std::vector<T>& components() const { return components_; }
   [[nodiscard]] T& at_slot(std::uint32_t slot) { return components_[slot]; }
 
  private:

@@ -6,10 +6,13 @@
 #include <cstring>
 #include <limits>
 #include <optional>
+#include <span>
+#include <utility>
 
 #include "components/light.hpp"
 #include "components/transform.hpp"
 #include "base/format.hpp"
+#include "base/parallel.hpp"
 #include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 #include "render/lighting/light_falloff.hpp"
@@ -50,63 +53,98 @@ std::optional<std::string> light_problem(const Transform& transform, const Light
 
 namespace {
 
-// Calls light(entity, gpu) for each drawable light entity in pool order and
-// rejected(entity, problem) for each that is not.
+// Calls light(entity, gpu) when the entity holding `color` is a drawable
+// light, rejected(entity, problem) when it is not; nothing when it has no
+// Transform (it is no light). Reads the registry only: several threads may
+// call it at once.
 template <typename Light, typename Rejected>
-void for_each_light(ecs::Registry& registry, const Light& light, const Rejected& rejected) {
-  registry.view<Transform, LightColor>().each([&](ecs::Entity entity, const Transform& transform, const LightColor& color) {
-    const LightRadius* radius = registry.try_get<LightRadius>(entity);
-    const SpotCone* cone = registry.try_get<SpotCone>(entity);
-    const bool directional = registry.has<DirectionalLight>(entity);
-    if (auto problem = light_problem(transform, color, radius, directional)) {
-      rejected(entity, std::move(*problem));
-      return;
-    }
-    GpuLightKind kind = directional ? GpuLightKind::Directional : cone ? GpuLightKind::Spot : GpuLightKind::Point;
-    const float r = directional ? 0.0f : radius ? radius->radius : lighting::light_radius_from_intensity(color.color, color.intensity);
-    GpuLight gpu{glm::vec4(transform.position, r), glm::vec4(color.color * color.intensity, static_cast<float>(kind)),
-                 glm::vec4(transform.rotation * glm::vec3(0.0f, 0.0f, -1.0f), 0.0f), glm::vec4(0.0f)};
-    if (cone) {
-      // glTF's smooth spot falloff: clamp(cos * scale + offset, 0, 1)^2.
-      const float cos_outer = std::cos(cone->outer_cone), cos_inner = std::cos(cone->inner_cone);
-      const float scale = 1.0f / std::max(cos_inner - cos_outer, 1e-4f);
-      gpu.spot = glm::vec4(scale, -cos_outer * scale, 0.0f, 0.0f);
-    }
-    light(entity, gpu);
-  });
+void visit_light(const ecs::Registry& registry, ecs::Entity entity, const LightColor& color, const Light& light,
+                 const Rejected& rejected) {
+  const Transform* transform = registry.find<Transform>(entity);
+  if (!transform) return;
+  const LightRadius* radius = registry.find<LightRadius>(entity);
+  const SpotCone* cone = registry.find<SpotCone>(entity);
+  const bool directional = registry.find<DirectionalLight>(entity) != nullptr;
+  if (auto problem = light_problem(*transform, color, radius, directional)) {
+    rejected(entity, std::move(*problem));
+    return;
+  }
+  GpuLightKind kind = directional ? GpuLightKind::Directional : cone ? GpuLightKind::Spot : GpuLightKind::Point;
+  const float r = directional ? 0.0f : radius ? radius->radius : lighting::light_radius_from_intensity(color.color, color.intensity);
+  GpuLight gpu{glm::vec4(transform->position, r), glm::vec4(color.color * color.intensity, static_cast<float>(kind)),
+               glm::vec4(transform->rotation * glm::vec3(0.0f, 0.0f, -1.0f), 0.0f), glm::vec4(0.0f)};
+  if (cone) {
+    // glTF's smooth spot falloff: clamp(cos * scale + offset, 0, 1)^2.
+    const float cos_outer = std::cos(cone->outer_cone), cos_inner = std::cos(cone->inner_cone);
+    const float scale = 1.0f / std::max(cos_inner - cos_outer, 1e-4f);
+    gpu.spot = glm::vec4(scale, -cos_outer * scale, 0.0f, 0.0f);
+  }
+  light(entity, gpu);
 }
 
 // Lights apart by fewer than this many unchanged ones are sent in one upload:
 // a call costs more than a few hundred bytes of copying.
 constexpr std::size_t kRunGap = 64;
+// Below this many lights a second thread costs more than it saves.
+constexpr std::size_t kLightsPerThread = 16384;
+
+void mark_changed(std::vector<LightRun>& runs, std::size_t i) {
+  if (!runs.empty() && i <= runs.back().end + kRunGap) runs.back().end = i + 1;
+  else runs.push_back({i, i + 1});
+}
 
 // Overwrites the buffer's staging copy with this frame's lights where they
 // differ and returns the runs of indices that changed: the staging copy is
 // what the GPU buffer holds (the shadow atlas keeps its patches in both), so
-// only those runs need sending. A frame whose lights hold still sends nothing.
-std::vector<LightRun> refresh_staging(ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
-  std::vector<LightRun> runs;
-  std::size_t n = 0;
-  const auto changed = [&](std::size_t i) {
-    if (!runs.empty() && i <= runs.back().end + kRunGap) runs.back().end = i + 1;
-    else runs.push_back({i, i + 1});
-  };
-  for_each_light(registry, [&](ecs::Entity entity, const GpuLight& light) {
-    if (n == state.staging.size()) {
-      state.staging.push_back(light);
-      state.entities.push_back(entity);
-      changed(n);
-    } else {
-      if (std::memcmp(&state.staging[n], &light, sizeof light) != 0) {
-        state.staging[n] = light;
-        changed(n);
-      }
-      state.entities[n] = entity;
+// only those runs need sending; a frame whose lights hold still sends
+// nothing. The lights are gathered and compared in chunks of the LightColor
+// pool, one thread each, in pool order, into memory the buffer keeps.
+std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
+  const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
+  const std::span<const LightColor> colors = registry.components_of<LightColor>();
+  const std::size_t total = entities.size();
+  const std::size_t chunks = std::clamp<std::size_t>(total / kLightsPerThread, 1, hardware_threads());
+  state.chunks.resize(chunks);
+  run_in_parallel(chunks, [&](std::size_t c) {
+    LightChunk& chunk = state.chunks[c];
+    chunk.lights.clear();
+    chunk.entities.clear();
+    chunk.rejected.clear();
+    for (std::size_t i = total * c / chunks; i < total * (c + 1) / chunks; ++i) {
+      visit_light(registry, entities[i], colors[i], [&](ecs::Entity entity, const GpuLight& light) {
+        chunk.lights.push_back(light);
+        chunk.entities.push_back(entity);
+      }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); });
     }
-    ++n;
-  }, [&](ecs::Entity entity, std::string problem) { rejected.push_back({entity, std::move(problem)}); });
-  state.staging.resize(n);
-  state.entities.resize(n);
+  });
+  std::size_t count = 0;
+  for (LightChunk& chunk : state.chunks) {
+    chunk.offset = count;
+    count += chunk.lights.size();
+  }
+  const std::size_t kept = std::min(count, state.staging.size());
+  state.staging.resize(count);
+  state.entities.resize(count);
+  run_in_parallel(chunks, [&](std::size_t c) {
+    LightChunk& chunk = state.chunks[c];
+    chunk.runs.clear();
+    for (std::size_t j = 0; j < chunk.lights.size(); ++j) {
+      const std::size_t i = chunk.offset + j;
+      if (i >= kept || std::memcmp(&state.staging[i], &chunk.lights[j], sizeof(GpuLight)) != 0) {
+        state.staging[i] = chunk.lights[j];
+        mark_changed(chunk.runs, i);
+      }
+      state.entities[i] = chunk.entities[j];
+    }
+  });
+  std::vector<LightRun> runs;
+  for (const LightChunk& chunk : state.chunks) {
+    for (const LightRun& run : chunk.runs) {
+      if (!runs.empty() && run.begin <= runs.back().end + kRunGap) runs.back().end = run.end;
+      else runs.push_back(run);
+    }
+    rejected.insert(rejected.end(), chunk.rejected.begin(), chunk.rejected.end());
+  }
   return runs;
 }
 
@@ -114,11 +152,15 @@ std::vector<LightRun> refresh_staging(ecs::Registry& registry, LightBuffer& stat
 
 GatheredLights gather_lights(ecs::Registry& registry) {
   GatheredLights gathered;
-  gathered.lights.reserve(registry.count<LightColor>());
-  for_each_light(registry, [&](ecs::Entity entity, const GpuLight& light) {
-    gathered.lights.push_back(light);
-    gathered.entities.push_back(entity);
-  }, [&](ecs::Entity entity, std::string problem) { gathered.rejected.push_back({entity, std::move(problem)}); });
+  const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
+  const std::span<const LightColor> colors = registry.components_of<LightColor>();
+  gathered.lights.reserve(entities.size());
+  for (std::size_t i = 0; i < entities.size(); ++i) {
+    visit_light(registry, entities[i], colors[i], [&](ecs::Entity entity, const GpuLight& light) {
+      gathered.lights.push_back(light);
+      gathered.entities.push_back(entity);
+    }, [&](ecs::Entity entity, std::string problem) { gathered.rejected.push_back({entity, std::move(problem)}); });
+  }
   return gathered;
 }
 
@@ -127,7 +169,7 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     LightBuffer* state = registry.try_resource<LightBuffer>();
     if (!state) state = &registry.set_resource<LightBuffer>();
     std::vector<RejectedLight> rejected;
-    std::vector<LightRun> runs = refresh_staging(registry, *state, rejected);
+    std::vector<LightRun> runs = refresh_staging(std::as_const(registry), *state, rejected);
     state->rejected = static_cast<std::uint32_t>(rejected.size());
     for (const RejectedLight& light : rejected) {
       if (!state->warned.insert(light.entity).second) continue;

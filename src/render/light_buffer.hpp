@@ -45,6 +45,21 @@ struct LightRun {
   std::size_t begin = 0, end = 0;
 };
 
+// A light entity that cannot be drawn and why, e.g. "position (nan, 0, 1) is not finite".
+struct RejectedLight {
+  ecs::Entity entity;
+  std::string problem;
+};
+
+// A share of the lights gathered by one thread (LightBuffer::chunks).
+struct LightChunk {
+  std::vector<GpuLight> lights;
+  std::vector<ecs::Entity> entities;
+  std::vector<RejectedLight> rejected;
+  std::vector<LightRun> runs;  // the changed indices it found, in the buffer's numbering
+  std::size_t offset = 0;      // where its lights start in the buffer
+};
+
 struct LightBuffer {
   gfx::Buffer buffer;
   std::size_t capacity = 0;  // lights the buffer can hold
@@ -56,12 +71,7 @@ struct LightBuffer {
   std::vector<ecs::Entity> entities;  // staging[i] is the light of entities[i]
   std::uint32_t rejected = 0;  // light entities left out this frame
   std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
-};
-
-// A light entity that cannot be drawn and why, e.g. "position (nan, 0, 1) is not finite".
-struct RejectedLight {
-  ecs::Entity entity;
-  std::string problem;
+  std::vector<LightChunk> chunks;  // the gather's per-thread memory, kept across frames
 };
 
 struct GatheredLights {

@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <span>
+
 #include "ecs/registry.hpp"
 
 namespace atrium::ecs {
@@ -92,6 +94,29 @@ TEST(Registry, DestroyRemovesEveryComponent) {
   EXPECT_EQ(registry.count<Position>(), 0u);
   EXPECT_EQ(registry.count<Velocity>(), 0u);
   EXPECT_EQ(registry.alive_count(), 0u);
+}
+
+// The pool as two parallel arrays, and a read-only lookup: what walks split
+// over threads use (the light buffer's gather).
+TEST(Registry, PoolsReadAsParallelArraysForThreadedWalks) {
+  Registry registry;
+  const Entity a = registry.create(), b = registry.create(), c = registry.create();
+  registry.add<Position>(a, 1.0f, 2.0f);
+  registry.add<Position>(c, 3.0f, 4.0f);
+  registry.add<Velocity>(c, 5.0f, 6.0f);
+  const Registry& read = registry;
+  const std::span<const Entity> entities = read.entities_with<Position>();
+  const std::span<const Position> positions = read.components_of<Position>();
+  ASSERT_EQ(entities.size(), 2u);
+  ASSERT_EQ(positions.size(), 2u);
+  for (std::size_t i = 0; i < entities.size(); ++i) EXPECT_EQ(positions[i].x, registry.get<Position>(entities[i]).x);
+  EXPECT_EQ(read.find<Velocity>(a), nullptr);
+  ASSERT_NE(read.find<Velocity>(c), nullptr);
+  EXPECT_EQ(read.find<Velocity>(c)->dy, 6.0f);
+  EXPECT_TRUE(read.entities_with<Name>().empty()) << "no pool yet: empty, not a crash";
+  registry.destroy(c);
+  EXPECT_EQ(read.find<Velocity>(c), nullptr) << "a stale handle finds nothing";
+  (void)b;
 }
 
 TEST(Registry, ResourcesAreSingletonsPerType) {

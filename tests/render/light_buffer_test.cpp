@@ -95,6 +95,10 @@ TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
   EXPECT_GE(buffer.capacity, 100'000u);
   const auto lights = read_back(buffer);
   EXPECT_EQ(lights.back().position_radius.x, 99'999.0f);
+  // Gathered in chunks on several threads, in the registry's order all the same.
+  for (std::size_t i = 0; i < lights.size(); ++i) ASSERT_EQ(lights[i].position_radius.x, static_cast<float>(i)) << i;
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 0u);
 }
 
 TEST_F(LightBufferSystem, SpotAndDirectionalLightsCarryTheirKindDirectionAndCone) {
