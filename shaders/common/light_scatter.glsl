@@ -2,7 +2,7 @@
 // each light visits only the bins its sphere may reach (the including
 // shader's for_each_bin, which calls visit_bin for every candidate bin whose
 // test the light passes) in two steps around a scan (LightIndexList). A light
-// with more candidates than kBigLight (a large light near the camera, a sun)
+// with more candidates than u_big_light (a large light near the camera, a sun)
 // is handed to a work group of its own, whose invocations share its
 // candidates, so that a hundred large lights do not leave a hundred
 // invocations walking thousands of bins each. A light's steps run in one
@@ -42,7 +42,9 @@ layout(std430, binding = 12) buffer BigLights {
 
 const uint kStepCount = 0u, kStepCountLarge = 1u, kStepWrite = 2u, kStepWriteLarge = 3u;
 uniform uint u_step;
-const uint kBigLight = 512u;  // candidates past which a light gets a work group
+// Candidates past which a light gets a work group (LightIndexList::big_light_candidates):
+// fewer when the lights are few, so that they still fill the GPU.
+uniform uint u_big_light;
 const uint kFitsNone = 0u, kFitsAlone = 1u, kFitsShared = 2u;
 
 const uint kVisitCount = 0u, kVisitAdd = 1u, kVisitTakeBack = 2u, kVisitWrite = 3u;
@@ -133,7 +135,7 @@ void main() {
     for_each_bin(sphere, 0u, 1u);
     return;
   }
-  if (candidate_count(sphere) > kBigLight) {
+  if (candidate_count(sphere) > u_big_light) {
     u_light_fits[light] = kFitsNone;
     uint listed = atomicAdd(u_big_count, 1u);
     u_big_lights[listed] = light;

@@ -24,6 +24,7 @@ LightIndexList::LightIndexList(std::uint32_t bins)
     : bins_(std::max<std::uint32_t>(bins, 1)),
       max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
       loop_limit_(gfx::shader_loop_limit()),
+      software_(gfx::is_software_renderer()),
       ranges_(gfx::create_buffer()),
       total_(gfx::create_buffer()),
       bin_counts_(gfx::create_buffer()),
@@ -108,6 +109,11 @@ void LightIndexList::poll() {
   });
 }
 
+std::uint32_t LightIndexList::big_light_candidates(std::uint32_t light_count, bool software_renderer) {
+  constexpr std::uint32_t kMost = 512;
+  return software_renderer ? kMost : std::clamp<std::uint32_t>(light_count / 32, 32, kMost);
+}
+
 void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& programs, const std::function<void()>& bind_inputs) {
   Total start;
   start.capacity = capacity_;
@@ -133,6 +139,7 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   };
   if (light_groups > 0) {
     programs.scatter.use();
+    programs.scatter.set("u_big_light", big_light_candidates(light_count, software_));
     programs.scatter.set("u_step", kStepCount);
     glDispatchCompute(light_groups, 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);

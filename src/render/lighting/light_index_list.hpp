@@ -100,6 +100,15 @@ class LightIndexList {
   // The lists read back, per bin (for tests; they are in light order).
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> read() const;
 
+  // The candidate bins past which a light's steps get a work group of 64
+  // invocations instead of one (shaders/common/light_scatter.glsl). On a GPU,
+  // 512 where the lights alone make enough invocations, down to 32 for a few
+  // hundred lights, whose bins a few dozen invocations would otherwise walk
+  // in turn while the rest of the GPU waits (1,024 lights are 16 work groups).
+  // On a software renderer always 512: its work groups' barriers cost more
+  // than the spread saves there (measured, docs/benchmarks.md).
+  [[nodiscard]] static std::uint32_t big_light_candidates(std::uint32_t light_count, bool software_renderer);
+
  private:
   // The demand, a flag the pass sets when it wrapped past 2^32, the longest
   // list, this frame's capacity and the overflowed lights
@@ -123,6 +132,7 @@ class LightIndexList {
   std::uint32_t bins_;
   std::uint64_t max_entries_;  // what GL_MAX_SHADER_STORAGE_BLOCK_SIZE allows
   std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest loop a pixel may run
+  bool software_;              // gfx::is_software_renderer(), asked once
   gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_, big_lights_;
   std::uint32_t light_capacity_ = 0;  // lights overflow_, fits_ and big_lights_ hold
   gfx::ReadbackRing totals_;  // each frame's Total on its way back, tagged with its light count

@@ -5,6 +5,7 @@
 #include "app/cli.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "render/lighting/light_index_list.hpp"
 #include "support/gl_test.hpp"
 
 namespace atrium {
@@ -36,6 +37,18 @@ TEST_F(LightIndexListTest, AFewLargeLightsMatchForward) {
 
 TEST_F(LightIndexListTest, ManySmallLightsMatchForward) {
   expect_lists_match_forward({.scene = "atrium", .lights = 3000u, .size = kWide, .light_radius = 0.6f});
+}
+
+// Few lights on a GPU spread their bins over work groups sooner, so that they
+// fill it; a software renderer, whose barriers cost more, keeps one rule.
+TEST(LightIndexListRule, LargeLightsAreFewerCandidatesWhenTheLightsAreFewOnAGpu) {
+  using lighting::LightIndexList;
+  EXPECT_EQ(LightIndexList::big_light_candidates(24, false), 32u);
+  EXPECT_EQ(LightIndexList::big_light_candidates(1024, false), 32u);
+  EXPECT_EQ(LightIndexList::big_light_candidates(4096, false), 128u);
+  EXPECT_EQ(LightIndexList::big_light_candidates(16384, false), 512u);
+  EXPECT_EQ(LightIndexList::big_light_candidates(1u << 20, false), 512u);
+  for (const std::uint32_t lights : {24u, 1024u, 1u << 20}) EXPECT_EQ(LightIndexList::big_light_candidates(lights, true), 512u);
 }
 
 }  // namespace

@@ -110,7 +110,7 @@ TEST_F(ComputeStageWith, SplitLightSumsAsTheFragmentStageWritesThem) {
 
 TEST_F(ComputeStageWith, ShadowsFirefliesAndTheOfferedDebugViews) {
   // Smaller than kSize: each mode shows each of its views twice.
-  WorldOptions options{.scene = "atrium", .mode = "forward", .view = 3, .size = {96, 54}, .shadows = 4};
+  WorldOptions options{.scene = "atrium", .mode = "forward", .view = 3, .size = {64, 36}, .shadows = 4};
   options.system_options["fireflies"] = 64;
   World world(options);
   const assets::Image reference = draw(world, LightingStage::Fragment);
