@@ -1,5 +1,6 @@
 #version 450 core
-// Clustered light assignment (common/light_scatter.glsl): each light visits
+// Clustered light assignment, one of two ways (LightIndexList picks per frame).
+// Scatter (common/light_scatter.glsl): each light visits
 // only the clusters its sphere may reach, the slices its depth range spans
 // and, in each, the run of columns and of rows whose boxes overlap it
 // (computed, not searched), and passes those whose box it touches; so the cost follows the clusters each light covers,
@@ -8,7 +9,14 @@
 // millimetre per metre for the lighting passes' own reconstruction of those
 // positions, and clusters without pixels get no lights. Otherwise the grid's
 // boxes, and with ACTIVE_ONLY clusters that hold no visible pixel get none.
+// GATHER (common/light_gather.glsl): each cluster tests every light against
+// the same box with the same test, so both write the same lists.
+#include "common/light_assignment.glsl"
+#ifdef GATHER
+#include "common/light_gather.glsl"
+#else
 #include "common/light_scatter.glsl"
+#endif
 #include "common/clusters.glsl"
 
 struct ClusterBounds {
@@ -52,6 +60,18 @@ bool touches(vec4 sphere, ClusterBounds box) {
   return dot(nearest, nearest) <= sphere.w * sphere.w;
 }
 
+#ifdef GATHER
+ClusterBounds g_box;
+
+bool gather_bin(uint bin, out vec3 lo, out vec3 hi) {
+  bool live = cluster_box(bin, g_box);
+  lo = g_box.lo.xyz;
+  hi = g_box.hi.xyz;
+  return live;
+}
+
+bool gather_touches(vec4 sphere) { return touches(sphere, g_box); }
+#else
 uint cluster_at(uint x, uint y, uint z) { return (z * u_grid.y + y) * u_grid.x + x; }
 
 // The first and last of `cells` columns (or rows) whose grid boxes between
@@ -136,3 +156,4 @@ uint for_each_bin(vec4 sphere, uint first, uint stride) {
   }
   return visited;
 }
+#endif

@@ -33,6 +33,7 @@ layout(std430, binding = 5) buffer LightTotal {
   uint u_light_bin_max;        // the longest list: shading loops over it
   uint u_light_capacity;       // entries u_light_indices holds (the C++ side sets it each frame)
   uint u_overflow_count;       // lights that did not fit: listed in u_overflow_lights
+  uint u_light_filled_bins;    // bins holding a light (LightIndexList's choice of assignment)
 };
 layout(std430, binding = 13) buffer OverflowLights { uint u_overflow_lights[]; };
 

@@ -1,4 +1,5 @@
-// Light assignment that costs what the lights touch, not lights times bins:
+// Light assignment that costs what the lights touch, not lights times bins
+// (LightIndexList takes it when lights are many or small; light_gather.glsl otherwise):
 // each light visits only the bins its sphere may reach (the including
 // shader's for_each_bin, which calls visit_bin for every candidate bin whose
 // test the light passes) in two steps around a scan (LightIndexList). A light
@@ -23,14 +24,8 @@
 //                cursor (light_list_scan.comp turned counts into cursors),
 //                never past the bin's range; light_list_sort.comp then puts
 //                each range in light order.
-layout(local_size_x = 64) in;
+#include "common/light_assignment.glsl"
 
-#include "common/frame.glsl"
-#include "common/lights.glsl"
-#include "common/light_lists.glsl"
-
-// Per bin: the count step's count, turned by the scan into the cursor the write step advances.
-layout(std430, binding = 7) buffer BinCounts { uint u_bin_counts[]; };
 // Per light: where its entries went (kFitsNone, kFitsAlone, kFitsShared).
 layout(std430, binding = 14) buffer LightFits { uint u_light_fits[]; };
 // The large lights, and the size of the dispatch that gives each a work group.
@@ -40,8 +35,6 @@ layout(std430, binding = 12) buffer BigLights {
   uint u_big_lights[];
 };
 
-const uint kStepCount = 0u, kStepCountLarge = 1u, kStepWrite = 2u, kStepWriteLarge = 3u;
-uniform uint u_step;
 // Candidates past which a light gets a work group (LightIndexList::big_light_candidates):
 // fewer when the lights are few, so that they still fill the GPU.
 uniform uint u_big_light;
@@ -63,12 +56,6 @@ void visit_bin(uint bin) {
   }
 }
 
-// The light's view-space centre and radius; a negative radius reaches everything.
-vec4 view_sphere(Light light) {
-  bool everywhere = uint(light.color_kind.w) == kLightDirectional;
-  return vec4((u_view * vec4(light.position_radius.xyz, 1.0)).xyz, everywhere ? -1.0 : light.position_radius.w);
-}
-
 // Defined by the including shader: how many candidate bins the light has, or
 // a bound on it (it only chooses between the two paths), and a walk over the
 // candidates numbered `first`, `first + stride`, ... (from 0) that calls
@@ -79,9 +66,8 @@ uint for_each_bin(vec4 sphere, uint first, uint stride);
 // Reserves `bins` entries for `light`: whether they fit this frame's array.
 bool reserve(uint light, uint bins) {
   if (bins == 0u) return true;
-  uint first = atomicAdd(u_light_demand, bins);
+  uint first = add_demand(bins);
   bool wrapped = first > 0xffffffffu - bins;
-  if (wrapped) u_light_total_wrapped = 1u;
   bool fits = !wrapped && first + bins <= u_light_capacity;
   if (!fits) u_overflow_lights[atomicAdd(u_overflow_count, 1u)] = light;
   return fits;

@@ -5,13 +5,22 @@
 // (COMPUTE_STAGE, --lighting-stage compute) it stores to the same targets bound
 // as images (units from kLitImageUnit, render/lighting/lighting_stage.hpp).
 // The pass's file defines shade_pixel() and then includes common/lighting_main.glsl.
+// With ADD_LIGHTS (a later run of a pass split by lights) add_lighting() adds
+// a sum to what an earlier run wrote: read, added and stored in compute,
+// blended (one plus one, LightingPass sets it) as fragments; leave_pixel()
+// keeps a pixel as it is.
 #include "shading.glsl"
 
 #ifdef COMPUTE_STAGE
-layout(rgba16f, binding = 2) uniform writeonly image2D u_lit_color;
+#ifdef ADD_LIGHTS
+#define LIT_ACCESS
+#else
+#define LIT_ACCESS writeonly
+#endif
+layout(rgba16f, binding = 2) uniform LIT_ACCESS image2D u_lit_color;
 #ifdef SPLIT_LIGHTING
-layout(rgba16f, binding = 3) uniform writeonly image2D u_lit_diffuse;
-layout(rgba16f, binding = 4) uniform writeonly image2D u_lit_specular;
+layout(rgba16f, binding = 3) uniform LIT_ACCESS image2D u_lit_diffuse;
+layout(rgba16f, binding = 4) uniform LIT_ACCESS image2D u_lit_specular;
 #endif
 
 void write_lighting(vec3 unlit, LightSum sum) {
@@ -21,6 +30,16 @@ void write_lighting(vec3 unlit, LightSum sum) {
   imageStore(u_lit_specular, g_shaded_pixel, vec4(sum.specular, 1.0));
 #endif
 }
+#ifdef ADD_LIGHTS
+void add_lighting(LightSum sum) {
+  imageStore(u_lit_color, g_shaded_pixel, imageLoad(u_lit_color, g_shaded_pixel) + vec4(light_total(sum), 0.0));
+#ifdef SPLIT_LIGHTING
+  imageStore(u_lit_diffuse, g_shaded_pixel, imageLoad(u_lit_diffuse, g_shaded_pixel) + vec4(sum.diffuse, 0.0));
+  imageStore(u_lit_specular, g_shaded_pixel, imageLoad(u_lit_specular, g_shaded_pixel) + vec4(sum.specular, 0.0));
+#endif
+}
+void leave_pixel() {}
+#endif
 #else
 layout(location = 0) out vec4 out_color;
 #ifdef SPLIT_LIGHTING
@@ -35,6 +54,16 @@ void write_lighting(vec3 unlit, LightSum sum) {
   out_specular = vec4(sum.specular, 1.0);
 #endif
 }
+#ifdef ADD_LIGHTS
+void add_lighting(LightSum sum) {
+  out_color = vec4(light_total(sum), 0.0);
+#ifdef SPLIT_LIGHTING
+  out_diffuse = vec4(sum.diffuse, 0.0);
+  out_specular = vec4(sum.specular, 0.0);
+#endif
+}
+void leave_pixel() { discard; }
+#endif
 #endif
 
 // A pixel no surface covers: the background, and no light.

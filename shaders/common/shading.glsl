@@ -122,19 +122,24 @@ const bool kShadowedLights = false;
 // cost every light: GPU lanes diverge, and llvmpipe runs both sides of a
 // branch for its group of pixels.
 
-// Adds every light in the buffer to `sum`; with `radius_cull` those that
-// cannot reach `s` are skipped unevaluated (the same sum: a light adds nothing
-// beyond its radius).
-void add_buffer_lights_culled(inout LightSum sum, Surface s, vec3 v, bool radius_cull) {
-  uint i = 0u;
-  for (; i < u_light_count && has_shadow_maps(light_at(i)); ++i) {
+// Adds the lights [first, end) of the buffer to `sum`; with `radius_cull`
+// those that cannot reach `s` are skipped unevaluated (the same sum: a light
+// adds nothing beyond its radius).
+void add_light_range(inout LightSum sum, Surface s, vec3 v, uint first, uint end, bool radius_cull) {
+  uint i = first;
+  for (; i < end && has_shadow_maps(light_at(i)); ++i) {
     if (radius_cull && !light_reaches(light_at(i), s.position)) continue;
     add_light_as(sum, s, v, light_at(i), true);
   }
-  for (; i < u_light_count; ++i) {
+  for (; i < end; ++i) {
     if (radius_cull && !light_reaches(light_at(i), s.position)) continue;
     add_light_as(sum, s, v, light_at(i), false);
   }
+}
+
+// Every light in the buffer.
+void add_buffer_lights_culled(inout LightSum sum, Surface s, vec3 v, bool radius_cull) {
+  add_light_range(sum, s, v, 0u, u_light_count, radius_cull);
 }
 
 // Every light in the buffer; LIGHT_RADIUS_CULL (mode deferred-radius) skips

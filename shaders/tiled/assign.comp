@@ -1,9 +1,16 @@
 #version 450 core
-// Tiled light culling, second step (common/light_scatter.glsl): each light
-// visits only the tiles under its sphere's screen rectangle and passes those
-// whose frustum and depth bounds (tile_bounds.comp) it touches, so the cost
-// follows the tiles each light covers rather than every light for every tile.
+// Tiled light culling, second step, one of two ways (LightIndexList picks per
+// frame). Scatter (common/light_scatter.glsl): each light visits only the
+// tiles under its sphere's screen rectangle and passes those whose frustum and
+// depth bounds (tile_bounds.comp) it touches, so the cost follows the tiles
+// each light covers rather than every light for every tile. GATHER
+// (common/light_gather.glsl): each tile tests every light with the same test.
+#include "common/light_assignment.glsl"
+#ifdef GATHER
+#include "common/light_gather.glsl"
+#else
 #include "common/light_scatter.glsl"
+#endif
 #include "tiled/tiles.glsl"
 
 bool touches(vec4 sphere, TileBounds tile) {
@@ -16,6 +23,30 @@ bool touches(vec4 sphere, TileBounds tile) {
   return true;
 }
 
+#ifdef GATHER
+TileBounds g_tile;
+
+// The box around the tile's frustum between its depths: its corner rays (where
+// neighbouring side planes meet, scaled to depth 1) at both depths.
+bool gather_bin(uint bin, out vec3 lo, out vec3 hi) {
+  g_tile = u_tile_bounds[bin];
+  lo = vec3(1e30);
+  hi = vec3(-1e30);
+  if (g_tile.depths.z > 0.5) return false;
+  for (int corner = 0; corner < 4; ++corner) {
+    vec3 ray = cross(g_tile.planes[(corner + 3) % 4].xyz, g_tile.planes[corner].xyz);
+    ray /= -ray.z;
+    for (int end = 0; end < 2; ++end) {
+      vec3 point = ray * g_tile.depths[end];
+      lo = min(lo, point);
+      hi = max(hi, point);
+    }
+  }
+  return true;
+}
+
+bool gather_touches(vec4 sphere) { return touches(sphere, g_tile); }
+#else
 // The tiles under the screen rectangle of the sphere's view-space box (one
 // tile more on each side, for rounding), or every tile when the box reaches
 // the eye's plane, where projection no longer bounds it; false for a sphere
@@ -62,3 +93,4 @@ uint for_each_bin(vec4 sphere, uint first, uint stride) {
   }
   return visited;
 }
+#endif

@@ -147,6 +147,11 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
     gpu_ms.push_back(frame_gpu_ms);
   }
   row.sliced = slices_depth();
+  if (const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>()) {
+    const FrameStats& stats = world.renderer().stats();
+    row.light_lists = lighting::describe(*bins) + ", " + std::string(lighting::light_assignment_label(stats.light_assignment)) + " at density " +
+                      fixed(stats.light_list_density, 4);
+  }
   row.median_ms = percentile(frame_ms, 0.5);
   row.p5_ms = percentile(frame_ms, 0.05);
   row.p95_ms = percentile(frame_ms, 0.95);
@@ -264,7 +269,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
     for (const int view : views) {
       world.set_view(view);
       const double reaching = count_reaching(world);
-      for (const auto [shadows, stage] : sweep(shadow_counts, stages)) {
+      for (const auto& [shadows, stage] : sweep(shadow_counts, stages)) {
         settings.shadows = shadows;
         settings.technique_options.lighting_stage = stage;
         // Modes that do not slice depth are measured once, with the first slicing.
@@ -396,8 +401,8 @@ std::string bench_markdown(const BenchResult& result) {
   md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image; "
         "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
         "in one frame that could wait for the GPU):\n\n"
-        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits |\n"
-        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|\n";
+        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists |\n"
+        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
@@ -408,7 +413,7 @@ std::string bench_markdown(const BenchResult& result) {
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
        << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " | " << fixed(row.gpu_ms, 2) << " | "
-       << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " |\n";
+       << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " | " << row.light_lists << " |\n";
   }
   return md.str();
 }
@@ -417,7 +422,7 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -436,7 +441,7 @@ std::string bench_csv(const BenchResult& result) {
         << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
         << "\","
         << (std::isnan(row.median_ms) ? std::string_view() : lighting::kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
-        << "\n";
+        << ",\"" << row.light_lists << "\"\n";
   }
   return csv.str();
 }

@@ -54,6 +54,10 @@ struct BenchRow {
   // depth slices at all (a clustered mode): only those are measured per slicing.
   lighting::ZSlicing z_slicing = lighting::ZSlicing::Log;
   bool sliced = false;
+  // How the mode's light lists cut the frame and were built ("60x34x32
+  // clusters, gather"; empty for modes without lists): --cluster-grid and
+  // --light-assignment as they ran.
+  std::string light_lists;
   int shadows = 0;  // lights with shadow maps (--shadows)
   // The stage asked for (a sweep's) and the one the full-screen passes ran in.
   lighting::LightingStage stage_asked = lighting::LightingStage::Automatic;

@@ -84,7 +84,8 @@ int run_render(const CliOptions& options) {
                 stats.shadows.atlas_size, stats.shadows.atlas_size);
   }
   if (stats.light_list_entries > 0) {
-    std::printf("light lists: %u entries, %u overflowed frames%s\n", stats.light_list_entries, stats.light_list_overflows,
+    std::printf("light lists: %u entries (%s, density %.4f), %u overflowed frames%s\n", stats.light_list_entries,
+                std::string(lighting::light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density, stats.light_list_overflows,
                 stats.light_list_overflows > 0 ? " (their lights that did not fit were shaded wherever they reach; the list grew)" : "");
   }
   return kExitOk;
@@ -97,7 +98,7 @@ int run_info(const CliOptions& options) {
   WorldOptions loaded = world_options(options);
   loaded.size = {16, 16};  // info renders nothing worth a large target
   World world(loaded);
-  SceneInfo info = gather_info(world, options.scene);
+  SceneInfo info = gather_info(world, options.scene, options.size);
   info.gl = context->info();
   if (options.memory) {
     world.set_size(options.size);

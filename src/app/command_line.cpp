@@ -166,6 +166,15 @@ ApplyOption set_flag(Field field) {
   return [field](std::string_view, CliOptions& options) { field(options) = true; };
 }
 
+// Sets a technique option from a names table (parse_choice).
+template <typename Enum, std::size_t N>
+ApplyOption set_choice(Enum lighting::TechniqueOptions::*member, const std::array<std::string_view, N>& names, const char* what,
+                       const char* plural) {
+  return [member, &names, what, plural](std::string_view value, CliOptions& o) {
+    o.technique_options.*member = parse_choice<Enum>(value, names, what, plural);
+  };
+}
+
 // Every option, each with the code that reads it. One name may appear twice
 // when its value means something else in `atrium bench` (a list there).
 const std::vector<OptionSpec>& option_table() {
@@ -180,32 +189,40 @@ const std::vector<OptionSpec>& option_table() {
            throw UsageError("unknown shading model '" + o.shading + "' (models: " + lighting::shading_model_names() + ")");
          }
        }},
-      {"--cluster-grid", "XxYxZ", kDrawing, "clustered modes: clusters per axis (default 16x9x32)",
+      {"--cluster-grid", "G", kDrawing | kInfo,
+       "clustered modes: square tiles of N pixels and Z depth slices at any size, NpxxZ or Npx (default 24pxx32), "
+       "or a fixed number of clusters per axis, XxYxZ (e.g. 16x9x32)",
        [](std::string_view value, CliOptions& o) {
          const std::string text(value);
-         const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
-         if (x1 == std::string::npos || x2 == std::string::npos) {
-           throw UsageError("--cluster-grid expects XxYxZ (e.g. 16x9x24), got '" + text + "'");
+         const auto bad = [&] { return UsageError("--cluster-grid expects NpxxZ, Npx or XxYxZ (e.g. 24pxx32, 16x9x32), got '" + text + "'"); };
+         if (const auto px = text.find("px"); px != std::string::npos) {
+           const std::string rest = text.substr(px + 2);
+           if (!rest.empty() && !rest.starts_with('x')) throw bad();
+           const unsigned tile = parse_number<unsigned>("--cluster-grid", value.substr(0, px), 8, 512);
+           const unsigned slices = rest.empty() ? lighting::ClusterGridSize{}.dims.z : parse_number<unsigned>("--cluster-grid", rest.substr(1), 2, 256);
+           o.technique_options.cluster_grid = lighting::ClusterGridSize::pixels(tile, slices);
+           return;
          }
-         o.technique_options.cluster_grid = {parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
-                                             parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
-                                             parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)};
+         const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
+         if (x1 == std::string::npos || x2 == std::string::npos) throw bad();
+         o.technique_options.cluster_grid = lighting::ClusterGridSize::fixed({parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
+                                                                             parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
+                                                                             parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)});
        }},
       {"--cluster-bounds", "B", kDrawing,
        "clustered modes: test lights against each cluster's box of the pixels it holds (pixels, default) or its "
        "whole frustum slice (grid)",
-       [](std::string_view value, CliOptions& o) {
-         o.technique_options.cluster_bounds =
-             parse_choice<lighting::ClusterBounds>(value, lighting::kClusterBoundsNames, "cluster bounds", "bounds");
-       }},
+       set_choice(&lighting::TechniqueOptions::cluster_bounds, lighting::kClusterBoundsNames, "cluster bounds", "bounds")},
       {"--active-clusters", "", kDrawing, "clustered modes, grid bounds: only clusters holding visible pixels get lights",
        set_flag([](CliOptions& o) -> bool& { return o.technique_options.active_clusters; })},
+      {"--light-assignment", "A", kDrawing,
+       "tiled and clustered modes: how the light lists are built, scatter (each light visits the bins it may reach), "
+       "gather (each bin tests every light) or auto (default: per frame, gather where lights are dense)",
+       set_choice(&lighting::TechniqueOptions::light_assignment, lighting::kLightAssignmentNames, "light assignment", "assignments")},
       {"--z-slicing", "S", kWindow | kRender | kCompare,
        "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
        "plain-log (logarithmic from the near plane) or uniform",
-       [](std::string_view value, CliOptions& o) {
-         o.technique_options.z_slicing = parse_choice<lighting::ZSlicing>(value, lighting::kZSlicingNames, "depth slicing", "slicings");
-       }},
+       set_choice(&lighting::TechniqueOptions::z_slicing, lighting::kZSlicingNames, "depth slicing", "slicings")},
       {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)",
        [](std::string_view value, CliOptions& o) {
          o.bench.z_slicings = parse_list<lighting::ZSlicing>("--z-slicing", value, "slicings", [](const std::string& item) {
@@ -215,10 +232,7 @@ const std::vector<OptionSpec>& option_table() {
       {"--gbuffer", "L", kDrawing,
        "deferred modes: G-buffer layout, full (" + gbuffer_size(lighting::GBufferLayout::Full) + ", default) or compact (" +
            gbuffer_size(lighting::GBufferLayout::Compact) + "; position from depth, octahedral normal)",
-       [](std::string_view value, CliOptions& o) {
-         o.technique_options.gbuffer_layout =
-             parse_choice<lighting::GBufferLayout>(value, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts");
-       }},
+       set_choice(&lighting::TechniqueOptions::gbuffer_layout, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts")},
       {"--split-lighting", "", kDrawing,
        "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
        "diffuse-light and specular-light views turn this on while shown)",

@@ -5,12 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include "base/format.hpp"
+#include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
+#include "render/techniques/tiled/tiled.hpp"
 
 namespace atrium {
 
-SceneInfo gather_info(World& world, const std::string& scene) {
+SceneInfo gather_info(World& world, const std::string& scene, glm::ivec2 size) {
   SceneInfo info;
   info.scene = scene;
   ecs::Registry& registry = world.registry();
@@ -54,6 +56,12 @@ SceneInfo gather_info(World& world, const std::string& scene) {
   info.decode_seconds = world.load_report().timings.decode_seconds;
   info.upload_seconds = world.upload_seconds();
   info.warnings = world.load_report().warnings.size();
+  info.bins_size = size;
+  info.tile_pixels = lighting::kTileSize;
+  info.tiles = (glm::uvec2(glm::max(info.bins_size, glm::ivec2(1))) + glm::uvec2(lighting::kTileSize - 1)) / glm::uvec2(lighting::kTileSize);
+  const lighting::ClusterGridSize grid = registry.resource<RendererSettings>().technique_options.cluster_grid;
+  info.clusters = grid.at(info.bins_size);
+  info.cluster_tile_pixels = grid.tile_pixels;
   return info;
 }
 
@@ -88,6 +96,12 @@ std::string format_info_text(const SceneInfo& i) {
                 i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings, i.gl.renderer.c_str(), i.gl.vendor.c_str(),
                 i.gl.version.c_str(), i.gl.platform.c_str());
   std::string text = buffer;
+  char bins[256];
+  std::snprintf(bins, sizeof bins, "light bins   at %dx%d: tiles %ux%u of %u px; clusters %ux%ux%u (%s)\n", i.bins_size.x, i.bins_size.y,
+                i.tiles.x, i.tiles.y, i.tile_pixels, i.clusters.x, i.clusters.y, i.clusters.z,
+                i.cluster_tile_pixels ? (std::to_string(i.cluster_tile_pixels) + "-pixel tiles, at least 16x9, --cluster-grid").c_str()
+                                      : "fixed, --cluster-grid");
+  text += bins;
   if (!i.memory.empty()) {
     char line[256];
     std::snprintf(line, sizeof line, "render targets at %dx%d (long-lived; transient as allocated, unshared):\n", i.memory_size.x,
@@ -125,6 +139,12 @@ std::string format_info_json(const SceneInfo& i) {
                                             {"max", {i.bounds.max.x, i.bounds.max.y, i.bounds.max.z}}}},
       {"load_seconds", {{"parse", i.parse_seconds}, {"decode", i.decode_seconds}, {"upload", i.upload_seconds}}},
       {"warnings", i.warnings},
+      {"light_bins",
+       {{"size", {i.bins_size.x, i.bins_size.y}},
+        {"tiles", {i.tiles.x, i.tiles.y}},
+        {"tile_pixels", i.tile_pixels},
+        {"clusters", {i.clusters.x, i.clusters.y, i.clusters.z}},
+        {"cluster_tile_pixels", i.cluster_tile_pixels}}},
       {"gl", {{"renderer", i.gl.renderer}, {"vendor", i.gl.vendor}, {"version", i.gl.version}, {"platform", i.gl.platform}}}};
   if (!i.memory.empty()) {
     nlohmann::json modes = nlohmann::json::array();

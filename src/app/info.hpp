@@ -27,6 +27,12 @@ struct SceneInfo {
   Box bounds;  // the scene's as declared (assets::SceneDescription::bounds); meaningless when empty()
   double parse_seconds = 0, decode_seconds = 0, upload_seconds = 0;
   std::size_t warnings = 0;
+  // How tiled-deferred and the clustered modes cut a frame of `bins_size` into light-list bins.
+  glm::ivec2 bins_size{0};
+  glm::uvec2 tiles{0};
+  std::uint32_t tile_pixels = 0;
+  glm::uvec3 clusters{0};
+  std::uint32_t cluster_tile_pixels = 0;  // the pixel grid's tile (--cluster-grid NpxxZ); 0: a fixed grid (XxYxZ)
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
   // --memory: per mode, the frame graph's render-target memory at `memory_size`.
   struct ModeMemory {
@@ -40,7 +46,8 @@ struct SceneInfo {
   [[nodiscard]] bool empty() const { return triangles == 0; }
 };
 
-[[nodiscard]] SceneInfo gather_info(World& world, const std::string& scene);
+// `size`: the frame size whose light-list bins it reports (--size).
+[[nodiscard]] SceneInfo gather_info(World& world, const std::string& scene, glm::ivec2 size);
 [[nodiscard]] std::string format_info_text(const SceneInfo& info);
 [[nodiscard]] std::string format_info_json(const SceneInfo& info);
 

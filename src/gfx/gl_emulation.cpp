@@ -553,6 +553,7 @@ void GLAPIENTRY program_uniform1ui(GLuint p, GLint l, GLuint v) { with_program(p
 void GLAPIENTRY program_uniform1f(GLuint p, GLint l, GLfloat v) { with_program(p, [&] { glUniform1f(l, v); }); }
 void GLAPIENTRY program_uniform1iv(GLuint p, GLint l, GLsizei n, const GLint* v) { with_program(p, [&] { glUniform1iv(l, n, v); }); }
 void GLAPIENTRY program_uniform2uiv(GLuint p, GLint l, GLsizei n, const GLuint* v) { with_program(p, [&] { glUniform2uiv(l, n, v); }); }
+void GLAPIENTRY program_uniform3uiv(GLuint p, GLint l, GLsizei n, const GLuint* v) { with_program(p, [&] { glUniform3uiv(l, n, v); }); }
 void GLAPIENTRY program_uniform4iv(GLuint p, GLint l, GLsizei n, const GLint* v) { with_program(p, [&] { glUniform4iv(l, n, v); }); }
 void GLAPIENTRY program_uniform2fv(GLuint p, GLint l, GLsizei n, const GLfloat* v) { with_program(p, [&] { glUniform2fv(l, n, v); }); }
 void GLAPIENTRY program_uniform3fv(GLuint p, GLint l, GLsizei n, const GLfloat* v) { with_program(p, [&] { glUniform3fv(l, n, v); }); }
@@ -639,6 +640,7 @@ void route_missing_entry_points(const GlFeatures& features) {
   route(epoxy_glProgramUniform1f, program_uniform1f, uniforms);
   route(epoxy_glProgramUniform1iv, program_uniform1iv, uniforms);
   route(epoxy_glProgramUniform2uiv, program_uniform2uiv, uniforms);
+  route(epoxy_glProgramUniform3uiv, program_uniform3uiv, uniforms);
   route(epoxy_glProgramUniform4iv, program_uniform4iv, uniforms);
   route(epoxy_glProgramUniform2fv, program_uniform2fv, uniforms);
   route(epoxy_glProgramUniform3fv, program_uniform3fv, uniforms);

@@ -1,5 +1,6 @@
 #include "gfx/shader_program.hpp"
 
+#include <algorithm>
 #include <fstream>
 #include <optional>
 #include <set>
@@ -248,6 +249,11 @@ ShaderProgram ShaderProgram::load(const std::vector<std::string>& files, const s
   glGetProgramiv(result.program_.id(), GL_LINK_STATUS, &ok);
   if (!ok) throw ShaderError(names + ": link failed: " + info_log(result.program_.id(), true));
   apply_bindings(result.program_.id(), bindings);
+  if (std::any_of(files.begin(), files.end(), [](const std::string& file) { return stage_of(file) == GL_COMPUTE_SHADER; })) {
+    GLint size[3] = {1, 1, 1};
+    glGetProgramiv(result.program_.id(), GL_COMPUTE_WORK_GROUP_SIZE, size);
+    result.work_group_size_ = glm::uvec3(size[0], size[1], size[2]);
+  }
   return result;
 }
 
@@ -262,6 +268,7 @@ GLint ShaderProgram::location(const char* name) {
 void ShaderProgram::set(const char* name, int value) { glProgramUniform1i(id(), location(name), value); }
 void ShaderProgram::set(const char* name, unsigned value) { glProgramUniform1ui(id(), location(name), value); }
 void ShaderProgram::set(const char* name, const glm::uvec2& v) { glProgramUniform2uiv(id(), location(name), 1, glm::value_ptr(v)); }
+void ShaderProgram::set(const char* name, const glm::uvec3& v) { glProgramUniform3uiv(id(), location(name), 1, glm::value_ptr(v)); }
 void ShaderProgram::set(const char* name, const glm::ivec4& v) { glProgramUniform4iv(id(), location(name), 1, glm::value_ptr(v)); }
 void ShaderProgram::set(const char* name, std::span<const glm::ivec4> values) {
   glProgramUniform4iv(id(), location(name), static_cast<GLsizei>(values.size()), glm::value_ptr(values.front()));

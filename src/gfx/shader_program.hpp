@@ -56,11 +56,14 @@ class ShaderProgram {
   [[nodiscard]] GLuint id() const { return program_.id(); }
   [[nodiscard]] explicit operator bool() const { return static_cast<bool>(program_); }
   void use() const;
+  // A compute program's local size (its layout, asked once at link); 1x1x1 for the other stages.
+  [[nodiscard]] glm::uvec3 work_group_size() const { return work_group_size_; }
 
   // Uniform setters; an unknown name (optimised out) is ignored, as GL does.
   void set(const char* name, int value);
   void set(const char* name, unsigned value);
   void set(const char* name, const glm::uvec2& value);
+  void set(const char* name, const glm::uvec3& value);
   void set(const char* name, const glm::ivec4& value);
   void set(const char* name, std::span<const glm::ivec4> values);
   void set(const char* name, float value);
@@ -77,6 +80,7 @@ class ShaderProgram {
 
   Program program_;
   std::unordered_map<std::string, GLint> locations_;
+  glm::uvec3 work_group_size_{1};
 };
 
 }  // namespace atrium::gfx

@@ -118,7 +118,6 @@ StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations, std:
   PassTimer timer;
   result.timing = timer.method_name();
   for (const Stage& stage : stages) {
-    stage.program->set("u_census", 0);
     stage.run();
     std::vector<double> times;
     for (std::uint32_t run = 0; run < result.runs; ++run) {

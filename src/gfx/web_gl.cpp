@@ -44,14 +44,14 @@
   X(glMultiDrawElementsIndirect) X(glMultiDrawElementsIndirectCountARB) X(glNamedBufferData) X(glNamedBufferStorage) \
   X(glNamedBufferSubData) X(glNamedFramebufferDrawBuffer) X(glNamedFramebufferDrawBuffers) \
   X(glNamedFramebufferTexture) X(glPixelStorei) X(glPolygonOffset) X(glProgramUniform1f) X(glProgramUniform1i) \
-  X(glProgramUniform1iv) X(glProgramUniform1ui) X(glProgramUniform2fv) X(glProgramUniform2uiv) X(glProgramUniform3fv) \
+  X(glProgramUniform1iv) X(glProgramUniform1ui) X(glProgramUniform2fv) X(glProgramUniform2uiv) X(glProgramUniform3uiv) X(glProgramUniform3fv) \
   X(glProgramUniform4fv) X(glProgramUniform4iv) X(glProgramUniformMatrix3fv) X(glProgramUniformMatrix4fv) \
   X(glReadBuffer) X(glReadPixels) X(glSamplerParameterf) X(glSamplerParameteri) X(glScissor) X(glShaderSource) \
   X(glStencilFunc) X(glStencilMask) X(glStencilOp) X(glStencilOpSeparate) X(glTexImage2D) X(glTexImage2DMultisample) \
   X(glTexParameteri) X(glTexParameteriv) X(glTexStorage2D) X(glTexStorage2DMultisample) X(glTexSubImage2D) \
   X(glTextureParameteri) X(glTextureParameteriv) X(glTextureStorage2D) X(glTextureStorage2DMultisample) \
   X(glTextureSubImage2D) X(glUniform1f) X(glUniform1i) X(glUniform1iv) X(glUniform1ui) X(glUniform2fv) \
-  X(glUniform2uiv) X(glUniform3fv) X(glUniform4fv) X(glUniform4iv) X(glUniformBlockBinding) X(glUniformMatrix3fv) \
+  X(glUniform2uiv) X(glUniform3uiv) X(glUniform3fv) X(glUniform4fv) X(glUniform4iv) X(glUniformBlockBinding) X(glUniformMatrix3fv) \
   X(glUniformMatrix4fv) X(glUnmapBuffer) X(glUnmapNamedBuffer) X(glUseProgram) X(glVertexArrayAttribBinding) \
   X(glVertexArrayAttribFormat) X(glVertexArrayAttribIFormat) X(glVertexArrayBindingDivisor) \
   X(glVertexArrayElementBuffer) X(glVertexArrayVertexBuffer) X(glVertexAttribDivisor) X(glVertexAttribI4ui) \

@@ -503,6 +503,8 @@ void MeshRenderer::take_reports(FrameStats& stats) {
   const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
   stats.light_list_entries = lists.entries;
   stats.light_list_overflows = lists.overflowed_frames;
+  stats.light_assignment = lists.assignment;
+  stats.light_list_density = lists.density;
 }
 
 // Read-backs come after the frame: the compute stage stored its targets with

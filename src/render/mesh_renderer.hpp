@@ -48,6 +48,8 @@ struct FrameStats {
   double fragments_per_pixel = 0.0;          // rasterised by geometry passes
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
   std::uint32_t light_list_overflows = 0;    // frames whose lists did not fit (counted as their totals arrive)
+  lighting::LightAssignment light_assignment = lighting::LightAssignment::Automatic;  // the latest frame's (light_assignment_label)
+  double light_list_density = 0.0;  // what the choice of assignment went by (LightIndexList::last_density)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
   std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
 };

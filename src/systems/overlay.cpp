@@ -1,6 +1,7 @@
 #include "systems/overlay.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdio>
 
 #include <imgui.h>
@@ -96,6 +97,16 @@ bool combo(const char* label, const std::string& current, const std::vector<std:
   return changed;
 }
 
+// A combo over an option's names (a k...Names table indexed by the enum).
+template <typename Enum, std::size_t N>
+void enum_combo(const char* label, const std::array<std::string_view, N>& names, Enum& value) {
+  std::vector<std::string> items(names.begin(), names.end());
+  std::string chosen;
+  if (combo(label, items[static_cast<std::size_t>(value)], items, chosen)) {
+    value = static_cast<Enum>(std::find(items.begin(), items.end(), chosen) - items.begin());
+  }
+}
+
 void Overlay::statistics(ecs::Registry& registry) {
   const auto& clock = registry.resource<ecs::FrameClock>();
   window_seconds_ += clock.delta_seconds;
@@ -126,7 +137,9 @@ void Overlay::statistics(ecs::Registry& registry) {
   }
   ImGui::Text("full-screen passes in the %s stage", std::string(lighting::kLightingStageNames[static_cast<std::size_t>(stats.lighting_stage)]).c_str());
   if (stats.light_list_entries > 0) {
-    ImGui::Text("light lists: %u entries, %u overflowed frames", stats.light_list_entries, stats.light_list_overflows);
+    ImGui::Text("light lists: %u entries (%s, density %.4f), %u overflowed frames", stats.light_list_entries,
+                std::string(lighting::light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density,
+                stats.light_list_overflows);
   }
   if (stats.shadows.atlas_size > 0) {
     ImGui::Text("shadows: %u lights, %u maps drawn, %u reused (%d^2 atlas)", stats.shadows.lights, stats.shadows.maps_rendered,
@@ -180,19 +193,11 @@ void Overlay::controls(ecs::Registry& registry) {
   if (combo("debug view", settings.debug_view.empty() ? views[0] : settings.debug_view, views, chosen)) {
     settings.debug_view = chosen == views[0] ? "" : chosen;
   }
-  std::vector<std::string> slicings;
-  for (const auto name : lighting::kZSlicingNames) slicings.emplace_back(name);
-  auto& slicing = settings.technique_options.z_slicing;
-  if (combo("z slicing", std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]), slicings, chosen)) {
-    slicing = static_cast<lighting::ZSlicing>(std::find(slicings.begin(), slicings.end(), chosen) - slicings.begin());
-  }
-  // Where the full-screen passes run: the same pictures; the pass table shows what each stage costs.
-  std::vector<std::string> stages;
-  for (const auto name : lighting::kLightingStageNames) stages.emplace_back(name);
-  auto& stage = settings.technique_options.lighting_stage;
-  if (combo("lighting stage", std::string(lighting::kLightingStageNames[static_cast<std::size_t>(stage)]), stages, chosen)) {
-    stage = static_cast<lighting::LightingStage>(std::find(stages.begin(), stages.end(), chosen) - stages.begin());
-  }
+  enum_combo("z slicing", lighting::kZSlicingNames, settings.technique_options.z_slicing);
+  // Where the full-screen passes run, and how light lists are built: the same
+  // pictures either way; the pass table shows what each costs.
+  enum_combo("lighting stage", lighting::kLightingStageNames, settings.technique_options.lighting_stage);
+  enum_combo("light assignment", lighting::kLightAssignmentNames, settings.technique_options.light_assignment);
   std::vector<std::string> sample_counts{"off"};
   for (int samples = 2; samples <= max_msaa_samples_; samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
   int& msaa = settings.technique_options.msaa;

@@ -51,7 +51,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 28u);
+  ASSERT_EQ(header.size(), 29u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -65,6 +65,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[25], "gpu_waits");
   EXPECT_EQ(header[26], "skipped");
   EXPECT_EQ(header[27], "lighting_stage");
+  EXPECT_EQ(header[28], "light_lists");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -88,6 +89,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_GT(std::stod(f[24]), 0.0) << "the passes' summed time";
     EXPECT_LE(std::stod(f[24]), std::stod(f[7]) * 1.05) << "the passes fit in the frame";
     EXPECT_EQ(f[26], "") << "nothing skipped";
+    EXPECT_EQ(f[28], "") << "neither mode has light lists";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
@@ -106,7 +108,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
 }
 
 // --lighting-stage LIST: each mode is measured in each stage, named with the
-// stage asked for; the CSV's last column says the stage it ran in (auto takes
+// stage asked for; the CSV's lighting_stage column says the stage it ran in (auto takes
 // the fragment stage on llvmpipe), and a stage the frame cannot run is a
 // refused row, not a failed sweep.
 TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
@@ -119,23 +121,24 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
     std::istringstream csv(read_text(folder / "s.csv"));
     std::string line;
     std::getline(csv, line);
-    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage")) << line;
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists")) << line;
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     return rows;
   };
   const auto rows = run("--lighting-stage fragment,compute,auto");
   ASSERT_EQ(rows.size(), 3u);
-  EXPECT_EQ(rows[0].back(), "fragment");
-  EXPECT_EQ(rows[1].back(), "compute");
-  EXPECT_EQ(rows[2].back(), gfx::is_software_renderer() ? "fragment" : "compute");
+  EXPECT_EQ(rows[0][27], "fragment");
+  EXPECT_EQ(rows[1][27], "compute");
+  EXPECT_EQ(rows[2][27], gfx::is_software_renderer() ? "fragment" : "compute");
+  EXPECT_TRUE(rows[0][28].starts_with("2x2 tiles of 16 px, ")) << rows[0][28];
   const std::string md = read_text(folder / "stdout.txt");
   EXPECT_NE(md.find("| lights | tiled-deferred/fragment | tiled-deferred/compute | tiled-deferred/auto |"), std::string::npos) << md;
   const auto refused = run("--msaa 2 --lighting-stage fragment,compute");
   ASSERT_EQ(refused.size(), 2u);
   EXPECT_EQ(refused[0][17], "");
   EXPECT_NE(refused[1][17].find("the compute stage does not shade MSAA edges per sample"), std::string::npos) << refused[1][17];
-  EXPECT_EQ(refused[1].back(), "") << "a refused run has no stage";
+  EXPECT_EQ(refused[1][27], "") << "a refused run has no stage";
   fs::remove_all(folder);
 }
 
@@ -155,8 +158,11 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 28u) << line;
+    ASSERT_EQ(f.size(), 29u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
+    // A pixel grid never has fewer tiles than 16x9 (32x18 pixels: 2-pixel tiles), each cut into 32 slices.
+    if (f[0] == "clustered-forward") EXPECT_TRUE(f[28].starts_with("16x9x32 clusters, ")) << f[28];
+    else EXPECT_EQ(f[28], "");
     EXPECT_NE(f[11], "-") << "lights evaluated per pixel, counted under each scheme";
   }
   EXPECT_EQ(measured, (std::vector<std::string>{"forward", "clustered-forward/log", "clustered-forward/uniform",

@@ -74,6 +74,30 @@ TEST(Cli, TakesTheGnuFormAndTheLastOfARepeatedOption) {
   EXPECT_EQ(usage_error({"--lights=many"}), "--lights expects a whole number from 0 to 1048576, got 'many'");
 }
 
+// --cluster-grid: tiles in pixels (NpxxZ, Npx) or clusters per axis (XxYxZ);
+// a pixel grid follows the frame's size, with at least 16x9 tiles and at most 2^18 clusters.
+TEST(Cli, ClusterGridsInPixelsOrPerAxis) {
+  using lighting::ClusterGridSize;
+  EXPECT_EQ(parse({"render", "--out", "x.png"}).technique_options.cluster_grid, ClusterGridSize::pixels(24, 32));
+  EXPECT_EQ(parse({"render", "--out", "x.png", "--cluster-grid", "40pxx12"}).technique_options.cluster_grid, ClusterGridSize::pixels(40, 12));
+  EXPECT_EQ(parse({"render", "--out", "x.png", "--cluster-grid", "16px"}).technique_options.cluster_grid, ClusterGridSize::pixels(16, 32));
+  EXPECT_EQ(parse({"render", "--out", "x.png", "--cluster-grid", "16x9x24"}).technique_options.cluster_grid,
+            ClusterGridSize::fixed({16, 9, 24}));
+  EXPECT_EQ(usage_error({"render", "--out", "x.png", "--cluster-grid", "24pxy"}),
+            "--cluster-grid expects NpxxZ, Npx or XxYxZ (e.g. 24pxx32, 16x9x32), got '24pxy'");
+  EXPECT_EQ(usage_error({"render", "--out", "x.png", "--cluster-grid", "4px"}), "--cluster-grid expects a whole number from 8 to 512, got '4'");
+
+  const ClusterGridSize grid;
+  EXPECT_EQ(grid.at({1920, 1080}), glm::uvec3(80, 45, 32));
+  EXPECT_EQ(grid.at({320, 180}), glm::uvec3(16, 9, 32)) << "never fewer tiles than the 16x9 of the fixed grid before";
+  EXPECT_EQ(grid.at({640, 360}), glm::uvec3(27, 15, 32));
+  EXPECT_EQ(grid.at({3840, 2160}), glm::uvec3(120, 68, 32)) << "4K: 32-pixel tiles, 261,120 clusters";
+  const glm::uvec3 huge = grid.at({8192, 8192});
+  EXPECT_LE(std::uint64_t{huge.x} * huge.y * huge.z, ClusterGridSize::kMaxPixelClusters);
+  EXPECT_GT(std::uint64_t{huge.x} * huge.y * huge.z, ClusterGridSize::kMaxPixelClusters * 9 / 10);
+  EXPECT_EQ(ClusterGridSize::fixed({16, 9, 24}).at({8192, 8192}), glm::uvec3(16, 9, 24));
+}
+
 TEST(Cli, VersionAndPerCommandHelp) {
   EXPECT_EQ(parse({"--version"}).command, Command::Version);
   EXPECT_EQ(version_text().rfind("atrium ", 0), 0u);  // the number itself: the version CLI test
@@ -126,7 +150,7 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--warmup", "1"},            {"--frame-limit", "250"},        {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
       {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"},
-      {"--lighting-stage", "compute"}};
+      {"--lighting-stage", "compute"}, {"--light-assignment", "gather"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench, Command::Probe}) {
     std::istringstream help(help_text(command));
     int options = 0;

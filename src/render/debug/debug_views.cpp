@@ -157,7 +157,7 @@ std::optional<SelectedView> select_view(std::string_view name, const render::Fra
 DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
     : gpu_(gpu),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa),
-      cluster_dims_(options.cluster_grid),
+      cluster_grid_(options.cluster_grid),
       z_slicing_(options.z_slicing),
       depth_sampler_(gfx::create_sampler()) {
   glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
@@ -356,7 +356,8 @@ std::vector<DebugViews::CountAverage> DebugViews::take_averages() {
 }
 
 void DebugViews::show_depth_slices(const DebugViewFrame& frame) {
-  if (!slicing_) slicing_ = std::make_unique<ClusterGrid>(cluster_dims_, z_slicing_);
+  const glm::uvec3 dims = cluster_grid_.at(frame.targets.size);
+  if (!slicing_ || slicing_->dims() != dims) slicing_ = std::make_unique<ClusterGrid>(dims, z_slicing_);
   slicing_->update(frame.frame.projection, frame.frame.near_plane, frame.frame.far_plane);
   slicing_->bind();
   gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"}, {{"DEPTH_SLICES"}});

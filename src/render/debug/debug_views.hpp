@@ -202,7 +202,7 @@ class DebugViews {
   GBuffer gbuffer_;
   // The slicing the clustered modes use with these options, for depth-slices
   // in any mode; made when that view is first shown.
-  glm::uvec3 cluster_dims_;
+  ClusterGridSize cluster_grid_;
   ZSlicing z_slicing_;
   std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;

@@ -12,11 +12,12 @@ namespace {
 constexpr GLuint kBoundsBinding = 4, kPerClusterBinding = 6;
 }  // namespace
 
-LightScatterPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only) {
+LightAssignmentPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only,
+                                                     LightAssignment choice) {
   std::vector<gfx::ShaderDefine> defines;
   if (bounds == ClusterBounds::Pixels) defines.push_back({"PIXEL_BOUNDS"});
   else if (active_only) defines.push_back({"ACTIVE_ONLY"});
-  return LightIndexList::programs(shaders, "clustered/assign.comp", defines);
+  return LightIndexList::programs(shaders, "clustered/assign.comp", choice, defines);
 }
 
 ClusterGrid::ClusterGrid(glm::uvec3 dims, ZSlicing slicing)
@@ -26,7 +27,7 @@ ClusterGrid::ClusterGrid(glm::uvec3 dims, ZSlicing slicing)
       bounds_(gfx::create_buffer()),
       active_(gfx::create_buffer()),
       pixel_bounds_(gfx::create_buffer()),
-      list_(dims_.x * dims_.y * dims_.z) {
+      list_(dims_) {
   glNamedBufferStorage(uniform_buffer_.id(), sizeof(ClusterUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(bounds_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(ClusterBox)), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -119,7 +120,7 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
   return static_cast<std::uint32_t>(std::clamp(slice, 1.0f, static_cast<float>(dims_.z - 1)));
 }
 
-void ClusterGrid::assign(const LightScatterPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
+void ClusterGrid::assign(const LightAssignmentPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
   list_.assign(light_count, programs, [&] {
     glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());

@@ -44,15 +44,16 @@ class ClusterGrid {
   // The assignment programs: with `bounds` Pixels, clusters are tested by the
   // box of their pixels (pixel_bounds_buffer(), filled by
   // shaders/clustered/mark_active.comp); else by the grid's boxes, and with
-  // `active_only` clusters flagged inactive get no lights.
-  [[nodiscard]] static LightScatterPrograms assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only);
+  // `active_only` clusters flagged inactive get no lights; `choice`: scatter, gather or per frame.
+  [[nodiscard]] static LightAssignmentPrograms assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only,
+                                                               LightAssignment choice = LightAssignment::Automatic);
 
   // Recomputes the slicing and the clusters' bounds if the projection changed.
   void update(const glm::mat4& projection, float near_plane, float far_plane);
   // Assigns the first `light_count` lights of the bound light buffer; `per_cluster`
   // is the buffer of per-cluster flags or pixel boxes the programs read, or 0.
   // Throws gfx::ResourceLimitError when the lists cannot fit.
-  void assign(const LightScatterPrograms& programs, std::uint32_t light_count, GLuint per_cluster = 0);
+  void assign(const LightAssignmentPrograms& programs, std::uint32_t light_count, GLuint per_cluster = 0);
   // Binds the uniform block and the range and index buffers for shading.
   void bind() const;
   // The grid's uniform block (common/clusters.glsl), for passes that bind it themselves.

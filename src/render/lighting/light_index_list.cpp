@@ -12,16 +12,19 @@
 namespace atrium::lighting {
 namespace {
 constexpr GLuint kScatterGroup = 64, kSortGroupBins = 64, kMaxGroups = 65535;
-// u_step in shaders/common/light_scatter.glsl.
-constexpr std::uint32_t kStepCount = 0, kStepCountLarge = 1, kStepWrite = 2, kStepWriteLarge = 3;
+// u_step in shaders/common/light_assignment.glsl.
+constexpr std::uint32_t kStepCount = 0, kStepCountLarge = 1, kStepWrite = 2, kStepWriteLarge = 3, kStepOverflow = 4;
+// Bins of a gather work group (shaders/common/light_gather.glsl); it walks its lights 1,024 at a time.
+constexpr GLuint kGatherGroup = 64, kGatherBatch = 1024;
 // LongBins in shaders/common/light_list_sort.glsl and BigLights in
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
 constexpr std::size_t kListHeader = 4;
 constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
 }  // namespace
 
-LightIndexList::LightIndexList(std::uint32_t bins)
-    : bins_(std::max<std::uint32_t>(bins, 1)),
+LightIndexList::LightIndexList(glm::uvec3 shape)
+    : shape_(glm::max(shape, glm::uvec3(1))),
+      bins_(shape_.x * shape_.y * shape_.z),
       max_entries_(std::min<std::uint64_t>(gfx::storage_block_limit() / sizeof(std::uint32_t), 0xffffffffu)),
       loop_limit_(gfx::shader_loop_limit()),
       software_(gfx::is_software_renderer()),
@@ -30,7 +33,7 @@ LightIndexList::LightIndexList(std::uint32_t bins)
       bin_counts_(gfx::create_buffer()),
       long_bins_(gfx::create_buffer()),
       totals_(sizeof(Total)) {
-  static_assert(sizeof(Total) == 20, "must match LightTotal in shaders/common/light_lists.glsl");
+  static_assert(sizeof(Total) == 24, "must match LightTotal in shaders/common/light_lists.glsl");
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * 2 * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(bin_counts_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -45,11 +48,46 @@ LightIndexList::LightIndexList(std::uint32_t bins)
   reserve_lights(1);
 }
 
-LightScatterPrograms LightIndexList::programs(gfx::ShaderLibrary& shaders, const std::string& source, std::vector<gfx::ShaderDefine> defines) {
-  gfx::ShaderProgram& scatter = shaders.get({source}, defines);
-  defines.push_back({"LARGE_LIGHTS"});
-  return {scatter, shaders.get({source}, defines), shaders.get({"common/light_list_scan.comp"}),
-          shaders.get({"common/light_list_sort.comp"}, {{"SHORT"}}), shaders.get({"common/light_list_sort.comp"})};
+std::string describe(const LightBins& bins) {
+  if (bins.binning == LightBins::Binning::Clusters) {
+    return std::to_string(bins.clusters.x) + "x" + std::to_string(bins.clusters.y) + "x" + std::to_string(bins.clusters.z) + " clusters";
+  }
+  return std::to_string(bins.tiles.x) + "x" + std::to_string(bins.tiles.y) + " tiles of " + std::to_string(bins.tile_size) + " px";
+}
+
+LightAssignmentPrograms LightIndexList::programs(gfx::ShaderLibrary& shaders, const std::string& source, LightAssignment choice,
+                                                 std::vector<gfx::ShaderDefine> defines) {
+  auto with = [&](const char* define) {
+    std::vector<gfx::ShaderDefine> more = defines;
+    more.push_back({define});
+    return more;
+  };
+  return {shaders.get({source}, defines),
+          shaders.get({source}, with("LARGE_LIGHTS")),
+          shaders.get({source}, with("GATHER")),
+          shaders.get({"common/light_list_scan.comp"}),
+          shaders.get({"common/light_list_sort.comp"}, {{"SHORT"}}),
+          shaders.get({"common/light_list_sort.comp"}),
+          choice};
+}
+
+namespace {
+// Whether the gather's walk (every light once, plus per batch of lights one
+// pass over the group's 64 segments and the staging's 16) stays under a
+// driver's cap on loop iterations (0: none).
+bool gather_fits_loops(std::uint32_t light_count, std::uint32_t loop_limit) {
+  const std::uint64_t iterations = std::uint64_t{light_count} + (std::uint64_t{light_count} / kGatherBatch + 1) * (kGatherGroup + 16);
+  return loop_limit == 0 || iterations < loop_limit;
+}
+}  // namespace
+
+LightAssignment LightIndexList::assignment_for(std::uint32_t light_count, std::uint64_t entries, std::uint32_t filled_bins,
+                                               std::uint32_t loop_limit, bool software_renderer, bool sliced) {
+  if (light_count == 0 || filled_bins == 0 || !gather_fits_loops(light_count, loop_limit)) return LightAssignment::Scatter;
+  if (!software_renderer && light_count > kGatherMostLightsGpu) return LightAssignment::Scatter;
+  const double density = static_cast<double>(entries) / (static_cast<double>(filled_bins) * light_count);
+  const double threshold = software_renderer ? kGatherDensitySoftware : sliced ? kGatherDensityGpuClusters : kGatherDensityGpuTiles;
+  return density >= threshold ? LightAssignment::Gather : LightAssignment::Scatter;
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
@@ -91,6 +129,8 @@ void LightIndexList::take(const Total& total, std::uint32_t light_count, bool dr
   last_total_ = total.entries;
   if (drawn && total.overflow_lights > 0) ++overflow_frames_;
   wanted_ = std::max(wanted_, total.entries);
+  filled_bins_ = total.filled_bins;
+  density_ = light_count > 0 && total.filled_bins > 0 ? static_cast<double>(total.entries) / (static_cast<double>(total.filled_bins) * light_count) : 0.0;
   arrived_ = true;
   if (light_count > 0) entries_per_light_ = static_cast<double>(total.entries) / light_count;
 }
@@ -114,7 +154,13 @@ std::uint32_t LightIndexList::big_light_candidates(std::uint32_t light_count, bo
   return software_renderer ? kMost : std::clamp<std::uint32_t>(light_count / 32, 32, kMost);
 }
 
-void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& programs, const std::function<void()>& bind_inputs) {
+void LightIndexList::run(std::uint32_t light_count, const LightAssignmentPrograms& programs, const std::function<void()>& bind_inputs) {
+  LightAssignment method = programs.choice;
+  const std::uint64_t entries = static_cast<std::uint64_t>(std::ceil(entries_per_light_ * light_count));
+  if (method == LightAssignment::Automatic) method = assignment_for(light_count, arrived_ ? entries : 0, arrived_ ? filled_bins_ : 0, loop_limit_, software_, shape_.z > 1);
+  // Asked for by name, the gather still keeps under a driver's loop cap (the scatter's lists are the same).
+  if (method == LightAssignment::Gather && !gather_fits_loops(light_count, loop_limit_)) method = LightAssignment::Scatter;
+  last_assignment_ = method;
   Total start;
   start.capacity = capacity_;
   glNamedBufferSubData(total_.id(), 0, sizeof start, &start);
@@ -128,6 +174,36 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightFitsBinding, fits_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBigLightsBinding, big_lights_.id());
   bind_inputs();
+  if (method == LightAssignment::Gather) gather(light_count, programs);
+  else scatter(light_count, programs);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentPrograms& programs) {
+  // Blocks of 8x8 bins (kGatherGroup), per slice.
+  const GLuint groups = ((shape_.x + 7) / 8) * ((shape_.y + 7) / 8) * shape_.z;
+  auto dispatch_bins = [&] { glDispatchCompute(std::min(groups, kMaxGroups), (groups + kMaxGroups - 1) / kMaxGroups, 1); };
+  programs.gather.use();
+  programs.gather.set("u_bin_shape", shape_);
+  programs.gather.set("u_step", kStepCount);
+  dispatch_bins();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  programs.scan.use();
+  programs.scan.set("u_bins", bins_);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  programs.gather.use();
+  programs.gather.set("u_step", kStepWrite);
+  dispatch_bins();
+  // Only a frame whose demand did not fit lists its lights as overflowed (each invocation checks).
+  const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
+  if (light_groups > 0) {
+    programs.gather.set("u_step", kStepOverflow);
+    glDispatchCompute(light_groups, 1, 1);
+  }
+}
+
+void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPrograms& programs) {
   const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
   // The large lights, a work group each: as many as the count step listed (no read-back).
   auto large_lights = [&](std::uint32_t step) {
@@ -166,10 +242,9 @@ void LightIndexList::run(std::uint32_t light_count, const LightScatterPrograms& 
     glDispatchComputeIndirect(0);
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
-void LightIndexList::assign(std::uint32_t light_count, const LightScatterPrograms& programs, const std::function<void()>& bind_inputs) {
+void LightIndexList::assign(std::uint32_t light_count, const LightAssignmentPrograms& programs, const std::function<void()>& bind_inputs) {
   poll();
   // This frame's lights at the entries per light last seen: a jump in the
   // light count is met in the frame it happens, not one later.

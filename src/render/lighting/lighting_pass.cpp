@@ -1,5 +1,6 @@
 #include "render/lighting/lighting_pass.hpp"
 
+#include <algorithm>
 #include <array>
 
 #include "gfx/limits.hpp"
@@ -29,14 +30,21 @@ LightingStage resolve_lighting_stage(const TechniqueOptions& options) {
 std::string_view lighting_stage_name(LightingStage stage) { return kLightingStageNames[static_cast<std::size_t>(stage)]; }
 
 void dispatch_per_pixel(gfx::ShaderProgram& program, glm::ivec2 size) {
-  GLint group[3] = {1, 1, 1};
-  glGetProgramiv(program.id(), GL_COMPUTE_WORK_GROUP_SIZE, group);
+  const glm::uvec2 group(program.work_group_size());
+  const glm::uvec2 pixels(glm::max(size, glm::ivec2(0)));
   program.use();
-  glDispatchCompute(static_cast<GLuint>((size.x + group[0] - 1) / group[0]), static_cast<GLuint>((size.y + group[1] - 1) / group[1]), 1);
+  glDispatchCompute((pixels.x + group.x - 1) / group.x, (pixels.y + group.y - 1) / group.y, 1);
+}
+
+std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage) {
+  const std::uint64_t budget = stage == LightingStage::Compute ? kComputeEvaluationsPerRun : kFragmentEvaluationsPerRun;
+  return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / std::max<std::uint64_t>(pixels, 1), 1, kMostLightsPerRun));
 }
 
 LightingPass::LightingPass(gfx::ShaderLibrary& shaders, const std::string& file, std::vector<gfx::ShaderDefine> defines,
-                           const TechniqueOptions& options) {
+                           const TechniqueOptions& options, Write write)
+    : write_(write) {
+  if (write == Write::Add) defines.push_back({"ADD_LIGHTS"});
   if (resolve_lighting_stage(options) == LightingStage::Compute) {
     compute_ = &shaders.get({file + ".comp"}, defines);
   } else {
@@ -59,16 +67,25 @@ void LightingPass::declare(render::PassBuilder& pass, const GBuffer& gbuffer, co
 }
 
 void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer, const FrameContext& frame, const FrameTargets& targets) const {
+  const bool add = write_ == Write::Add;
   if (!compute_) {
+    if (add) {
+      glEnable(GL_BLEND);
+      glBlendFunc(GL_ONE, GL_ONE);
+    }
     gbuffer.draw_fullscreen(res, *fragment_, targets);
+    if (add) glDisable(GL_BLEND);
     return;
   }
   gbuffer.bind_textures(res);
-  glBindImageTexture(kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  const GLenum access = add ? GL_READ_WRITE : GL_WRITE_ONLY;
+  glBindImageTexture(kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, access, GL_RGBA16F);
   if (frame.diffuse_light.valid()) {
-    glBindImageTexture(kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
+    glBindImageTexture(kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
   }
+  // The run before stored these pixels: its stores must land before this run reads them.
+  if (add) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   dispatch_per_pixel(*compute_, targets.size);
 }
 

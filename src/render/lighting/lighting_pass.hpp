@@ -40,15 +40,31 @@ inline constexpr GLuint kDisplayImageUnit = 2;
 [[nodiscard]] std::string_view lighting_stage_name(LightingStage stage);
 
 // Runs a compute program over every pixel of `size` in the program's own work
-// group size (GL_COMPUTE_WORK_GROUP_SIZE): the shader's layout is the one fact.
+// group size (ShaderProgram::work_group_size, read once at link): the shader's layout is the one fact.
 void dispatch_per_pixel(gfx::ShaderProgram& program, glm::ivec2 size);
+
+// A full-screen pass that sums every light is split into runs of this many
+// lights (or fewer) at `pixels` pixels in `stage`, so that no dispatch or draw
+// runs longer than about 20 ms on an H200: kLightEvaluationsPerRun evaluations
+// a run (the compute stage's 2^33 at 4.2e11 a second; the fragment stage's
+// 2^28 at 1.3e10, its 4 SMs of 132), and never more than kMostLightsPerRun,
+// which keeps a pixel's loop under llvmpipe's cap. At 2^20 lights and 1080p a
+// single dispatch took 5.2 s (docs/benchmarks.md).
+inline constexpr std::uint64_t kComputeEvaluationsPerRun = std::uint64_t{1} << 33;
+inline constexpr std::uint64_t kFragmentEvaluationsPerRun = std::uint64_t{1} << 28;
+inline constexpr std::uint32_t kMostLightsPerRun = 16384;
+[[nodiscard]] std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage);
 
 class LightingPass {
  public:
+  // How a run writes the lit targets: Store replaces them; Add (a later run
+  // of a pass split by lights, its shaders built with ADD_LIGHTS) adds its
+  // sums to what the runs before it wrote.
+  enum class Write { Store, Add };
   // `file` names the pass's GLSL without its stage's extension
   // ("tiled/lighting": tiled/lighting.frag or tiled/lighting.comp).
   LightingPass(gfx::ShaderLibrary& shaders, const std::string& file, std::vector<gfx::ShaderDefine> defines,
-               const TechniqueOptions& options);
+               const TechniqueOptions& options, Write write = Write::Store);
 
   [[nodiscard]] LightingStage stage() const { return compute_ ? LightingStage::Compute : LightingStage::Fragment; }
   // Calls `f` with each program (to set the same uniforms on all).
@@ -62,6 +78,7 @@ class LightingPass {
  private:
   std::optional<SampleRatePrograms> fragment_;
   gfx::ShaderProgram* compute_ = nullptr;
+  Write write_;
 };
 
 }  // namespace atrium::lighting

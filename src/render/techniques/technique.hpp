@@ -93,6 +93,8 @@ class LightingTechnique {
   struct ListStats {
     std::uint32_t entries = 0;
     std::uint32_t overflowed_frames = 0;
+    LightAssignment assignment = LightAssignment::Automatic;  // the latest frame's (Automatic: built on the CPU)
+    double density = 0.0;  // LightIndexList::last_density()
   };
   [[nodiscard]] virtual ListStats light_lists() { return {}; }
 };

@@ -421,7 +421,7 @@ TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyModeAndScheme) {
       assets::write_png("debug_view_depth_slices_" + std::string(mode) + "_" + std::string(lighting::kZSlicingNames[scheme]) + ".png",
                         image);
       const std::vector<float> depth = world.renderer().read_view_depth();
-      lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid, slicing);
+      lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid.at(kSize), slicing);
       const auto& view = world.registry().resource<ViewState>();
       grid.update(view.projection, view.near_plane, view.far_plane);
       std::map<std::uint32_t, std::map<Rgb, int>> colours;

@@ -58,7 +58,7 @@ TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
     SCOPED_TRACE(name_of(slicing));
     World world({.scene = "atrium", .lights = 300u, .mode = "clustered-deferred", .view = 3, .size = {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
-    options.cluster_grid = {4, 3, 6};
+    options.cluster_grid = lighting::ClusterGridSize::fixed({4, 3, 6});
     options.cluster_bounds = lighting::ClusterBounds::Grid;
     options.z_slicing = slicing;
     draw_settled(world);
@@ -112,7 +112,7 @@ TEST_F(ClusterGridTest, ManyLightsEqualTheCpuInLightOrder) {
   // light order included (the sort), long and short lists alike.
   constexpr std::uint32_t kLights = 40000;
   World world({.scene = "atrium", .lights = kLights, .mode = "clustered-forward", .size = {96, 54}, .light_radius = 0.4f});
-  world.registry().resource<RendererSettings>().technique_options.cluster_grid = {4, 3, 6};
+  world.registry().resource<RendererSettings>().technique_options.cluster_grid = lighting::ClusterGridSize::fixed({4, 3, 6});
   world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
   draw_settled(world);
   std::size_t longest = 0, late_lights = 0;

@@ -44,7 +44,7 @@ TEST_F(CpuLightLists, EqualTheGpuListsOfTheSameGridInLightOrder) {
   for (const lighting::ZSlicing slicing : {lighting::ZSlicing::Log, lighting::ZSlicing::Uniform}) {
     World world({.scene = "atrium", .lights = 6000u, .mode = "clustered-forward", .view = 2, .size = {160, 90}, .light_radius = 1.5f});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
-    options.cluster_grid = {8, 5, 12};
+    options.cluster_grid = lighting::ClusterGridSize::fixed({8, 5, 12});
     options.cluster_bounds = lighting::ClusterBounds::Grid;
     options.z_slicing = slicing;
     draw_settled(world);

@@ -1,7 +1,7 @@
 // The compute lighting stage (--lighting-stage compute): every mode draws the
 // picture it draws in the fragment stage and forward's picture, with each
 // G-buffer layout, split light sums, shadows, the fireflies and the debug views
-// it offers; the full-screen passes really run as compute (no fragment shaded);
+// it offers, and with many lights summed in runs; the full-screen passes really run as compute (no fragment shaded);
 // combinations it cannot run are refused in one line; auto takes the stage
 // measured faster on this renderer; the image units the GLSL names are the
 // C++ constants.
@@ -106,6 +106,40 @@ TEST_F(ComputeStageWith, SplitLightSumsAsTheFragmentStageWritesThem) {
       EXPECT_LT(largest, 1e-3) << mode << " target " << target;
     }
   }
+}
+
+// 20,000 lights are two runs of the deferred modes' pass over every light
+// (lights_per_run: 16,384 at most): the later run adds to the first, in both
+// stages, and the sum is forward's picture.
+TEST_F(ComputeStageWith, ManyLightsSummedInRunsDrawForwardsPicture) {
+  constexpr std::uint32_t kLights = 20000;
+  constexpr glm::ivec2 kSmall{48, 27};
+  WorldOptions options{.scene = "atrium", .lights = kLights, .mode = "forward", .view = 3, .size = kSmall, .light_radius = 1.0f};
+  World reference_world(options);
+  reference_world.frame(0.0);
+  const assets::Image reference = reference_world.renderer().read_output();
+  for (const std::string mode : {"deferred", "deferred-radius"}) {
+    options.mode = mode;
+    World world(options);
+    world.registry().resource<RendererSettings>().technique_options.split_lighting = true;
+    for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute}) {
+      ASSERT_LT(lighting::lights_per_run(static_cast<std::uint64_t>(kSmall.x) * kSmall.y, stage), kLights) << "two runs or more";
+      const assets::Image image = draw(world, stage);
+      EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << mode << ", " << lighting::lighting_stage_name(stage);
+    }
+  }
+}
+
+// A run sums at most 2^33 light evaluations in compute and 2^28 as fragments
+// (about 20 ms each on an H200), and never more than 16,384 lights.
+TEST(LightRuns, KeepEachDispatchShort) {
+  using lighting::lights_per_run;
+  EXPECT_EQ(lights_per_run(1920u * 1080u, LightingStage::Compute), 4142u);
+  EXPECT_EQ(lights_per_run(1920u * 1080u, LightingStage::Fragment), 129u);
+  EXPECT_EQ(lights_per_run(320u * 180u, LightingStage::Compute), lighting::kMostLightsPerRun);
+  EXPECT_EQ(lights_per_run(320u * 180u, LightingStage::Fragment), 4660u);
+  EXPECT_EQ(lights_per_run(std::uint64_t{1} << 40, LightingStage::Fragment), 1u) << "always at least one light";
+  EXPECT_EQ(lights_per_run(0, LightingStage::Compute), lighting::kMostLightsPerRun);
 }
 
 TEST_F(ComputeStageWith, ShadowsFirefliesAndTheOfferedDebugViews) {

@@ -29,10 +29,12 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       // Pixel boxes and active flags are marked by compute and storage writes: the tier tests the grid's boxes.
       pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels && !compute_free_),
       active_only_(options.active_clusters && !pixel_bounds_ && !compute_free_),
-      grid_(options.cluster_grid, options.z_slicing),
+      grid_size_(options.cluster_grid),
+      z_slicing_(options.z_slicing),
+      grid_(std::make_unique<ClusterGrid>(grid_size_.at({1, 1}), z_slicing_)),
       assign_(compute_free_ ? std::nullopt
-                            : std::optional<LightScatterPrograms>(ClusterGrid::assign_programs(
-                                  gpu.shaders(), pixel_bounds_ ? ClusterBounds::Pixels : ClusterBounds::Grid, active_only_))),
+                            : std::optional<LightAssignmentPrograms>(ClusterGrid::assign_programs(
+                                  gpu.shaders(), pixel_bounds_ ? ClusterBounds::Pixels : ClusterBounds::Grid, active_only_, options.light_assignment))),
       mark_(compute_free_ ? nullptr : &gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
       mark_blended_(compute_free_ ? nullptr
                                   : &gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
@@ -46,17 +48,22 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
+void ClusteredTechnique::resize(const FrameTargets& targets) {
+  const glm::uvec3 dims = grid_size_.at(targets.size);
+  if (dims != grid_->dims()) grid_ = std::make_unique<ClusterGrid>(dims, z_slicing_);
+}
+
 GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
   GLuint buffer = 0;
   if (pixel_bounds_) {
-    grid_.clear_pixel_bounds();
-    buffer = grid_.pixel_bounds_buffer();
+    grid_->clear_pixel_bounds();
+    buffer = grid_->pixel_bounds_buffer();
   } else {
     const std::uint32_t zero = 0;
-    glClearNamedBufferData(grid_.active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    buffer = grid_.active_buffer();
+    glClearNamedBufferData(grid_->active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    buffer = grid_->active_buffer();
   }
-  grid_.bind();
+  grid_->bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
   if (deferred_) gbuffer_.bind_textures(res);
   else glBindTextureUnit(0, shading_depth_.valid() ? res.texture(shading_depth_) : targets.depth_stencil);
@@ -80,7 +87,7 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
 }
 
 void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
-  grid_.update(frame.projection, frame.near_plane, frame.far_plane);
+  grid_->update(frame.projection, frame.near_plane, frame.far_plane);
   shading_depth_ = {};
   if (deferred_) {
     add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
@@ -90,9 +97,9 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
       if (targets.samples > 1) shading_depth_ = pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth);
     }, [this, &frame, &targets](const render::PassResources& res) { draw_prepass(res, frame, targets); });
   }
-  const render::ResourceId lists = grid_.list().import_into(graph, "cluster-light-lists", compute_free_ ? render::ViewKind::None : render::ViewKind::LightBins);
+  const render::ResourceId lists = grid_->list().import_into(graph, "cluster-light-lists", compute_free_ ? render::ViewKind::None : render::ViewKind::LightBins);
   // The light-bins view reads the GPU's lists: not on the compute-free tier.
-  if (!compute_free_) graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_.list(), grid_.uniform_buffer()});
+  if (!compute_free_) graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_->list(), grid_->uniform_buffer(), grid_->dims()});
   graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
     if (deferred_) gbuffer_.read_targets(pass);
     else pass.read(shading_depth_.valid() ? shading_depth_ : frame.scene_depth, render::Access::Sampled);
@@ -100,11 +107,11 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
     pass.write(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
     if (compute_free_) {
-      cpu_lists_.upload(bin_lights_in_clusters(frame.lights, frame.view, grid_));
+      cpu_lists_.upload(bin_lights_in_clusters(frame.lights, frame.view, *grid_));
       return;
     }
     const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;
-    grid_.assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
+    grid_->assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   });
   graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
     if (deferred_) lighting_->declare(pass, gbuffer_, frame);
@@ -136,10 +143,10 @@ void ClusteredTechnique::draw_prepass(const render::PassResources& res, const Fr
 
 void ClusteredTechnique::bind_lists() const {
   if (!compute_free_) {
-    grid_.bind();
+    grid_->bind();
     return;
   }
-  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, grid_.uniform_buffer());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, grid_->uniform_buffer());
   cpu_lists_.bind();
 }
 

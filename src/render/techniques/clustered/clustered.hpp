@@ -11,6 +11,7 @@
 // cpu_light_lists.hpp) as textures (render/storage_free.hpp).
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "render/lighting/cluster_grid.hpp"
@@ -24,13 +25,15 @@ namespace atrium::lighting {
 class ClusteredTechnique final : public LightingTechnique {
  public:
   ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
+  // Sizes the grid for the frame (--cluster-grid in pixels follows the size).
+  void resize(const FrameTargets& targets) override;
   void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
 
-  [[nodiscard]] const ClusterGrid& grid() const { return grid_; }
+  [[nodiscard]] const ClusterGrid& grid() const { return *grid_; }
   [[nodiscard]] ListStats light_lists() override {
     if (compute_free_) return {cpu_lists_.entries(), 0};
-    grid_.list().poll();
-    return {grid_.list().last_total(), grid_.list().overflow_frames()};
+    grid_->list().poll();
+    return {grid_->list().last_total(), grid_->list().overflow_frames(), grid_->list().last_assignment(), grid_->list().last_density()};
   }
 
  private:
@@ -49,8 +52,10 @@ class ClusteredTechnique final : public LightingTechnique {
   bool compute_free_;
   bool pixel_bounds_;
   bool active_only_;
-  ClusterGrid grid_;
-  std::optional<LightScatterPrograms> assign_;  // none on the compute-free tier
+  ClusterGridSize grid_size_;
+  ZSlicing z_slicing_;
+  std::unique_ptr<ClusterGrid> grid_;  // sized by resize()
+  std::optional<LightAssignmentPrograms> assign_;  // none on the compute-free tier
   gfx::ShaderProgram* mark_;                    // nullptr on the compute-free tier
   gfx::ShaderProgram* mark_blended_;
   render::ListTextures cpu_lists_;              // the compute-free tier's

@@ -4,10 +4,18 @@
 
 namespace atrium::lighting {
 
+namespace {
+std::vector<gfx::ShaderDefine> lighting_defines(bool cull_by_radius) {
+  return cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}} : std::vector<gfx::ShaderDefine>{};
+}
+}  // namespace
+
 DeferredTechnique::DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius)
-    : geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
-      lighting_(gpu.shaders(), "deferred/lighting",
-                cull_by_radius ? std::vector<gfx::ShaderDefine>{{"LIGHT_RADIUS_CULL"}} : std::vector<gfx::ShaderDefine>{}, options),
+    : shaders_(gpu.shaders()),
+      options_(options),
+      cull_by_radius_(cull_by_radius),
+      geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
+      lighting_(gpu.shaders(), "deferred/lighting", lighting_defines(cull_by_radius), options),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
@@ -16,8 +24,26 @@ void DeferredTechnique::add_passes(render::FrameGraph& graph, const FrameContext
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     lighting_.declare(pass, gbuffer_, frame);
     pass.read(frame.light_buffer, render::Access::Storage);
-  }, [this, &frame, &targets](const render::PassResources& res) { lighting_.run(res, gbuffer_, frame, targets); });
+  }, [this, &frame, &targets](const render::PassResources& res) { light(res, frame, targets); });
   add_transparency_pass(graph, forward_, frame, targets);
+}
+
+void DeferredTechnique::light(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  const auto lights = static_cast<std::uint32_t>(frame.lights.size());
+  const std::uint32_t per_run = lights_per_run(std::uint64_t{static_cast<std::uint32_t>(targets.size.x)} * static_cast<std::uint32_t>(targets.size.y),
+                                               lighting_.stage());
+  std::uint32_t first = 0;
+  do {
+    const std::uint32_t end = lights - first > per_run ? first + per_run : lights;
+    if (first > 0 && !adding_) adding_.emplace(shaders_, "deferred/lighting", lighting_defines(cull_by_radius_), options_, LightingPass::Write::Add);
+    const LightingPass& pass = first == 0 ? lighting_ : *adding_;
+    pass.each([&](gfx::ShaderProgram& program) {
+      program.set("u_first_light", first);
+      program.set("u_end_light", end);
+    });
+    pass.run(res, gbuffer_, frame, targets);
+    first = end;
+  } while (first < lights);
 }
 
 }  // namespace atrium::lighting

@@ -3,8 +3,11 @@
 // --lighting-stage) reads it and loops over every light for every visible pixel, then blended geometry is drawn forward on top.
 // `deferred-radius` compiles the lighting pass with LIGHT_RADIUS_CULL: a light
 // is skipped where its radius does not reach, which cannot change the picture
-// because the falloff is already zero there.
+// because the falloff is already zero there. Many lights are summed in runs of
+// lights_per_run(), each short on any GPU, the later ones adding to the first.
 #pragma once
+
+#include <optional>
 
 #include "render/lighting/gbuffer.hpp"
 #include "render/lighting/lighting_pass.hpp"
@@ -18,8 +21,15 @@ class DeferredTechnique final : public LightingTechnique {
   void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
 
  private:
+  // The lighting pass over every light, in runs of lights_per_run().
+  void light(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+
+  gfx::ShaderLibrary& shaders_;
+  TechniqueOptions options_;
+  bool cull_by_radius_;
   gfx::ShaderProgram& geometry_;
   LightingPass lighting_;
+  std::optional<LightingPass> adding_;  // the runs after the first (ADD_LIGHTS), built when a frame first needs one
   gfx::ShaderProgram& forward_;
   GBuffer gbuffer_;
 };

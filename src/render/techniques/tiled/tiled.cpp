@@ -13,7 +13,7 @@ TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& o
     : compute_free_(options.compute_free),
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"})),
-      assign_(compute_free_ ? std::nullopt : std::optional<LightScatterPrograms>(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp"))),
+      assign_(compute_free_ ? std::nullopt : std::optional<LightAssignmentPrograms>(LightIndexList::programs(gpu.shaders(), "tiled/assign.comp", options.light_assignment))),
       lighting_(gpu.shaders(), "tiled/lighting", {}, options),
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       blended_bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
@@ -22,13 +22,13 @@ TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& o
 
 void TiledTechnique::resize(const FrameTargets& targets) {
   tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
-  list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
-  blended_list_ = std::make_unique<LightIndexList>(tiles_.x * tiles_.y);
+  list_ = std::make_unique<LightIndexList>(glm::uvec3(tiles_, 1));
+  blended_list_ = std::make_unique<LightIndexList>(glm::uvec3(tiles_, 1));
   tile_bounds_ = gfx::create_buffer();
   glNamedBufferStorage(tile_bounds_.id(), static_cast<GLsizeiptr>(std::size_t{tiles_.x} * tiles_.y * sizeof(TileBounds)), nullptr, 0);
   blended_.set("u_tiles", tiles_);
   if (!compute_free_) {
-    for (gfx::ShaderProgram* program : {bounds_, blended_bounds_, &assign_->scatter, &assign_->scatter_large}) program->set("u_tiles", tiles_);
+    for (gfx::ShaderProgram* program : {bounds_, blended_bounds_, &assign_->scatter, &assign_->scatter_large, &assign_->gather}) program->set("u_tiles", tiles_);
   }
   lighting_.each([&](gfx::ShaderProgram& p) { p.set("u_tiles", tiles_); });
 }
@@ -120,7 +120,8 @@ LightingTechnique::ListStats TiledTechnique::light_lists() {
   list_->poll();
   blended_list_->poll();
   const std::uint32_t blended = blended_listed_ ? blended_list_->last_total() : 0;
-  return {list_->last_total() + blended, list_->overflow_frames() + blended_list_->overflow_frames()};
+  return {list_->last_total() + blended, list_->overflow_frames() + blended_list_->overflow_frames(), list_->last_assignment(),
+          list_->last_density()};
 }
 
 }  // namespace atrium::lighting

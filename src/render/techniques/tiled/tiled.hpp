@@ -58,7 +58,7 @@ class TiledTechnique final : public LightingTechnique {
   bool compute_free_;
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram* bounds_;          // tiled/tile_bounds.comp, from the G-buffer (nullptr on the compute-free tier)
-  std::optional<LightScatterPrograms> assign_;
+  std::optional<LightAssignmentPrograms> assign_;
   LightingPass lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
   gfx::ShaderProgram* blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
