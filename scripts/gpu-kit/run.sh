@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Atrium's GPU kit (made by scripts/gpu-kit.sh): every GPU figure in one
 # command, started with nothing but this folder.
-#   ./run.sh OUT           1920x1080, 128 to 1,048,576 lights, built-in scene and Sponza, each mode in
-#                          the fragment and the compute stage (at most 8 minutes: each step gets what is
-#                          left of that)
+#   ./run.sh OUT           1920x1080, 128 to 131,072 lights, built-in scene and Sponza, each mode in
+#                          the fragment and the compute stage, then the light lists' choices, and
+#                          1,048,576 lights last (the riskiest step) (at most 9 minutes: each step gets
+#                          what is left of that)
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
 # Writes into OUT: report.md (the GL context, the SMs each shader stage reaches, PSNR of every mode against forward,
 # the bench tables, occlusion culling on the CPU and on the GPU), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
@@ -40,10 +41,11 @@ fi
 atrium=$kit/bin/atrium
 sponza=$kit/scenes/sponza.json
 if [ "$quick" = 1 ]; then
-  size=160x90 lights=16,64 frames=2 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 cluster_lights=64 budget=240
+  size=160x90 lights=16,64 frames=1 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 cluster_lights=16,64 \
+    assign_lights=16,64 million=256 budget=240
 else
-  size=1920x1080 lights=128,1024,16384,131072,1048576 frames=5 warmup=2 shadow_lights=1024 shadowed=256 picture_lights=131072 \
-    picture_radius=0.8 cluster_lights=131072 budget=480
+  size=1920x1080 lights=128,1024,16384,131072 frames=5 warmup=2 shadow_lights=1024 shadowed=256 picture_lights=131072 \
+    picture_radius=0.8 cluster_lights=1024,131072 assign_lights=1024,16384,131072 million=1048576 budget=540
 fi
 lights=${ATRIUM_KIT_LIGHTS:-$lights}
 budget=${ATRIUM_KIT_SECONDS:-$budget}
@@ -140,12 +142,24 @@ step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights 
 step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
 step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
   --shadows "$shadowed" --csv "$out/bench-shadows.csv"
-# Clustered lists at 1080p against the grid's tile size: the default 16x9
-# tiles are 120 pixels wide there; 60x34 and 120x68 make them 32 and 16.
-for grid in 16x9x32 60x34x32 120x68x32; do
+# Clustered lists at 1080p against the grid's tile size: the default tiles are
+# 32 pixels at every size (60x34 at 1080p); 16x9 makes them 120 pixels wide
+# there (the default before), 64px and 16px halve and double them.
+grids="16x9x32 64px 32px 24px 16px"
+for grid in $grids; do
   step "clusters $grid" 40 "$out/.clusters-$grid.md" "$atrium" bench --modes clustered-deferred,tiled-deferred --views 1 --size "$size" \
     --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$cluster_lights" --cluster-grid "$grid" \
     --lighting-stage compute
+done
+# Light assignment, each way forced (--light-assignment): at constant density,
+# and with dense lights (Sponza's lion view, lights of 4 m), where the gather wins on llvmpipe.
+for assignment in scatter gather; do
+  step "assignment $assignment, built-in" 40 "$out/.assign-$assignment.md" "$atrium" bench --modes clustered-deferred,tiled-deferred \
+    --views 1 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$assign_lights" \
+    --light-assignment "$assignment" --lighting-stage compute
+  step "assignment $assignment, Sponza lion" 30 "$out/.assign-lion-$assignment.md" "$atrium" bench "$sponza" \
+    --modes clustered-deferred,tiled-deferred --views 4 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 \
+    --lights 1024 --light-radius 4 --light-assignment "$assignment" --lighting-stage compute
 done
 # Occlusion culling where it tests: the grid's street view hides most of what
 # is in view; the same triangles either way, the GPU path with nothing read back.
@@ -159,6 +173,9 @@ step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" -
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
 step "picture, built-in scene" 30 "$out/.render-atrium.txt" "$atrium" render --mode tiled-deferred --lights 1024 --size "$size" \
   --out "$out/atrium.png"
+# The riskiest step last: 2^20 lights (a stall here must not cost the figures above).
+step "a million lights" 90 "$out/.million.md" "$atrium" bench --modes tiled-deferred,clustered-forward,clustered-deferred --views 1 \
+  --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$million" --lighting-stage compute
 plot_note="no plot: python3 with matplotlib is not on this machine"
 for python in /usr/bin/python3 python3; do
   command -v "$python" >/dev/null && "$python" -c "import matplotlib" 2>/dev/null || continue
@@ -203,9 +220,14 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "Bench, built-in scene" "$out/.bench-atrium.md"
   section "Bench, Sponza" "$out/.bench-sponza.md"
   section "Bench, Sponza, $shadowed shadowed lights" "$out/.bench-shadows.md"
-  for grid in 16x9x32 60x34x32 120x68x32; do
+  for grid in $grids; do
     section "Clustered and tiled lists, compute stage, $cluster_lights lights, cluster grid $grid" "$out/.clusters-$grid.md"
   done
+  for assignment in scatter gather; do
+    section "Light assignment $assignment, compute stage, built-in scene, constant density" "$out/.assign-$assignment.md"
+    section "Light assignment $assignment, compute stage, Sponza lion view, 1,024 lights of 4 m" "$out/.assign-lion-$assignment.md"
+  done
+  section "$million lights, compute stage, built-in scene, constant density" "$out/.million.md"
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
   section "Pictures" "$out/.render-sponza.txt"
