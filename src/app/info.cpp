@@ -96,11 +96,13 @@ std::string format_info_text(const SceneInfo& i) {
                 i.parse_seconds, i.decode_seconds, i.upload_seconds, i.warnings, i.gl.renderer.c_str(), i.gl.vendor.c_str(),
                 i.gl.version.c_str(), i.gl.platform.c_str());
   std::string text = buffer;
+  const std::string grid = i.cluster_tile_pixels ? std::to_string(i.cluster_tile_pixels) + "-pixel tiles, at least " +
+                                                       std::to_string(lighting::kMinPixelGridTiles.x) + "x" +
+                                                       std::to_string(lighting::kMinPixelGridTiles.y) + ", --cluster-grid"
+                                                 : "fixed, --cluster-grid";
   char bins[256];
   std::snprintf(bins, sizeof bins, "light bins   at %dx%d: tiles %ux%u of %u px; clusters %ux%ux%u (%s)\n", i.bins_size.x, i.bins_size.y,
-                i.tiles.x, i.tiles.y, i.tile_pixels, i.clusters.x, i.clusters.y, i.clusters.z,
-                i.cluster_tile_pixels ? (std::to_string(i.cluster_tile_pixels) + "-pixel tiles, at least 16x9, --cluster-grid").c_str()
-                                      : "fixed, --cluster-grid");
+                i.tiles.x, i.tiles.y, i.tile_pixels, i.clusters.x, i.clusters.y, i.clusters.z, grid.c_str());
   text += bins;
   if (!i.memory.empty()) {
     char line[256];
