@@ -79,15 +79,19 @@ bool gather_fits_loops(std::uint32_t light_count, std::uint32_t loop_limit) {
   const std::uint64_t iterations = std::uint64_t{light_count} + (std::uint64_t{light_count} / kGatherBatch + 1) * (kGatherGroup + 16);
   return loop_limit == 0 || iterations < loop_limit;
 }
+
+// Entries over bins holding a light times lights: the share of a gather's tests that are hits.
+double density(std::uint64_t entries, std::uint32_t filled_bins, std::uint32_t light_count) {
+  return light_count > 0 && filled_bins > 0 ? static_cast<double>(entries) / (static_cast<double>(filled_bins) * light_count) : 0.0;
+}
 }  // namespace
 
 LightAssignment LightIndexList::assignment_for(std::uint32_t light_count, std::uint64_t entries, std::uint32_t filled_bins,
                                                std::uint32_t loop_limit, bool software_renderer, bool sliced) {
   if (light_count == 0 || filled_bins == 0 || !gather_fits_loops(light_count, loop_limit)) return LightAssignment::Scatter;
   if (!software_renderer && light_count > kGatherMostLightsGpu) return LightAssignment::Scatter;
-  const double density = static_cast<double>(entries) / (static_cast<double>(filled_bins) * light_count);
   const double threshold = software_renderer ? kGatherDensitySoftware : sliced ? kGatherDensityGpuClusters : kGatherDensityGpuTiles;
-  return density >= threshold ? LightAssignment::Gather : LightAssignment::Scatter;
+  return density(entries, filled_bins, light_count) >= threshold ? LightAssignment::Gather : LightAssignment::Scatter;
 }
 
 void LightIndexList::resize(std::uint32_t capacity) {
@@ -130,7 +134,7 @@ void LightIndexList::take(const Total& total, std::uint32_t light_count, bool dr
   if (drawn && total.overflow_lights > 0) ++overflow_frames_;
   wanted_ = std::max(wanted_, total.entries);
   filled_bins_ = total.filled_bins;
-  density_ = light_count > 0 && total.filled_bins > 0 ? static_cast<double>(total.entries) / (static_cast<double>(total.filled_bins) * light_count) : 0.0;
+  density_ = density(total.entries, total.filled_bins, light_count);
   arrived_ = true;
   if (light_count > 0) entries_per_light_ = static_cast<double>(total.entries) / light_count;
 }
