@@ -17,7 +17,8 @@ shift || true
 targets=("$@")
 [ ${#targets[@]} -gt 0 ] || targets=(scene_file gltf texture)
 ./scripts/install-deps.sh
-CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DATRIUM_FUZZ=ON >/dev/null
+CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -g1 -DNDEBUG" \
+  -DATRIUM_FUZZ=ON >/dev/null
 cmake --build build-fuzz -j"$(nproc)" --target scene_file_fuzzer gltf_fuzzer texture_fuzzer model_fuzzer
 testdata=../shared/testdata/gltf
 mkdir -p build-fuzz/crashes
