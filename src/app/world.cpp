@@ -20,7 +20,7 @@
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
 #include "components/system_options.hpp"
-#include "render/contributors.hpp"
+#include "render/frame/frame_modules.hpp"
 #include "components/bounds.hpp"
 #include "systems/bounds.hpp"
 #include "systems/camera.hpp"
@@ -157,7 +157,7 @@ void World::start(const WorldOptions& options) {
   auto& system_options = registry_.set_resource<SystemOptions>();
   for (const auto& [name, value] : scene_.system_options) system_options.set(name, value);
   for (const auto& [name, value] : options.system_options) system_options.set(name, value);
-  registry_.set_resource<RenderContributors>();
+  registry_.set_resource<render::FrameModules>();
   registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
   light_radius_ = options.light_radius;
   spawn(registry_, scene_, light_radius_);

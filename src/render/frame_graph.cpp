@@ -144,6 +144,12 @@ GLuint PassResources::texture(ResourceId resource) const {
   return r.object;
 }
 
+const TextureDesc& PassResources::texture_desc(ResourceId resource) const {
+  const auto& r = graph_.resources_.at(resource.index);
+  if (r.kind != ResourceKind::Texture) throw std::logic_error("frame graph: '" + r.name + "' is not a texture");
+  return r.texture;
+}
+
 GLuint PassResources::buffer(ResourceId resource) const {
   const auto& r = graph_.resources_.at(resource.index);
   if (r.kind != ResourceKind::Buffer) throw std::logic_error("frame graph: '" + r.name + "' is not a buffer");

@@ -114,6 +114,8 @@ class PassResources {
  public:
   [[nodiscard]] GLuint texture(ResourceId resource) const;
   [[nodiscard]] GLuint buffer(ResourceId resource) const;
+  // What a texture resource was declared as (format, size, samples).
+  [[nodiscard]] const TextureDesc& texture_desc(ResourceId resource) const;
   // A framebuffer with these textures as colour attachments 0.. and `depth`
   // (depth-stencil or depth, by its format; invalid: none), made once and kept
   // while the textures live.

@@ -11,13 +11,14 @@
 #include "gfx/gl_features.hpp"
 #include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
-#include "render/contributors.hpp"
-#include "render/light_buffer.hpp"
-#include "render/storage_free.hpp"
-#include "render/debug/debug_views.hpp"
 #include "render/frame/frame_uniforms.hpp"
+#include "render/light_buffer.hpp"
+#include "render/lighting/light_sums_pass.hpp"
 #include "render/lighting/lighting_pass.hpp"
 #include "render/lighting/shading_model.hpp"
+#include "render/output/present_pass.hpp"
+#include "render/shadows/shadow_pass.hpp"
+#include "render/storage_free.hpp"
 
 namespace atrium {
 namespace {
@@ -48,19 +49,28 @@ constexpr render::GlobalDefineRow kGlobalDefines[] = {&lighting::shading_model_d
 
 MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
-      shadows_(gpu),
-      depth_reader_(gpu.shaders()),
-      gpu_culling_(gpu.shaders()),
-      empty_vertex_array_(gfx::create_vertex_array()),
       gpu_(gpu),
-      tonemap_(&gpu.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"})),
+      draws_(gpu, gpu.shaders()),
+      shadows_(gpu),
+      debug_(gpu),
+      tonemap_(gpu.shaders()),
       loop_limit_(gfx::shader_loop_limit()) {
   glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  // The renderer's own modules, in stage order; the technique is the lighting stage.
+  modules_ = {draws_.occlusion_module(),
+              shadows::shadow_module(shadows_, draws_),
+              debug_.counters_module(),
+              lighting::light_sums_module(),
+              {render::FrameStage::Lighting, "technique",
+               [this](render::FrameBuild& build) { technique_->add_passes(build.graph, build.frame, build.targets); }, {}},
+              tonemap_.module(),
+              debug_.view_module(),
+              render::present_module()};
 }
 
 MeshRenderer::~MeshRenderer() = default;
 
-void MeshRenderer::resize(glm::ivec2 size) {
+void MeshRenderer::resize(ecs::Registry& registry, glm::ivec2 size) {
   const glm::ivec2 limit = gfx::max_render_size();
   if (size.x > limit.x || size.y > limit.y) {
     throw gfx::ResourceLimitError(std::to_string(size.x) + "x" + std::to_string(size.y) + " is larger than this context can render (" +
@@ -73,51 +83,36 @@ void MeshRenderer::resize(glm::ivec2 size) {
   size_ = size;
   hdr_color_ = gfx::create_render_target(GL_RGBA16F, size.x, size.y, samples);
   depth_stencil_ = gfx::create_render_target(gfx::kDepthStencilFormat, size.x, size.y, samples);
-  hdr_framebuffer_ = gfx::create_framebuffer();
-  glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
-  glNamedFramebufferTexture(hdr_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
-  gfx::require_complete(hdr_framebuffer_.id(), "hdr");
   output_color_ = gfx::create_render_target(GL_RGBA8, size.x, size.y);
-  output_framebuffer_ = gfx::create_framebuffer();
-  glNamedFramebufferTexture(output_framebuffer_.id(), GL_COLOR_ATTACHMENT0, output_color_.id(), 0);
-  gfx::require_complete(output_framebuffer_.id(), "output");
   update_split_targets();
   graph_.forget_imports();
   if (technique_) technique_->resize(targets());
-  if (debug_views_) debug_views_->resize(targets());
+  invalidate_modules(registry);
+}
+
+void MeshRenderer::invalidate_modules(ecs::Registry& registry) {
+  for (const render::FrameModule& module : modules_) {
+    if (module.invalidate) module.invalidate();
+  }
+  if (const auto* systems = registry.try_resource<render::FrameModules>()) {
+    for (const render::FrameModule& module : systems->modules()) {
+      if (module.invalidate) module.invalidate();
+    }
+  }
 }
 
 void MeshRenderer::update_split_targets() {
   if (!split_lighting_ || size_.x <= 0) {
-    lighting_framebuffer_ = {};
     diffuse_light_ = {};
     specular_light_ = {};
-    return;
+  } else {
+    diffuse_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
+    specular_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
   }
-  diffuse_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
-  specular_light_ = gfx::create_render_target(GL_RGBA16F, size_.x, size_.y, technique_options_.msaa);
-  lighting_framebuffer_ = gfx::create_framebuffer();
-  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT0, hdr_color_.id(), 0);
-  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT1, diffuse_light_.id(), 0);
-  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_COLOR_ATTACHMENT2, specular_light_.id(), 0);
-  glNamedFramebufferTexture(lighting_framebuffer_.id(), GL_DEPTH_STENCIL_ATTACHMENT, depth_stencil_.id(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
-  glNamedFramebufferDrawBuffers(lighting_framebuffer_.id(), 3, buffers);
-  gfx::require_complete(lighting_framebuffer_.id(), "lighting (split)");
   graph_.forget_imports();
 }
 
-lighting::FrameTargets MeshRenderer::targets() const {
-  const bool split = lighting_framebuffer_.id() != 0;
-  return {hdr_framebuffer_.id(),
-          hdr_color_.id(),
-          depth_stencil_.id(),
-          size_,
-          technique_options_.msaa,
-          split ? lighting_framebuffer_.id() : hdr_framebuffer_.id(),
-          diffuse_light_.id(),
-          specular_light_.id()};
-}
+lighting::FrameTargets MeshRenderer::targets() const { return {size_, technique_options_.msaa}; }
 
 void MeshRenderer::select_technique(const std::string& mode) {
   const lighting::TechniqueInfo* info = lighting::find_technique(mode);
@@ -128,21 +123,9 @@ void MeshRenderer::select_technique(const std::string& mode) {
   mode_ = mode;
 }
 
-lighting::DebugViews& MeshRenderer::debug_views() {
-  if (!debug_views_) {
-    debug_views_ = std::make_unique<lighting::DebugViews>(gpu_, technique_options_);
-    debug_views_->resize(targets());
-  }
-  return *debug_views_;
-}
-
-GLuint MeshRenderer::gbuffer_thumbnails() const { return thumbnails_drawn_ && debug_views_ ? debug_views_->thumbnails() : 0; }
-
-glm::ivec2 MeshRenderer::thumbnail_size() const { return debug_views_ ? debug_views_->thumbnail_size() : glm::ivec2(0); }
-
 void MeshRenderer::recreate_technique() {
   technique_.reset();
-  debug_views_.reset();
+  reload_pending_ = true;
 }
 
 void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const {
@@ -158,135 +141,56 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ", or a tiled or clustered mode"));
 }
 
-void MeshRenderer::upload_draws(const lighting::DrawList& draws) {
-  gpu_.reserve_instances(draws.instances.size());
-  // The compute-free tier's records went to textures (StorageFreeRecords) and its commands stay on the CPU.
-  if (!technique_options_.compute_free) {
-    instances_.upload(draws.instances.data(), draws.instances.size() * sizeof(lighting::InstanceData));
-    materials_.upload(draws.materials.data(), draws.materials.size() * sizeof(lighting::MaterialData));
-    commands_.upload(draws.commands.data(), draws.commands.size() * sizeof(lighting::DrawCommand));
-  }
-  active_phase_.reset();
-  bind_draws();
-}
-
-void MeshRenderer::bind_draws() const {
-  if (technique_options_.compute_free) {
-    // The tier's twins: records in textures, commands drawn from the CPU; no storage or indirect buffer.
-    storage_free_.bind();
-    lighting::draw_commands_from_cpu(draws_.commands);
-    lighting::draw_counts_from(-1);
-    return;
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
-  lighting::draw_commands_from_cpu({});
-  if (active_phase_) {
-    gpu_culling_.bind(*active_phase_);
-  } else {
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
-    lighting::draw_counts_from(-1);
-  }
-}
-
-void MeshRenderer::draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw) {
-  draw(draws_.opaque);
-  // Once a frame: a debug view's own geometry pass draws the list as it stands.
-  if (!occlusion_pending_) return;
-  occlusion_pending_ = false;
-  if (culling_on_gpu_) {
-    // The same phases on the GPU: the revealed commands, then the shown ones
-    // for every pass after this one.
-    gpu_culling_.reveal(depth_stencil_.id(), size_);
-    gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed);
-    draw(draws_.opaque);
-    gpu_culling_.remember(depth_stencil_.id(), size_);
-    active_phase_ = GpuOcclusionCulling::Phase::Shown;
-    bind_draws();
-    return;
-  }
-  const auto& view = registry.resource<ViewState>();
-  DepthPyramid depth = depth_reader_.read(depth_stencil_.id(), size_);
-  const OcclusionCounts late = reveal_unhidden(registry, depth, view);
-  if (late.tested > late.hidden) {
-    const auto& assets = registry.resource<assets::AssetManager>();
-    const lighting::DrawList revealed = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Revealed);
-    upload_draws(revealed);
-    draw(revealed.opaque);
-    draws_ = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Shown);
-    upload_draws(draws_);
-    depth = depth_reader_.read(depth_stencil_.id(), size_);
-  }
-  frame_stats_.triangles_occluded = remember_shown(registry, depth, view).triangles_hidden;
-}
-
-void MeshRenderer::render(ecs::Registry& registry) {
-  const glm::ivec2 size = registry.resource<Viewport>().size;
-  if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
-  const std::uint64_t waits_at_start = gfx::gpu_waits();
-  gfx::use_depth_convention();
-  const auto& settings = registry.resource<RendererSettings>();
+void MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSettings& settings) {
   // A named view says what it needs before the frame is drawn; a view of a
   // resource by its name needs nothing (it is checked once the graph is built).
-  const lighting::DebugView* named_view = lighting::find_debug_view(settings.debug_view);
-  const lighting::DebugViewNeeds needs = named_view ? named_view->needs : lighting::DebugViewNeeds{};
-  const bool counting_lights = needs.count_lights;
-  const bool counting_fragments = needs.count_fragments;
-  const bool counting = counting_lights || counting_fragments;
-  const bool split_lighting = settings.technique_options.split_lighting || needs.split_lighting;
+  const lighting::DebugViewNeeds needs = lighting::DebugViewModule::needs(settings.debug_view);
   // Refused before any program is compiled for them: a context without image
   // atomics or multisampled textures could not compile those programs.
-  if (settings.technique_options.compute_free && counting) {
+  if (settings.technique_options.compute_free && (needs.count_lights || needs.count_fragments)) {
     throw gfx::ResourceLimitError("the debug view " + settings.debug_view +
                                   " on the compute-free tier: it counts with image atomics, which this tier lacks");
   }
   require_msaa(settings.technique_options.msaa);
-  const lighting::LightingStage stage = lighting::resolve_lighting_stage(settings.technique_options);
+  const bool split_lighting = settings.technique_options.split_lighting || needs.split_lighting;
   std::vector<gfx::ShaderDefine> globals;
-  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, counting_lights, counting_fragments, split_lighting}, globals);
-  if (globals != globals_ || settings.technique_options != technique_options_) {
-    gpu_.shaders().set_global_defines(globals);
-    globals_ = std::move(globals);
-    tonemap_ = &gpu_.shaders().get({"post/fullscreen.vert", "post/tonemap.frag"});
-    tonemap_compute_ = nullptr;
-    // Every target is remade with the new sample count.
-    if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
-    technique_options_ = settings.technique_options;
-    if (split_lighting != split_lighting_) {
-      split_lighting_ = split_lighting;
-      update_split_targets();
-    }
-    // Their programs were compiled with the old globals, their G-buffers in the old layout.
-    technique_.reset();
-    debug_views_.reset();
+  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, needs.count_lights, needs.count_fragments, split_lighting}, globals);
+  if (reload_pending_) {
+    reload_pending_ = false;
+    invalidate_modules(registry);
   }
-  if (size != size_) resize(size);
-  if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
+  if (globals == globals_ && settings.technique_options == technique_options_) return;
+  gpu_.shaders().set_global_defines(globals);
+  globals_ = std::move(globals);
+  // Every target is remade with the new sample count.
+  if (settings.technique_options.msaa != technique_options_.msaa) size_ = glm::ivec2(0);
+  technique_options_ = settings.technique_options;
+  if (split_lighting != split_lighting_) {
+    split_lighting_ = split_lighting;
+    update_split_targets();
+  }
+  // Their programs were compiled with the old globals, their targets in the old layout.
+  technique_.reset();
+  invalidate_modules(registry);
+}
 
+void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& settings, LightBuffer& lights) {
   const auto& view = registry.resource<ViewState>();
   const auto& scene = registry.resource<SceneSettings>();
-  auto& lights = registry.resource<LightBuffer>();
-  const auto& assets = registry.resource<assets::AssetManager>();
-  const auto& gpu = registry.resource<assets::GpuAssets>();
-
   // Both culling paths test with compute shaders: the compute-free tier draws what is in view.
-  occlusion_pending_ = settings.frustum_culling && settings.occlusion_culling && !technique_options_.compute_free;
+  render::CullingChoice culling;
+  culling.occlusion = settings.frustum_culling && settings.occlusion_culling && !technique_options_.compute_free;
   const CullingDevice device = settings.culling_device != CullingDevice::Automatic ? settings.culling_device
                                : gfx::is_software_renderer()                        ? CullingDevice::Cpu
                                                                                     : CullingDevice::Gpu;
-  culling_on_gpu_ = occlusion_pending_ && device == CullingDevice::Gpu;
-  draws_ = lighting::build_draw_list(registry, assets, gpu, view.view,
-                                     culling_on_gpu_     ? lighting::DrawSelection::EachInView
-                                     : occlusion_pending_ ? lighting::DrawSelection::ShownLastFrame
-                                                          : lighting::DrawSelection::InView);
-  const lighting::DrawList& draws = draws_;
+  culling.on_gpu = culling.occlusion && device == CullingDevice::Gpu;
   frame_stats_ = {};
   frame_stats_.lights = lights.count;
-  frame_stats_.culled_on_gpu = culling_on_gpu_;
-  frame_stats_.lighting_stage = stage;
-  if (const auto* culling = registry.try_resource<CullingStats>()) {
-    frame_stats_.objects = culling->objects;
-    frame_stats_.objects_drawn = culling->objects_visible;
+  frame_stats_.culled_on_gpu = culling.on_gpu;
+  frame_stats_.lighting_stage = lighting::resolve_lighting_stage(technique_options_);
+  if (const auto* counts = registry.try_resource<CullingStats>()) {
+    frame_stats_.objects = counts->objects;
+    frame_stats_.objects_drawn = counts->objects_visible;
   }
 
   lighting::FrameUniforms uniforms{};
@@ -297,7 +201,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   uniforms.camera_position = glm::vec4(view.camera_position, 1.0f);
   uniforms.ambient = glm::vec4(scene.ambient, 0.0f);
   uniforms.background = glm::vec4(scene.background, 1.0f);
-  uniforms.viewport_size = glm::vec2(size);
+  uniforms.viewport_size = glm::vec2(size_);
   uniforms.exposure = scene.exposure;
   uniforms.light_count = lights.count;
   planes_ = {view.near_plane, view.far_plane};
@@ -309,160 +213,85 @@ void MeshRenderer::render(ecs::Registry& registry) {
   // Chooses the shadowed lights and moves them to the front of the light
   // buffer, before anything reads it; their maps are drawn by the graph.
   shadows_.set_compute_free(technique_options_.compute_free);
-  const bool draw_shadows = shadows_.update(registry, lights, view, size, settings.shadows, settings.redraw_shadows);
+  (void)shadows_.update(registry, lights, view, size_, settings.shadows, settings.redraw_shadows);
   frame_stats_.shadows = shadows_.stats();
-  if (technique_options_.compute_free) {
-    storage_free_.upload(std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())), draws);
-  }
-  upload_draws(draws);
-  refuse_unbounded_loops(draws, lights.count);
+  draws_.begin_frame(registry, culling, technique_options_.compute_free,
+                     std::span<const GpuLight>(lights.staging.data(), std::min<std::size_t>(lights.count, lights.staging.size())));
+  refuse_unbounded_loops(draws_.list(), lights.count);
+}
 
-  // The frame's graph: the renderer's long-lived targets, then each
-  // contributor's passes in the order they run.
-  graph_.reset();
+lighting::FrameContext MeshRenderer::import_targets(ecs::Registry& registry, const LightBuffer& lights) {
   const int samples = technique_options_.msaa;
-  const render::ResourceId depth = graph_.import_texture("depth", depth_stencil_.id(), {gfx::kDepthStencilFormat, size_, samples}, render::ViewKind::Depth);
-  const render::ResourceId hdr = graph_.import_texture("hdr", hdr_color_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color);
-  const render::ResourceId output = graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
-  const render::ResourceId light_resource =
-      graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)});
-  std::vector<render::ResourceId> light_sums;
+  const auto& view = registry.resource<ViewState>();
+  graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
+  lighting::FrameContext frame{draws_.list(),
+                               [this, &registry](const lighting::BatchDrawer& draw) { draws_.draw_first_pass(registry, draw, depth_stencil_.id(), size_); },
+                               gpu_,
+                               lights.staging,
+                               registry.resource<SceneSettings>().background,
+                               graph_.import_texture("depth", depth_stencil_.id(), {gfx::kDepthStencilFormat, size_, samples}, render::ViewKind::Depth),
+                               graph_.import_texture("hdr", hdr_color_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color),
+                               graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)}),
+                               view.view,
+                               view.projection,
+                               view.near_plane,
+                               view.far_plane};
   if (split_lighting_) {
-    light_sums = {graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color),
-                  graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color)};
+    frame.diffuse_light = graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color);
+    frame.specular_light = graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color);
   }
-  const lighting::FrameContext frame{draws,
-                                     [&](const lighting::DrawBatches& draw) { draw_first_pass(registry, draw); },
-                                     gpu,
-                                     lights.staging,
-                                     scene.background,
-                                     depth,
-                                     hdr,
-                                     light_resource,
-                                     view.view,
-                                     view.projection,
-                                     view.near_plane,
-                                     view.far_plane,
-                                     split_lighting_ ? light_sums[0] : render::ResourceId{},
-                                     split_lighting_ ? light_sums[1] : render::ResourceId{}};
+  if (shadows_.texture() != 0 && registry.resource<RendererSettings>().shadows > 0) {
+    frame.shadow_atlas = graph_.import_texture("shadow-atlas", shadows_.texture(),
+                                               {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(frame_stats_.shadows.atlas_size), 1},
+                                               render::ViewKind::ShadowAtlas);
+  }
+  return frame;
+}
+
+void MeshRenderer::add_modules(render::FrameBuild& build) {
+  const auto* systems = build.registry.try_resource<render::FrameModules>();
+  for (std::size_t stage = 0; stage < render::kFrameStageNames.size(); ++stage) {
+    const auto in_stage = [&](const render::FrameModule& module) { return module.stage == static_cast<render::FrameStage>(stage); };
+    for (const render::FrameModule& module : modules_) {
+      if (in_stage(module)) module.add_passes(build);
+    }
+    if (!systems) continue;
+    for (const render::FrameModule& module : systems->modules()) {
+      if (in_stage(module)) module.add_passes(build);
+    }
+  }
+}
+
+void MeshRenderer::render(ecs::Registry& registry) {
+  const glm::ivec2 size = registry.resource<Viewport>().size;
+  if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
+  const std::uint64_t waits_at_start = gfx::gpu_waits();
+  gfx::use_depth_convention();
+  const auto& settings = registry.resource<RendererSettings>();
+  apply_settings(registry, settings);
+  if (size != size_) resize(registry, size);
+  if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
+  auto& lights = registry.resource<LightBuffer>();
+  begin_frame(registry, settings, lights);
+
+  graph_.reset();
+  const lighting::FrameContext frame = import_targets(registry, lights);
   const lighting::FrameTargets frame_targets = targets();
-
-  if (culling_on_gpu_) {
-    // Before anything draws the list: what the last frame showed.
-    graph_.add_pass("occlusion culling", [](render::PassBuilder& pass) { pass.keep(); }, [&](const render::PassResources&) {
-      gpu_culling_.begin(draws_, commands_.buffer.id());
-      active_phase_ = GpuOcclusionCulling::Phase::First;
-      bind_draws();
-    });
-  }
-  const render::ResourceId atlas =
-      shadows_.texture() != 0 && settings.shadows > 0
-          ? graph_.import_texture("shadow-atlas", shadows_.texture(), {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(frame_stats_.shadows.atlas_size), 1},
-                                  render::ViewKind::ShadowAtlas)
-          : render::ResourceId{};
-  if (draw_shadows) {
-    graph_.add_pass("shadows", [&](render::PassBuilder& pass) { pass.write(atlas, render::Access::Attachment); },
-                    [&](const render::PassResources&) {
-                      shadows_.draw_pending(registry);
-                      bind_draws();  // the shadow passes bound casters of their own
-                    });
-  }
-  if (counting) debug_views().add_counting_pass(graph_, needs);
-  if (split_lighting_) {
-    graph_.add_pass("clear light sums", [&](render::PassBuilder& pass) {
-      for (const render::ResourceId sum : light_sums) pass.write(sum, render::Access::Transfer);
-    }, [&](const render::PassResources&) {
-      // Forward modes leave the sums untouched: they show as no light, not a stale frame.
-      const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
-      glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 1, zero);
-      glClearNamedFramebufferfv(lighting_framebuffer_.id(), GL_COLOR, 2, zero);
-    }, false);
-  }
-  technique_->add_passes(graph_, frame, frame_targets);
-  if (const auto* contributors = registry.try_resource<RenderContributors>()) {
-    for (const RenderContributor& contributor : contributors->after_lighting) contributor(graph_, registry, frame, frame_targets);
-  }
-
-  const bool compute_tonemap = stage == lighting::LightingStage::Compute;
-  graph_.add_pass("tonemap", [&](render::PassBuilder& pass) {
-    pass.read(hdr, render::Access::Sampled);
-    pass.write(output, compute_tonemap ? render::Access::Storage : render::Access::Attachment);
-  }, [&](const render::PassResources& res) {
-    if (compute_tonemap) {
-      if (!tonemap_compute_) tonemap_compute_ = &gpu_.shaders().get({"post/tonemap.comp"});
-      glBindTextureUnit(0, res.texture(hdr));
-      glBindImageTexture(lighting::kDisplayImageUnit, res.texture(output), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-      lighting::dispatch_per_pixel(*tonemap_compute_, size_);
-      return;
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer_.id());
-    glViewport(0, 0, size_.x, size_.y);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    glDisable(GL_STENCIL_TEST);
-    glDisable(GL_CULL_FACE);
-    tonemap_->use();
-    glBindTextureUnit(0, res.texture(hdr));
-    glBindVertexArray(empty_vertex_array_.id());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glBindVertexArray(0);
-  });
-
-  // What this frame's graph offers, before any debug view adds to it.
-  offered_views_ = lighting::offered_views(graph_, technique_options_);
-  std::optional<lighting::SelectedView> debug_view;
-  if (!settings.debug_view.empty()) {
-    debug_view = lighting::select_view(settings.debug_view, graph_);
-    if (!debug_view) {
-      std::string names;
-      for (const lighting::OfferedView& view : offered_views_) names += (names.empty() ? "" : ", ") + view.name;
-      throw lighting::UnknownViewError("unknown debug view '" + settings.debug_view + "' (views: " + names + ")");
-    }
-  }
-  const auto* extent = registry.try_resource<SceneBounds>();
-  const lighting::DebugViewFrame view_frame{frame, frame_targets, graph_, extent ? extent->min : glm::vec3(0.0f),
-                                            extent ? extent->max : glm::vec3(1.0f)};
-  const bool technique_gbuffer = lighting::GBuffer::find(graph_).has_value();
-  thumbnails_drawn_ = settings.gbuffer_thumbnails && technique_gbuffer;
-  if (thumbnails_drawn_) {
-    graph_.add_pass("thumbnails", [&](render::PassBuilder& pass) {
-      pass.keep();
-      lighting::DebugViews::declare_thumbnail_reads(pass, graph_, frame);
-    }, [&](const render::PassResources& res) { debug_views().draw_thumbnails(view_frame, res); }, false);
-  }
-  if (debug_view) {
-    // A G-buffer view in a mode without one fills the views' own.
-    if (needs.gbuffer && !technique_gbuffer) debug_views().add_gbuffer_pass(graph_, frame, frame_targets);
-    graph_.add_pass("debug view", [&](render::PassBuilder& pass) {
-      lighting::DebugViews::declare_reads(*debug_view, pass, graph_, frame);
-      pass.write(output, render::Access::Attachment);
-    }, [&](const render::PassResources& res) {
-      debug_views().draw(*debug_view, view_frame, res, output_framebuffer_.id());
-      if (counting) debug_views().send_counts(needs);
-    });
-  }
-  if (settings.present_to_window) {
-    graph_.add_pass("present", [&](render::PassBuilder& pass) {
-      pass.read(output, render::Access::Transfer);
-      pass.keep();
-    }, [&](const render::PassResources&) {
-      glBlitNamedFramebuffer(output_framebuffer_.id(), 0, 0, 0, size_.x, size_.y, 0, 0, size_.x, size_.y, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    }, false);
-    if (const auto* contributors = registry.try_resource<RenderContributors>()) {
-      for (const RenderContributor& contributor : contributors->on_window) contributor(graph_, registry, frame, frame_targets);
-    }
-  }
-
+  render::FrameBuild build{graph_, registry, frame, frame_targets, frame.scene_color, graph_.find("output")};
+  add_modules(build);
   graph_.compile();
+
+  const lighting::DebugViewNeeds needs = lighting::DebugViewModule::needs(settings.debug_view);
+  counted_lights_ = needs.count_lights;
+  counted_fragments_ = needs.count_fragments;
   timer_.begin_frame();
-  counted_lights_ = counting_lights;
-  counted_fragments_ = counting_fragments;
   try {
     graph_.execute(&timer_);
-    // draws_ as the first pass left it (what the passes after it drew).
-    frame_stats_.draw_calls = draws.draw_calls();
-    frame_stats_.triangles = draws.triangles;
-    frame_stats_.triangles_drawn = draws.triangles_drawn;
+    // The list as the first pass left it (what the passes after it drew).
+    frame_stats_.draw_calls = draws_.list().draw_calls();
+    frame_stats_.triangles = draws_.list().triangles;
+    frame_stats_.triangles_drawn = draws_.list().triangles_drawn;
+    frame_stats_.triangles_occluded = draws_.triangles_occluded();
     take_reports(frame_stats_);
   } catch (const gfx::ResourceLimitError& e) {
     throw gfx::ResourceLimitError(mode_ + " with " + std::to_string(lights.count) + " lights at " + std::to_string(size.x) + "x" +
@@ -475,7 +304,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
 }
 
 bool MeshRenderer::offers(std::string_view view) const {
-  return std::any_of(offered_views_.begin(), offered_views_.end(), [&](const lighting::OfferedView& v) { return v.name == view; });
+  const std::vector<lighting::OfferedView>& offered = offered_views();
+  return std::any_of(offered.begin(), offered.end(), [&](const lighting::OfferedView& v) { return v.name == view; });
 }
 
 void MeshRenderer::settle() {
@@ -485,16 +315,14 @@ void MeshRenderer::settle() {
 }
 
 void MeshRenderer::take_reports(FrameStats& stats) {
-  if (debug_views_) {
-    for (const lighting::DebugViews::CountAverage& average : debug_views_->take_averages()) {
-      (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
-    }
+  for (const lighting::DebugViews::CountAverage& average : debug_.take_averages()) {
+    (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
   }
   if (counted_lights_) stats.light_evaluations_per_pixel = light_average_;
   if (counted_fragments_) stats.fragments_per_pixel = fragment_average_;
   if (stats.culled_on_gpu) {
     // Until the first counts arrive: everything in view, nothing hidden.
-    if (const auto counts = gpu_culling_.take_counts()) {
+    if (const auto counts = draws_.take_gpu_counts()) {
       stats.triangles_drawn = counts->triangles_drawn;
       stats.triangles_occluded = counts->triangles_hidden;
     }

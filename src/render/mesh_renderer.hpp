@@ -1,9 +1,10 @@
 // The MeshRenderer system (Render phase): owns the frame's long-lived render
-// targets, the lighting technique selected by RendererSettings::mode and the
-// frame graph. Each frame it gathers the draw list and fills the frame
-// uniforms, then builds the graph from its contributors (shadow maps, the
-// technique's passes, systems' RenderContributors, tone map, thumbnails,
-// debug view, present), compiles and executes it.
+// targets, the G-buffer choice, the lighting technique selected by
+// RendererSettings::mode and the frame graph. Each frame it gathers the draw
+// list and fills the frame uniforms, imports its targets into the graph, then
+// lets every module add its passes stage by stage (render/frame/frame_modules.hpp:
+// its own, such as shadows, the technique, tone map, debug views and present,
+// and the systems' render::FrameModules), compiles the graph and runs it.
 #pragma once
 
 #include <memory>
@@ -12,22 +13,19 @@
 #include <string_view>
 #include <vector>
 
-#include "assets/asset_manager.hpp"
-#include "render/gpu_assets.hpp"
 #include "assets/image.hpp"
+#include "components/frame_resources.hpp"
 #include "ecs/scheduler.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/pass_timer.hpp"
-#include "gfx/shader_program.hpp"
-#include "gfx/stream_buffer.hpp"
+#include "render/debug/debug_view_module.hpp"
+#include "render/frame/frame_draws.hpp"
+#include "render/frame/frame_modules.hpp"
 #include "render/frame_graph.hpp"
-#include "render/storage_free.hpp"
-#include "render/techniques/technique.hpp"
-#include "render/culling/gpu_occlusion_culling.hpp"
-#include "render/culling/occlusion_culling.hpp"
+#include "render/gpu_assets.hpp"
+#include "render/post/tonemap/tonemap_pass.hpp"
 #include "render/shadows/shadow_atlas.hpp"
-
-#include "render/debug/debug_views.hpp"
+#include "render/techniques/technique.hpp"
 
 namespace atrium {
 
@@ -74,9 +72,9 @@ class MeshRenderer {
   // row first; infinity where no geometry was drawn. With MSAA the targets
   // below are read resolved (colour: samples averaged; depth: one sample).
   [[nodiscard]] std::vector<float> read_view_depth() const;
-  // The last frame's linear HDR colour, or with the split on its diffuse or
-  // specular light sum, as RGBA floats in GL's row order (bottom row first);
-  // empty for a sum while the split is off.
+  // The last frame's linear HDR colour as lit (before post-processing), or
+  // with the split on its diffuse or specular light sum, as RGBA floats in
+  // GL's row order (bottom row first); empty for a sum while the split is off.
   enum class HdrTarget { Color, DiffuseLight, SpecularLight };
   [[nodiscard]] std::vector<glm::vec4> read_hdr(HdrTarget target) const;
 
@@ -85,8 +83,8 @@ class MeshRenderer {
   [[nodiscard]] const lighting::LightingTechnique* technique() const { return technique_.get(); }
   // The G-buffer thumbnails of the last frame (see DebugViews::draw_thumbnails),
   // 0 when the frame drew none (setting off, or a forward mode).
-  [[nodiscard]] GLuint gbuffer_thumbnails() const;
-  [[nodiscard]] glm::ivec2 thumbnail_size() const;
+  [[nodiscard]] GLuint gbuffer_thumbnails() const { return debug_.thumbnails(); }
+  [[nodiscard]] glm::ivec2 thumbnail_size() const { return debug_.thumbnail_size(); }
   [[nodiscard]] const FrameStats& stats() const { return stats_; }
   [[nodiscard]] glm::ivec2 size() const { return size_; }
   // Per-pass times of the latest frame whose timings are complete (each pass
@@ -94,82 +92,67 @@ class MeshRenderer {
   [[nodiscard]] const gfx::PassTimer& timer() const { return timer_; }
   [[nodiscard]] gfx::PassTimer& timer() { return timer_; }
   // The debug views the last frame's graph offered (its technique's and
-  // contributors' passes made what they show), and whether it offered `view`.
-  [[nodiscard]] const std::vector<lighting::OfferedView>& offered_views() const { return offered_views_; }
+  // modules' passes made what they show), and whether it offered `view`.
+  [[nodiscard]] const std::vector<lighting::OfferedView>& offered_views() const { return debug_.offered_views(); }
   [[nodiscard]] bool offers(std::string_view view) const;
   // The last frame's graph: its passes, resources and render-target memory.
   [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
   // The shadow maps of the last frame (RendererSettings::shadows).
   [[nodiscard]] const shadows::ShadowAtlas& shadow_atlas() const { return shadows_; }
+  // The renderer's own modules, stage by stage (the frame runs each stage's
+  // own modules, then the systems' of that stage: render/frame/frame_modules.hpp).
+  [[nodiscard]] const std::vector<render::FrameModule>& own_modules() const { return modules_; }
 
-  // Drops the technique and debug views; the next frame makes them again from
-  // the shader library (after a shader reload).
+  // Drops the technique and every module's programs; the next frame makes
+  // them again from the shader library (after a shader reload).
   void recreate_technique();
 
  private:
   // A single-sample copy of a multisampled target, for reading back.
   [[nodiscard]] gfx::Texture resolve(GLuint texture, GLenum format, bool depth) const;
   void make_shader_writes_readable() const;
-  void resize(glm::ivec2 size);
-  // Makes the diffuse and specular light targets and their framebuffer while
-  // split_lighting_ is on, drops them while it is off.
+  // Compiles programs with the settings' global defines; on a change drops
+  // the technique and calls every module's invalidate hook.
+  void apply_settings(ecs::Registry& registry, const RendererSettings& settings);
+  void resize(ecs::Registry& registry, glm::ivec2 size);
+  // Makes the diffuse and specular light targets while split_lighting_ is
+  // on, drops them while it is off.
   void update_split_targets();
+  void invalidate_modules(ecs::Registry& registry);
+  // The frame's draws, uniforms and shadow choice, before the graph is built.
+  void begin_frame(ecs::Registry& registry, const RendererSettings& settings, LightBuffer& lights);
+  // The renderer's long-lived targets in the graph, as the frame's context.
+  [[nodiscard]] lighting::FrameContext import_targets(ecs::Registry& registry, const LightBuffer& lights);
+  // Every module's passes, stage by stage.
+  void add_modules(render::FrameBuild& build);
   // Takes what the GPU reported a frame or more late and has arrived into
   // `stats`: the counters' averages (DebugViews::take_averages) for the views
   // the last frame counted, and the light lists' totals. Never waits.
   void take_reports(FrameStats& stats);
-  // Made on first use (a debug view or the thumbnails).
-  lighting::DebugViews& debug_views();
   void select_technique(const std::string& mode);
   [[nodiscard]] lighting::FrameTargets targets() const;
   // Throws gfx::ResourceLimitError when the driver limits shader loops and a
   // pixel of this frame would loop over more lights than that limit.
   void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
-  // Copies the frame's instance records, materials and indirect commands to
-  // the GPU and binds them (kInstanceStorageBinding, kMaterialStorageBinding,
-  // GL_DRAW_INDIRECT_BUFFER) for every pass of the frame; on the compute-free
-  // tier binds the textures storage_free_ holds and the CPU's commands instead.
-  void upload_draws(const lighting::DrawList& draws);
-  // Binds the frame's instance, material and command buffers (or the tier's
-  // textures and CPU commands) again, after a pass that bound its own.
-  void bind_draws() const;
-  // FrameContext::draw_first_pass: draws draws_ (what the last frame showed),
-  // then, with occlusion culling and once a frame, what the depth it wrote
-  // does not hide, and leaves draws_ holding both.
-  void draw_first_pass(ecs::Registry& registry, const lighting::DrawBatches& draw);
 
   glm::ivec2 size_{0};
   std::string mode_;
   lighting::TechniqueOptions technique_options_;
   std::vector<gfx::ShaderDefine> globals_;  // what every program is compiled with (render/shader_globals.hpp)
   bool split_lighting_ = false;  // the light-sum targets exist (shaders compiled with SPLIT_LIGHTING)
-  std::unique_ptr<lighting::DebugViews> debug_views_;
-  std::vector<lighting::OfferedView> offered_views_;  // the last frame's
-  bool thumbnails_drawn_ = false;
+  bool reload_pending_ = false;  // recreate_technique(): the next frame calls every module's invalidate hook
   std::unique_ptr<lighting::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;
-  gfx::Framebuffer hdr_framebuffer_;
-  gfx::Texture diffuse_light_, specular_light_;
-  gfx::Framebuffer lighting_framebuffer_;  // hdr_color, diffuse_light, specular_light
+  gfx::Texture diffuse_light_, specular_light_;  // with the split on (split_lighting_)
   gfx::Texture output_color_;
-  gfx::Framebuffer output_framebuffer_;
   gfx::Buffer frame_uniforms_;
-  gfx::StreamBuffer instances_, materials_, commands_;
-  lighting::DrawList draws_;  // the frame's; FrameContext::draws
-  bool occlusion_pending_ = false;  // draws_ holds only what the last frame showed; draw_first_pass tests the rest
-  shadows::ShadowAtlas shadows_;
-  DepthReader depth_reader_;
-  GpuOcclusionCulling gpu_culling_;
-  render::StorageFreeRecords storage_free_;  // the compute-free tier's lights, instances and materials
-  bool culling_on_gpu_ = false;     // this frame's occlusion culling runs on the GPU (draws_ is an EachInView list)
-  // The GPU culling phase whose commands passes draw draws_ from (bind_draws);
-  // none: the uploaded commands.
-  std::optional<GpuOcclusionCulling::Phase> active_phase_;
-  gfx::VertexArray empty_vertex_array_;  // full-screen passes draw without attributes
   assets::GpuAssets& gpu_;
-  gfx::ShaderProgram* tonemap_;  // fetched again when the global defines change (MSAA_SAMPLES)
-  gfx::ShaderProgram* tonemap_compute_ = nullptr;  // the compute stage's, fetched on first use after such a change
+  render::FrameDraws draws_;
+  shadows::ShadowAtlas shadows_;
+  lighting::DebugViewModule debug_;
+  render::TonemapPass tonemap_;
+  std::vector<render::FrameModule> modules_;  // the renderer's own, in stage order
   FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
   FrameStats frame_stats_;  // the frame being drawn
   // The heatmap's and the fragments view's newest averages (they arrive a

@@ -14,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/binding_slots.hpp"
 #include "gfx/gl.hpp"
 #include "gfx/gl_object.hpp"
 #include "render/frame/draw_list.hpp"
@@ -26,10 +27,7 @@ namespace atrium::render {
 // The NO_STORAGE_BUFFERS row of the shader globals (render/shader_globals.hpp).
 void storage_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines);
 
-// Texture units, clear of the material (0-4), G-buffer and target (0-7),
-// depth (14) and shadow atlas (15) units, and within the 16 a WebGL2
-// fragment shader may sample.
-inline constexpr GLuint kLightTextureUnit = 10, kInstanceTextureUnit = 11, kMaterialTextureUnit = 12;
+// Their texture units are in render/binding_slots.hpp.
 
 // Texels per record and records per row, each row within WebGL2's least
 // texture width (2,048).
@@ -37,7 +35,6 @@ inline constexpr std::uint32_t kLightTexels = 4, kLightsPerRow = 512;
 inline constexpr std::uint32_t kInstanceTexels = 9, kInstancesPerRow = 227;
 inline constexpr std::uint32_t kMaterialTexels = 14, kMaterialsPerRow = 146;
 inline constexpr std::uint32_t kShadowViewTexels = 6, kShadowViewsPerRow = 341;  // common/shadows.glsl
-inline constexpr GLuint kShadowViewTextureUnit = 13;
 static_assert(sizeof(GpuLight) == kLightTexels * sizeof(glm::vec4), "a light is 4 texels (common/lights.glsl)");
 static_assert(sizeof(lighting::InstanceData) == kInstanceTexels * sizeof(glm::vec4), "an instance is 9 texels (common/mesh.vert)");
 static_assert(sizeof(lighting::MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a material is 14 texels (common/material_table.glsl)");
@@ -79,7 +76,6 @@ class RecordTexture {
 // Light lists built on the CPU (render/lighting/cpu_light_lists.hpp) as the
 // tier's shaders read them (common/light_lists.glsl): per bin its range
 // (RG32UI), then the light indices (R32UI), kListTextureWidth texels a row.
-inline constexpr GLuint kLightRangeTextureUnit = 8, kLightIndexTextureUnit = 9;
 inline constexpr std::uint32_t kListTextureWidth = 2048;
 
 class ListTextures {

@@ -19,7 +19,7 @@
 #include "render/debug/debug_views.hpp"
 #include "render/lighting/shading_model.hpp"
 #include "render/techniques/technique.hpp"
-#include "render/contributors.hpp"
+#include "render/frame/frame_modules.hpp"
 #include "render/mesh_renderer.hpp"
 
 namespace atrium {
@@ -315,14 +315,12 @@ void register_overlay(ecs::Registry& registry, GLFWwindow* window) {
   registry.set_resource<Overlay>(window);
   // A pass over the window's framebuffer after presenting: the frame graph
   // times it with the others.
-  registry.resource<RenderContributors>().on_window.push_back(
-      [](render::FrameGraph& graph, ecs::Registry& r, const lighting::FrameContext&, const lighting::FrameTargets&) {
-        graph.add_pass("overlay", [](render::PassBuilder& pass) { pass.keep(); },
-                       [&r](const render::PassResources&) {
-                         glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the window's, not the renderer's output
-                         r.resource<Overlay>().draw(r);
-                       });
-      });
+  registry.resource<render::FrameModules>().add({render::FrameStage::Window, "overlay", [](render::FrameBuild& build) {
+    build.graph.add_pass("overlay", [](render::PassBuilder& pass) { pass.keep(); }, [&r = build.registry](const render::PassResources&) {
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the window's, not the renderer's output
+      r.resource<Overlay>().draw(r);
+    });
+  }, {}});
 }
 
 }  // namespace atrium

@@ -1,5 +1,5 @@
 // The overlay: a pass of the frame graph after the frame is presented to the
-// window (RenderContributors::on_window), timed with the others: a Dear ImGui
+// window (a module of the window stage), timed with the others: a Dear ImGui
 // panel over the window with frame rate and time, the last frame's pass timings, the mode,
 // shading model, light count, triangles, draw calls, light-list overflow,
 // estimated GPU memory and G-buffer thumbnails; and controls for mode, light

@@ -12,35 +12,40 @@
 #include <glm/glm.hpp>
 
 #include "app/world.hpp"
-#include "render/contributors.hpp"
+#include "render/frame/frame_modules.hpp"
 
 namespace atrium::testing {
 
 // Filled by every frame `world` draws after capture_textures(): single-sample
-// textures only, in GL's row order (bottom row first); a name the frame's
-// graph lacks is left out.
+// textures only, each at its own size, in GL's row order (bottom row first);
+// a name the frame's graph lacks is left out.
 using Captured = std::map<std::string, std::vector<glm::vec4>>;
 
-inline std::shared_ptr<Captured> capture_textures(World& world, std::vector<std::string> names) {
+// `stage`: the frame stage whose end it reads at (a post-process chain's
+// images from the output stage).
+inline std::shared_ptr<Captured> capture_textures(World& world, std::vector<std::string> names,
+                                                  render::FrameStage stage = render::FrameStage::AfterLighting) {
   auto captured = std::make_shared<Captured>();
-  world.registry().resource<RenderContributors>().after_lighting.push_back(
-      [captured, names](render::FrameGraph& graph, ecs::Registry&, const lighting::FrameContext&, const lighting::FrameTargets& targets) {
+  world.registry().resource<render::FrameModules>().add({stage, "test capture",
+      [captured, names](render::FrameBuild& build) {
+        render::FrameGraph& graph = build.graph;
         graph.add_pass("test capture", [&graph, names](render::PassBuilder& pass) {
           pass.keep();
           for (const std::string& name : names) {
             if (const render::ResourceId id = graph.find(name); id.valid()) pass.read(id, render::Access::Transfer);
           }
-        }, [&graph, captured, names, size = targets.size](const render::PassResources& res) {
+        }, [&graph, captured, names](const render::PassResources& res) {
           captured->clear();
           for (const std::string& name : names) {
             const render::ResourceId id = graph.find(name);
             if (!id.valid()) continue;
             std::vector<glm::vec4>& texels = (*captured)[name];
-            texels.resize(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
+            const glm::ivec2 extent = res.texture_desc(id).size;
+            texels.resize(static_cast<std::size_t>(extent.x) * static_cast<std::size_t>(extent.y));
             glGetTextureImage(res.texture(id), 0, GL_RGBA, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(glm::vec4)), texels.data());
           }
         }, false);
-      });
+      }, {}});
   return captured;
 }
 

@@ -1,3 +1,4 @@
+#include "render/binding_slots.hpp"
 #include "render/culling/gpu_occlusion_culling.hpp"
 
 #include <cstring>
@@ -10,9 +11,10 @@ namespace atrium {
 namespace {
 
 // The bindings of culling/depth_pyramid.comp, occlusion_cull.comp and compact_commands.comp.
-constexpr GLuint kPyramidBinding = 10;
-constexpr GLuint kTemplateBinding = 16, kOutBinding = 17, kShownBinding = 18, kRecordsBinding = 19, kLastShownBinding = 20,
-                 kCountersBinding = 21;
+constexpr GLuint kPyramidBinding = render::kDepthTilesBinding;
+constexpr GLuint kTemplateBinding = render::kCommandTemplateBinding, kOutBinding = render::kCullOutBinding, kShownBinding = render::kCullShownBinding,
+                 kRecordsBinding = render::kCullRecordsBinding, kLastShownBinding = render::kLastShownBinding,
+                 kCountersBinding = render::kCullCountersBinding;
 constexpr int kMaxLevels = 16;  // occlusion_cull.comp's u_levels: 12 cover the largest render size (16384 pixels)
 constexpr GLuint kCullGroup = 64;
 

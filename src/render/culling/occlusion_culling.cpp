@@ -1,3 +1,4 @@
+#include "render/binding_slots.hpp"
 #include "render/culling/occlusion_culling.hpp"
 
 #include <algorithm>
@@ -13,8 +14,8 @@ namespace atrium {
 namespace {
 
 // culling/depth_tiles.comp's bindings.
-constexpr GLuint kDepthTextureUnit = 14;
-constexpr GLuint kTileStorageBinding = 10;
+constexpr GLuint kDepthTextureUnit = render::kDepthTextureUnit;
+constexpr GLuint kTileStorageBinding = render::kDepthTilesBinding;
 
 }  // namespace
 

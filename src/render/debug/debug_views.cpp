@@ -1,3 +1,4 @@
+#include "render/binding_slots.hpp"
 #include "render/debug/debug_views.hpp"
 
 #include <algorithm>
@@ -11,7 +12,7 @@ namespace atrium::lighting {
 
 namespace {
 
-constexpr GLuint kBlockSumsBinding = 11;  // shaders/debug/sum_counts.comp
+using render::kBlockSumsBinding;  // shaders/debug/sum_counts.comp
 
 // A resource's visualiser, picked by its ViewKind: what a view of any
 // resource of that kind shows, and how it draws it.
@@ -96,8 +97,8 @@ const std::array kViews{
     DebugView{"light-lists", "lights in each pixel's tile or cluster list (magenta: a bin that did not fit this frame)", {}, {},
               render::ViewKind::LightBins, has_light_bins},
     DebugView{"depth-slices", "the cluster depth slices (--cluster-grid, --z-slicing)", {}, {}, {}, always,
-              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources&, glm::vec2, glm::vec2) {
-                views.show_depth_slices(frame);
+              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+                views.show_depth_slices(frame, res);
               }},
     DebugView{"fragments", "fragments the geometry passes rasterise per pixel (overdraw)", {.count_fragments = true}, "fragment-counts",
               {}, always},
@@ -159,6 +160,7 @@ DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa),
       cluster_grid_(options.cluster_grid),
       z_slicing_(options.z_slicing),
+      samples_(options.msaa),
       depth_sampler_(gfx::create_sampler()) {
   glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_COMPARE_MODE, GL_NONE);
   glSamplerParameteri(depth_sampler_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -321,9 +323,14 @@ void DebugViews::show_nothing() {
 }
 
 void DebugViews::show_light_sum(render::ResourceId sum, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
-  gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_sum.frag"});
+  // An image of the frame's own size and samples, or one of the post-process
+  // chains' (a single sample, a fraction of the size), stretched over the view.
+  const render::TextureDesc& desc = res.texture_desc(sum);
+  const bool single = desc.samples == 1 && samples_ > 1;
+  gfx::ShaderProgram& program =
+      gpu_.shaders().get({"post/fullscreen.vert", "debug/light_sum.frag"}, single ? std::vector<gfx::ShaderDefine>{{"SINGLE_SAMPLE"}} : std::vector<gfx::ShaderDefine>{});
   program.set("u_thumbnail_origin", origin);
-  program.set("u_thumbnail_scale", scale);
+  program.set("u_thumbnail_scale", scale * glm::vec2(desc.size) / glm::vec2(glm::max(size_, glm::ivec2(1))));
   glBindTextureUnit(0, res.texture(sum));
   program.use();
   fullscreen_.draw();
@@ -355,18 +362,18 @@ std::vector<DebugViews::CountAverage> DebugViews::take_averages() {
   return averages;
 }
 
-void DebugViews::show_depth_slices(const DebugViewFrame& frame) {
+void DebugViews::show_depth_slices(const DebugViewFrame& frame, const render::PassResources& res) {
   const glm::uvec3 dims = cluster_grid_.at(frame.targets.size);
   if (!slicing_ || slicing_->dims() != dims) slicing_ = std::make_unique<ClusterGrid>(dims, z_slicing_);
   slicing_->update(frame.frame.projection, frame.frame.near_plane, frame.frame.far_plane);
   slicing_->bind();
   gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"}, {{"DEPTH_SLICES"}});
-  glBindTextureUnit(5, frame.targets.depth_stencil);
+  glBindTextureUnit(5, res.texture(frame.frame.scene_depth));
   program.use();
   fullscreen_.draw();
 }
 
-void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources&) {
+void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res) {
   const LightBins* bins = frame.graph.published<LightBins>();
   if (!bins || bins->lists != lists) {
     show_nothing();  // lists whose technique did not say how pixels map to them
@@ -380,7 +387,7 @@ void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame&
   program.set("u_tile_size", bins->tile_size);
   // A bin can hold every light: the map tops out there.
   program.set("u_scale_max", static_cast<float>(std::max<std::size_t>(frame.frame.lights.size(), 1)));
-  glBindTextureUnit(5, frame.targets.depth_stencil);
+  glBindTextureUnit(5, res.texture(frame.frame.scene_depth));
   program.use();
   fullscreen_.draw();
 }

@@ -180,7 +180,7 @@ class DebugViews {
   // frame's published LightBins); flat grey for lists nobody described.
   void show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res);
   // Each pixel's cluster depth slice, in any mode.
-  void show_depth_slices(const DebugViewFrame& frame);
+  void show_depth_slices(const DebugViewFrame& frame, const render::PassResources& res);
   // A colour or light resource, exposed and tone-mapped (with the thumbnail mapping).
   void show_light_sum(render::ResourceId sum, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale);
   // A shadow atlas's depths.
@@ -204,6 +204,7 @@ class DebugViews {
   // in any mode; made when that view is first shown.
   ClusterGridSize cluster_grid_;
   ZSlicing z_slicing_;
+  int samples_ = 1;  // of the frame's targets (TechniqueOptions::msaa)
   std::unique_ptr<ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
   gfx::Sampler depth_sampler_;  // the shadow atlas read as depth values, comparison off

@@ -309,9 +309,10 @@ void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position
   draw_items(batches.subspan(split));
 }
 
-void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets) {
+void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
+                      const FrameTargets& targets) {
   if (frame.draws.blended.empty()) return;
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloser);
@@ -324,12 +325,13 @@ void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& f
   glDisable(GL_BLEND);
 }
 
-void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets) {
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+void begin_scene_pass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+  const GLuint framebuffer = scene_framebuffer(res, frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
-  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, clear_color);
-  glClearNamedFramebufferfi(targets.hdr_framebuffer, GL_DEPTH_STENCIL, 0, gfx::kDepthFar, 0);
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, clear_color);
+  glClearNamedFramebufferfi(framebuffer, GL_DEPTH_STENCIL, 0, gfx::kDepthFar, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloser);
   glDepthMask(GL_TRUE);

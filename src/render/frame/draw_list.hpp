@@ -14,11 +14,13 @@
 
 #include <glm/glm.hpp>
 
+#include "render/binding_slots.hpp"
 #include "assets/asset_manager.hpp"
 #include "render/gpu_assets.hpp"
 #include "ecs/registry.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_program.hpp"
+#include "render/frame_graph.hpp"
 
 namespace atrium::lighting {
 
@@ -27,8 +29,7 @@ inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlot
 
 // Where mesh.vert finds the instance records and material.glsl the materials
 // (storage buffer bindings).
-inline constexpr unsigned kInstanceStorageBinding = 1;
-inline constexpr unsigned kMaterialStorageBinding = 8;
+using render::kInstanceStorageBinding, render::kMaterialStorageBinding;
 
 // std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
 struct InstanceData {
@@ -184,13 +185,14 @@ struct FrameTargets;
 
 // Draws the frame's blended items over the lit image, back to front, shaded by
 // every light with `forward_program`, depth-tested against the opaque depth
-// (the body of the "transparency" pass, lighting/scene_passes.hpp).
-void draw_transparent(gfx::ShaderProgram& forward_program, const FrameContext& frame, const FrameTargets& targets);
+// (the body of the "transparency" pass, frame/scene_passes.hpp).
+void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
+                      const FrameTargets& targets);
 
 // Binds the HDR target, clears it to the background and depth to the far
 // plane (gfx::kDepthFar, reversed depth), and sets
 // the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
-void begin_scene_pass(const FrameContext& frame, const FrameTargets& targets);
+void begin_scene_pass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
 
 // A triangle that covers the viewport, for full-screen passes.
 class FullscreenTriangle {

@@ -7,8 +7,7 @@
 
 namespace atrium::lighting {
 
-inline constexpr unsigned kFrameUniformBinding = 0;
-inline constexpr unsigned kLightStorageBinding = 0;
+using render::kFrameUniformBinding, render::kLightStorageBinding;
 
 struct FrameUniforms {
   glm::mat4 view;

@@ -15,12 +15,12 @@ void add_transparency_pass(render::FrameGraph& graph, gfx::ShaderProgram& progra
   if (frame.draws.blended.empty()) return;
   graph.add_pass("transparency", [&](render::PassBuilder& pass) {
     pass.read(frame.scene_depth, render::Access::Attachment);
-    pass.read(frame.light_buffer, render::Access::Storage);
+    read_shading_inputs(pass, frame);
     if (reads) reads(pass);
     pass.write(frame.scene_color, render::Access::Attachment);
-  }, [&program, &frame, &targets, prepare = std::move(prepare)](const render::PassResources&) {
+  }, [&program, &frame, &targets, prepare = std::move(prepare)](const render::PassResources& res) {
     if (prepare) prepare();
-    draw_transparent(program, frame, targets);
+    draw_transparent(res, program, frame, targets);
   });
 }
 

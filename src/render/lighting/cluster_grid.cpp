@@ -9,7 +9,7 @@
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kBoundsBinding = 4, kPerClusterBinding = 6;
+constexpr GLuint kBoundsBinding = render::kBinBoundsBinding;
 }  // namespace
 
 LightAssignmentPrograms ClusterGrid::assign_programs(gfx::ShaderLibrary& shaders, ClusterBounds bounds, bool active_only,

@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "render/binding_slots.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_library.hpp"
 #include "gfx/shader_program.hpp"
@@ -22,7 +23,7 @@
 
 namespace atrium::lighting {
 
-inline constexpr unsigned kClusterUniformBinding = 1;
+using render::kClusterUniformBinding, render::kPerClusterBinding;
 
 // std140 twin of ClusterBlock in shaders/common/clusters.glsl.
 struct ClusterUniforms {

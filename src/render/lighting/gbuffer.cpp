@@ -114,8 +114,9 @@ void GBuffer::bind_textures(const render::PassResources& res, const Found& found
 
 void GBuffer::bind_textures(const render::PassResources& res) const { bind_textures(res, {layout_, resources_, targets().size()}); }
 
-void GBuffer::draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameTargets& targets) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
+void GBuffer::draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameContext& frame,
+                              const FrameTargets& targets) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, lighting_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

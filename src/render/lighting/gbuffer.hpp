@@ -66,8 +66,9 @@ class GBuffer {
   // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures(const render::PassResources& res) const;
   // A full-screen pass with `programs` reading the G-buffer into the lighting
-  // targets (FrameTargets::lighting_framebuffer), per pixel or per sample.
-  void draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameTargets& targets) const;
+  // targets (lighting_framebuffer in render/techniques/technique.hpp), per pixel or per sample.
+  void draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameContext& frame,
+                       const FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
   [[nodiscard]] GBufferLayout layout() const { return layout_; }

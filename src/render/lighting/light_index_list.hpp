@@ -32,6 +32,7 @@
 #include <string>
 #include <vector>
 
+#include "render/binding_slots.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/readback_ring.hpp"
 #include "gfx/shader_library.hpp"
@@ -41,8 +42,8 @@
 
 namespace atrium::lighting {
 
-inline constexpr GLuint kLightRangesBinding = 2, kLightIndicesBinding = 3, kLightTotalBinding = 5, kBinCountsBinding = 7,
-                        kBigLightsBinding = 12, kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
+using render::kBigLightsBinding, render::kBinCountsBinding, render::kLightFitsBinding, render::kLightIndicesBinding,
+    render::kLightRangesBinding, render::kLightTotalBinding, render::kLongBinsBinding, render::kOverflowLightsBinding;
 
 // Entries per light the array is first sized for, before any total has arrived.
 inline constexpr std::uint32_t kFirstEntriesPerLight = 4;

@@ -59,6 +59,7 @@ void LightingPass::each(const std::function<void(gfx::ShaderProgram&)>& f) const
 
 void LightingPass::declare(render::PassBuilder& pass, const GBuffer& gbuffer, const FrameContext& frame) const {
   gbuffer.read_targets(pass);
+  read_shading_inputs(pass, frame);
   const render::Access access = compute_ ? render::Access::Storage : render::Access::Attachment;
   pass.write(frame.scene_color, access);
   for (const render::ResourceId sum : {frame.diffuse_light, frame.specular_light}) {
@@ -73,7 +74,7 @@ void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer,
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
     }
-    gbuffer.draw_fullscreen(res, *fragment_, targets);
+    gbuffer.draw_fullscreen(res, *fragment_, frame, targets);
     if (add) glDisable(GL_BLEND);
     return;
   }

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "render/binding_slots.hpp"
 #include "components/technique_options.hpp"
 #include "gfx/shader_library.hpp"
 #include "render/frame_graph.hpp"
@@ -24,13 +25,7 @@
 
 namespace atrium::lighting {
 
-// Image units of a compute lighting pass's targets (shaders/common/lighting_targets.glsl):
-// the heatmap's light counts take unit 0, the fragment counts unit 1.
-inline constexpr GLuint kLitColorImageUnit = 2;
-inline constexpr GLuint kDiffuseLightImageUnit = 3;
-inline constexpr GLuint kSpecularLightImageUnit = 4;
-// The tone map's output image in the compute stage (shaders/post/tonemap.comp).
-inline constexpr GLuint kDisplayImageUnit = 2;
+using render::kDiffuseLightImageUnit, render::kDisplayImageUnit, render::kLitColorImageUnit, render::kSpecularLightImageUnit;
 
 // The stage `options` ask for, Automatic resolved for the current context
 // (never Automatic). Throws gfx::ResourceLimitError naming what is missing
@@ -69,8 +64,9 @@ class LightingPass {
   [[nodiscard]] LightingStage stage() const { return compute_ ? LightingStage::Compute : LightingStage::Fragment; }
   // Calls `f` with each program (to set the same uniforms on all).
   void each(const std::function<void(gfx::ShaderProgram&)>& f) const;
-  // Declares what the pass reads (the G-buffer; its other inputs are the
-  // technique's) and the lit targets it writes, as the stage reaches them.
+  // Declares what the pass reads (the G-buffer, the lights and the shadow
+  // atlas; its light lists are the technique's) and the lit targets it
+  // writes, as the stage reaches them.
   void declare(render::PassBuilder& pass, const GBuffer& gbuffer, const FrameContext& frame) const;
   // Shades every pixel of the lit targets from the G-buffer.
   void run(const render::PassResources& res, const GBuffer& gbuffer, const FrameContext& frame, const FrameTargets& targets) const;

@@ -12,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "render/binding_slots.hpp"
 #include "render/shader_globals.hpp"
 #include "assets/asset_manager.hpp"
 #include "render/gpu_assets.hpp"
@@ -19,7 +20,6 @@
 #include "components/frame_resources.hpp"
 #include "ecs/registry.hpp"
 #include "gfx/gl_object.hpp"
-#include "gfx/pass_timer.hpp"
 #include "gfx/stream_buffer.hpp"
 #include "render/light_buffer.hpp"
 #include "render/frame/draw_list.hpp"
@@ -31,8 +31,7 @@
 namespace atrium::shadows {
 
 // Where the shaders find the atlas (a sampler2DShadow) and the views (std430).
-inline constexpr unsigned kShadowAtlasUnit = 15;
-inline constexpr unsigned kShadowViewBinding = 9;
+using render::kShadowAtlasUnit, render::kShadowViewBinding;
 // The atlas's side, or the context's largest texture if that is smaller.
 inline constexpr int kAtlasSize = 4096;
 // Depth bias while drawing maps: the slope-scaled term grows with how steeply a
@@ -75,6 +74,8 @@ class ShadowAtlas {
   // Draws the maps update() found stale, with instance, material and command
   // buffers of its own (bound when it returns), then binds the atlas again.
   void draw_pending(ecs::Registry& registry);
+  // Whether update() left maps for draw_pending.
+  [[nodiscard]] bool has_pending() const { return !pending_views_.empty(); }
 
   // The atlas texture (depth, compare mode on), 0 while shadows are off.
   [[nodiscard]] GLuint texture() const { return atlas_.id(); }

@@ -25,8 +25,9 @@
 
 namespace atrium::lighting {
 
-// Draws batches of the frame's draw list with the caller's program and state.
-using DrawBatches = std::function<void(std::span<const DrawBatch>)>;
+// A function that draws batches of the frame's draw list with the caller's
+// program and state (what the first pass over opaque geometry is given).
+using BatchDrawer = std::function<void(std::span<const DrawBatch>)>;
 
 // What a technique reads each frame. The frame uniform block and the light
 // storage buffer are already bound at kFrameUniformBinding / kLightStorageBinding.
@@ -40,7 +41,7 @@ struct FrameContext {
   // what the last frame showed, tests the rest against the depth just written,
   // and calls `draw` again with what that depth does not hide. `draw` may rely
   // on the program in use and the pass's GL state surviving between the calls.
-  std::function<void(const DrawBatches& draw)> draw_first_pass;
+  std::function<void(const BatchDrawer& draw)> draw_first_pass;
   const assets::GpuAssets& gpu;
   std::span<const GpuLight> lights;  // CPU copy of the light buffer's contents
   glm::vec3 background{0.0f};
@@ -54,22 +55,37 @@ struct FrameContext {
   // With the split on (TechniqueOptions::split_lighting), the diffuse and
   // specular light sums a deferred lighting pass writes; invalid otherwise.
   render::ResourceId diffuse_light{}, specular_light{};
+  // The shadow maps (RendererSettings::shadows); invalid while shadows are off.
+  render::ResourceId shadow_atlas{};
 };
 
-// The frame's named targets, owned by the MeshRenderer.
+// The framebuffer of the lit image and the scene's depth-stencil, from the
+// graph (a pass that draws into them declares it writes scene_color).
+inline GLuint scene_framebuffer(const render::PassResources& res, const FrameContext& frame) {
+  return res.framebuffer({frame.scene_color}, frame.scene_depth);
+}
+// Where deferred lighting passes draw (shaders/common/lighting_targets.glsl):
+// the lit image, and with the split on the diffuse and specular light sums
+// as colour attachments 1 and 2; the scene's depth-stencil.
+inline GLuint lighting_framebuffer(const render::PassResources& res, const FrameContext& frame) {
+  if (!frame.diffuse_light.valid()) return scene_framebuffer(res, frame);
+  return res.framebuffer({frame.scene_color, frame.diffuse_light, frame.specular_light}, frame.scene_depth);
+}
+
+// What every pass that shades reads besides its own inputs: the lights and,
+// with shadows on, the shadow atlas (so that the graph orders it after the
+// shadow maps are drawn and keeps the maps' pass).
+inline void read_shading_inputs(render::PassBuilder& pass, const FrameContext& frame) {
+  pass.read(frame.light_buffer, render::Access::Storage);
+  if (frame.shadow_atlas.valid()) pass.read(frame.shadow_atlas, render::Access::Sampled);
+}
+
+// The shape of the frame's targets (owned by the MeshRenderer). Their GL
+// objects are the graph's: a pass reaches them through PassResources and the
+// FrameContext's resource handles (scene_framebuffer, lighting_framebuffer).
 struct FrameTargets {
-  GLuint hdr_framebuffer = 0;  // colour attachment 0 = hdr_color, depth-stencil = depth_stencil
-  GLuint hdr_color = 0;        // RGBA16F
-  GLuint depth_stencil = 0;    // gfx::kDepthStencilFormat
   glm::ivec2 size{0};
-  int samples = 1;             // MSAA samples of every target here (TechniqueOptions::msaa)
-  // Where deferred lighting passes draw (shaders/common/lighting_targets.glsl):
-  // hdr_framebuffer, or with the split on (TechniqueOptions::split_lighting, the
-  // diffuse-light and specular-light views) a framebuffer that adds the two
-  // RGBA16F light sums as colour attachments 1 and 2 (0 when the split is off).
-  GLuint lighting_framebuffer = 0;
-  GLuint diffuse_light = 0;
-  GLuint specular_light = 0;
+  int samples = 1;  // MSAA samples of the scene's targets (TechniqueOptions::msaa)
 };
 
 class LightingTechnique {

@@ -66,10 +66,9 @@ void update_fireflies(ecs::Registry& registry) {
 void register_fireflies(ecs::Scheduler& scheduler, ecs::Registry& registry) {
   registry.resource<SystemOptions>().declare(kOption, "fireflies", 0.0, kMaxFireflies);
   auto sprites = std::make_shared<FireflySprites>();
-  registry.resource<RenderContributors>().after_lighting.push_back(
-      [sprites](render::FrameGraph& graph, ecs::Registry& r, const lighting::FrameContext& frame, const lighting::FrameTargets& targets) {
-        sprites->add_pass(graph, r, frame, targets);
-      });
+  registry.resource<render::FrameModules>().add({render::FrameStage::AfterLighting, kOption,
+                                                  [sprites](render::FrameBuild& build) { sprites->add_pass(build); },
+                                                  [sprites] { sprites->invalidate(); }});
   scheduler.add(ecs::Phase::Update, kOption, update_fireflies);
 }
 

@@ -12,8 +12,8 @@
 namespace atrium {
 
 // Adds the system (Update phase) and its sprites pass to the renderer's
-// contributors. The registry must hold SystemOptions, SceneSettings,
-// LightAnimationSettings and RenderContributors.
+// frame modules (after lighting). The registry must hold SystemOptions,
+// SceneSettings, LightAnimationSettings and render::FrameModules.
 void register_fireflies(ecs::Scheduler& scheduler, ecs::Registry& registry);
 
 }  // namespace atrium

@@ -14,8 +14,8 @@ constexpr GLuint kPositionSizeLocation = 0, kColorLocation = 1;
 
 }  // namespace
 
-void FireflySprites::add_pass(render::FrameGraph& graph, ecs::Registry& registry, const lighting::FrameContext& frame,
-                              const lighting::FrameTargets& targets) {
+void FireflySprites::add_pass(render::FrameBuild& build) {
+  ecs::Registry& registry = build.registry;
   sprites_.clear();
   registry.view<Firefly, Transform, LightColor>().each([&](ecs::Entity, const Firefly& firefly, const Transform& transform, const LightColor& light) {
     sprites_.push_back({glm::vec4(transform.position, firefly.size), glm::vec4(light.color, 0.0f)});
@@ -32,16 +32,17 @@ void FireflySprites::add_pass(render::FrameGraph& graph, ecs::Registry& registry
     }
     glVertexArrayBindingDivisor(vao, 0, 1);
   }
-  graph.add_pass("fireflies", [&](render::PassBuilder& pass) {
-    pass.read(frame.scene_depth, render::Access::Attachment);
-    pass.write(frame.scene_color, render::Access::Attachment);
-  }, [this, &targets](const render::PassResources&) { draw(targets); });
+  const render::ResourceId color = build.frame.scene_color, depth = build.frame.scene_depth;
+  build.graph.add_pass("fireflies", [&](render::PassBuilder& pass) {
+    pass.read(depth, render::Access::Attachment);
+    pass.write(color, render::Access::Attachment);
+  }, [this, color, depth, size = build.targets.size](const render::PassResources& res) { draw(res.framebuffer({color}, depth), size); });
 }
 
-void FireflySprites::draw(const lighting::FrameTargets& targets) {
+void FireflySprites::draw(GLuint framebuffer, glm::ivec2 size) {
   buffer_.upload(sprites_.data(), sprites_.size() * sizeof(Sprite));
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
-  glViewport(0, 0, targets.size.x, targets.size.y);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, size.x, size.y);
   // Hidden behind the scene where it is, glowing over it where it is not.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloser);

@@ -1,7 +1,8 @@
 // The fireflies' sprites pass: reads the scene depth, adds a camera-facing
 // glowing disc per Firefly to the lit HDR image (after lighting, before tone
 // mapping), so that each light is seen where it shines from. It owns the GL
-// buffer of the sprites and joins the frame graph as a RenderContributor.
+// buffer of the sprites and joins the frame as a module of the after-lighting
+// stage (render/frame/frame_modules.hpp).
 #pragma once
 
 #include <glm/glm.hpp>
@@ -9,15 +10,16 @@
 
 #include "gfx/shader_program.hpp"
 #include "gfx/stream_buffer.hpp"
-#include "render/contributors.hpp"
+#include "render/frame/frame_modules.hpp"
 
 namespace atrium {
 
 class FireflySprites {
  public:
   // Adds the "fireflies" pass when the registry holds fireflies.
-  void add_pass(render::FrameGraph& graph, ecs::Registry& registry, const lighting::FrameContext& frame,
-                const lighting::FrameTargets& targets);
+  void add_pass(render::FrameBuild& build);
+  // The module's hook: the program is fetched again (shader globals changed).
+  void invalidate() { program_ = nullptr; }
 
  private:
   // One sprite, the instanced attributes of fireflies/sprite.vert: xyz world
@@ -26,7 +28,7 @@ class FireflySprites {
     glm::vec4 position_size;
     glm::vec4 color;
   };
-  void draw(const lighting::FrameTargets& targets);
+  void draw(GLuint framebuffer, glm::ivec2 size);
 
   std::vector<Sprite> sprites_;
   gfx::StreamBuffer buffer_;

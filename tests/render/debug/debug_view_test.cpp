@@ -10,7 +10,7 @@
 #include "assets/image.hpp"
 #include "assets/mesh_builder.hpp"
 #include "components/frame_resources.hpp"
-#include "render/contributors.hpp"
+#include "render/frame/frame_modules.hpp"
 #include "support/gl_test.hpp"
 #include "render/techniques/clustered/clustered.hpp"
 #include "render/debug/debug_views.hpp"
@@ -492,16 +492,16 @@ TEST_F(DebugViewRender, EveryResourceViewOfEveryModeDraws) {
 // refused with the views it could have been.
 TEST_F(DebugViewRender, ATargetAContributorDeclaresIsAViewByItsName) {
   World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .size = {32, 18}});
-  world.registry().resource<RenderContributors>().after_lighting.push_back(
-      [](render::FrameGraph& graph, ecs::Registry&, const lighting::FrameContext&, const lighting::FrameTargets& targets) {
-        graph.add_pass("test fill", [&](render::PassBuilder& pass) {
-          pass.keep();
-          pass.create("test-fill", render::TextureDesc{GL_RGBA16F, targets.size, 1}, render::ViewKind::Color);
-        }, [&graph](const render::PassResources& res) {
-          const GLfloat colour[] = {0.0f, 4.0f, 0.0f, 1.0f};
-          glClearTexImage(res.texture(graph.find("test-fill")), 0, GL_RGBA, GL_FLOAT, colour);
-        });
-      });
+  world.registry().resource<render::FrameModules>().add({render::FrameStage::AfterLighting, "test fill", [](render::FrameBuild& build) {
+    render::FrameGraph& graph = build.graph;
+    graph.add_pass("test fill", [&](render::PassBuilder& pass) {
+      pass.keep();
+      pass.create("test-fill", render::TextureDesc{GL_RGBA16F, build.targets.size, 1}, render::ViewKind::Color);
+    }, [&graph](const render::PassResources& res) {
+      const GLfloat colour[] = {0.0f, 4.0f, 0.0f, 1.0f};
+      glClearTexImage(res.texture(graph.find("test-fill")), 0, GL_RGBA, GL_FLOAT, colour);
+    });
+  }, {}});
   world.frame(0.0);
   EXPECT_TRUE(world.renderer().offers("test-fill"));
   world.registry().resource<RendererSettings>().debug_view = "test-fill";

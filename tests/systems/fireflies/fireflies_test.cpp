@@ -4,7 +4,6 @@
 // draws that frame as forward does; the option comes from the command line
 // and scene files; and the system lives in its own files, joined to the
 // engine by one registration line and one option row.
-#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -22,6 +21,7 @@
 #include "components/system_options.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
+#include "support/source_mentions.hpp"
 #include "systems/fireflies/firefly.hpp"
 
 namespace atrium {
@@ -96,21 +96,8 @@ TEST_F(FirefliesTest, TheOptionComesFromTheCommandLineAndSceneFiles) {
 // folders, and in the rest of the engine only its registration (and include)
 // in app/world.cpp and its option row in app/command_line.cpp.
 TEST(FirefliesCode, LivesInItsOwnFilesPlusOneRegistrationAndOneOptionRow) {
-  const fs::path root(ATRIUM_SOURCE_DIR);
-  std::map<std::string, int> outside;  // file -> lines mentioning fireflies
-  for (const char* top : {"src", "shaders"}) {
-    for (const auto& entry : fs::recursive_directory_iterator(root / top)) {
-      if (!entry.is_regular_file()) continue;
-      const std::string relative = fs::relative(entry.path(), root).generic_string();
-      if (relative.starts_with("src/systems/fireflies/") || relative.starts_with("shaders/fireflies/")) continue;
-      std::ifstream in(entry.path());
-      for (std::string line; std::getline(in, line);) {
-        for (char& c : line) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (line.find("firefl") != std::string::npos) ++outside[relative];
-      }
-    }
-  }
-  EXPECT_EQ(outside, (std::map<std::string, int>{{"src/app/command_line.cpp", 2}, {"src/app/world.cpp", 2}}));
+  EXPECT_EQ(testing::mentions_outside("firefl", {"src/systems/fireflies/", "shaders/fireflies/"}),
+            (std::map<std::string, int>{{"src/app/command_line.cpp", 2}, {"src/app/world.cpp", 2}}));
 }
 
 }  // namespace

@@ -64,14 +64,14 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
     buffer = grid_->active_buffer();
   }
   grid_->bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, buffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, buffer);
   if (deferred_) gbuffer_.bind_textures(res);
-  else glBindTextureUnit(0, shading_depth_.valid() ? res.texture(shading_depth_) : targets.depth_stencil);
+  else glBindTextureUnit(0, res.texture(shading_depth_.valid() ? shading_depth_ : frame.scene_depth));
   mark_->use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
   if (!frame.draws.blended.empty()) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
     glViewport(0, 0, targets.size.x, targets.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(gfx::kDepthCloser);
@@ -114,9 +114,12 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
     grid_->assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
   });
   graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
-    if (deferred_) lighting_->declare(pass, gbuffer_, frame);
-    else pass.write(frame.scene_color, render::Access::Attachment);
-    pass.read(frame.light_buffer, render::Access::Storage);
+    if (deferred_) {
+      lighting_->declare(pass, gbuffer_, frame);
+    } else {
+      pass.write(frame.scene_color, render::Access::Attachment);
+      read_shading_inputs(pass, frame);
+    }
     pass.read(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) { shade(res, frame, targets); });
   // Blended surfaces are shaded forward+ from the same lists: their clusters
@@ -126,8 +129,8 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
 }
 
 void ClusteredTechnique::draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
-  begin_scene_pass(frame, targets);
-  const DrawBatches draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
+  begin_scene_pass(res, frame, targets);
+  const BatchDrawer draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
   if (shading_depth_.valid()) {
     const GLuint prepass_framebuffer = res.framebuffer({shading_depth_}, frame.scene_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer);
@@ -156,7 +159,7 @@ void ClusteredTechnique::shade(const render::PassResources& res, const FrameCont
     lighting_->run(res, gbuffer_, frame, targets);
     return;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.hdr_framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   // Every visible fragment is shaded once: its depth is already there.
   glEnable(GL_DEPTH_TEST);

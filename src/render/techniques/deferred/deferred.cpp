@@ -23,7 +23,6 @@ void DeferredTechnique::add_passes(render::FrameGraph& graph, const FrameContext
   add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     lighting_.declare(pass, gbuffer_, frame);
-    pass.read(frame.light_buffer, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) { light(res, frame, targets); });
   add_transparency_pass(graph, forward_, frame, targets);
 }

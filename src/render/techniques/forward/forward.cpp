@@ -9,11 +9,11 @@ ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOption
 
 void ForwardTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
   graph.add_pass("shading", [&](render::PassBuilder& pass) {
-    pass.read(frame.light_buffer, render::Access::Storage);
+    read_shading_inputs(pass, frame);
     pass.write(frame.scene_depth, render::Access::Attachment);
     pass.write(frame.scene_color, render::Access::Attachment);
-  }, [this, &frame, &targets](const render::PassResources&) {
-    begin_scene_pass(frame, targets);
+  }, [this, &frame, &targets](const render::PassResources& res) {
+    begin_scene_pass(res, frame, targets);
     program_.use();
     frame.draw_first_pass(draw_items);
   });

@@ -32,7 +32,7 @@ void LightPrepassTechnique::add_passes(render::FrameGraph& graph, const FrameCon
   add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   graph.add_pass("light buffer", [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
-    pass.read(frame.light_buffer, render::Access::Storage);
+    read_shading_inputs(pass, frame);
     // The scene's depth, for the volumes' depth test (it is not sampled: the
     // distance comes from the thin G-buffer).
     pass.read(frame.scene_depth, render::Access::Attachment);
@@ -90,8 +90,8 @@ void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, 
 void LightPrepassTechnique::shade_materials(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
   // Pixels no surface covers keep the background and no light.
   const GLfloat background[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
-  glClearNamedFramebufferfv(targets.hdr_framebuffer, GL_COLOR, 0, background);
-  glBindFramebuffer(GL_FRAMEBUFFER, targets.lighting_framebuffer);
+  glClearNamedFramebufferfv(scene_framebuffer(res, frame), GL_COLOR, 0, background);
+  glBindFramebuffer(GL_FRAMEBUFFER, lighting_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   // Each visible fragment is shaded once: the first pass left its depth.
   glEnable(GL_DEPTH_TEST);

@@ -23,17 +23,18 @@ void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const FrameCont
   add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   auto lights_scene = [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
-    pass.read(frame.light_buffer, render::Access::Storage);
+    read_shading_inputs(pass, frame);
     pass.write(frame.scene_color, render::Access::Attachment);
   };
-  graph.add_pass("base", lights_scene, [this, &targets](const render::PassResources& res) { gbuffer_.draw_fullscreen(res, unlit_, targets); });
+  graph.add_pass("base", lights_scene,
+                 [this, &frame, &targets](const render::PassResources& res) { gbuffer_.draw_fullscreen(res, unlit_, frame, targets); });
   if (std::vector<std::uint32_t> suns = directional_lights(frame.lights); !suns.empty()) {
-    graph.add_pass("directional", lights_scene, [this, &targets, suns = std::move(suns)](const render::PassResources& res) {
+    graph.add_pass("directional", lights_scene, [this, &frame, &targets, suns = std::move(suns)](const render::PassResources& res) {
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
       for (const std::uint32_t light : suns) {
         directional_.each([&](gfx::ShaderProgram& program) { program.set("u_light_index", light); });
-        gbuffer_.draw_fullscreen(res, directional_, targets);
+        gbuffer_.draw_fullscreen(res, directional_, frame, targets);
       }
     });
   }

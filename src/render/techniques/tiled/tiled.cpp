@@ -1,3 +1,4 @@
+#include "render/binding_slots.hpp"
 #include "render/techniques/tiled/tiled.hpp"
 
 #include "gfx/depth.hpp"
@@ -6,7 +7,7 @@
 
 namespace atrium::lighting {
 namespace {
-constexpr GLuint kTileBoundsBinding = 4;
+constexpr GLuint kTileBoundsBinding = render::kBinBoundsBinding;
 }  // namespace
 
 TiledTechnique::TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
@@ -75,7 +76,6 @@ void TiledTechnique::add_passes(render::FrameGraph& graph, const FrameContext& f
   });
   graph.add_pass("lighting", [&](render::PassBuilder& pass) {
     lighting_.declare(pass, gbuffer_, frame);
-    pass.read(frame.light_buffer, render::Access::Storage);
     pass.read(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
     list_->bind();
@@ -99,7 +99,7 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
   {
     const glm::ivec2 size = targets.size;
     const GLuint front_framebuffer = res.framebuffer({}, front_depth_);
-    glBlitNamedFramebuffer(targets.hdr_framebuffer, front_framebuffer, 0, 0, size.x, size.y, 0, 0, size.x, size.y,
+    glBlitNamedFramebuffer(scene_framebuffer(res, frame), front_framebuffer, 0, 0, size.x, size.y, 0, 0, size.x, size.y,
                            GL_DEPTH_BUFFER_BIT, GL_NEAREST);
     glBindFramebuffer(GL_FRAMEBUFFER, front_framebuffer);
     glViewport(0, 0, size.x, size.y);
@@ -108,7 +108,7 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
     glDepthMask(GL_TRUE);
     blended_depth_.use();
     draw_items(frame.draws.blended);
-    glBindTextureUnit(0, targets.depth_stencil);
+    glBindTextureUnit(0, res.texture(frame.scene_depth));
     glBindTextureUnit(1, res.texture(front_depth_));
     assign_lights(*blended_list_, *blended_bounds_, static_cast<std::uint32_t>(frame.lights.size()));
   }

@@ -1,0 +1,98 @@
+#include "render/frame/frame_draws.hpp"
+
+#include "assets/asset_manager.hpp"
+#include "components/frame_resources.hpp"
+
+namespace atrium::render {
+
+FrameDraws::FrameDraws(assets::GpuAssets& gpu, gfx::ShaderLibrary& shaders) : gpu_(gpu), depth_reader_(shaders), gpu_culling_(shaders) {}
+
+void FrameDraws::begin_frame(ecs::Registry& registry, CullingChoice culling, bool compute_free, std::span<const GpuLight> lights) {
+  culling_ = culling;
+  compute_free_ = compute_free;
+  occlusion_pending_ = culling.occlusion;
+  triangles_occluded_ = 0;
+  const auto& view = registry.resource<ViewState>();
+  list_ = lighting::build_draw_list(registry, registry.resource<assets::AssetManager>(), gpu_, view.view,
+                                    culling.on_gpu      ? lighting::DrawSelection::EachInView
+                                    : culling.occlusion ? lighting::DrawSelection::ShownLastFrame
+                                                        : lighting::DrawSelection::InView);
+  if (compute_free) storage_free_.upload(lights, list_);
+  upload(list_);
+}
+
+void FrameDraws::upload(const lighting::DrawList& list) {
+  gpu_.reserve_instances(list.instances.size());
+  // The compute-free tier's records went to textures (StorageFreeRecords) and its commands stay on the CPU.
+  if (!compute_free_) {
+    instances_.upload(list.instances.data(), list.instances.size() * sizeof(lighting::InstanceData));
+    materials_.upload(list.materials.data(), list.materials.size() * sizeof(lighting::MaterialData));
+    commands_.upload(list.commands.data(), list.commands.size() * sizeof(lighting::DrawCommand));
+  }
+  active_phase_.reset();
+  bind();
+}
+
+void FrameDraws::bind() const {
+  if (compute_free_) {
+    // The tier's twins: records in textures, commands drawn from the CPU; no storage or indirect buffer.
+    storage_free_.bind();
+    lighting::draw_commands_from_cpu(list_.commands);
+    lighting::draw_counts_from(-1);
+    return;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+  lighting::draw_commands_from_cpu({});
+  if (active_phase_) {
+    gpu_culling_.bind(*active_phase_);
+  } else {
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
+    lighting::draw_counts_from(-1);
+  }
+}
+
+void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchDrawer& draw, GLuint depth, glm::ivec2 size) {
+  draw(list_.opaque);
+  // Once a frame: a debug view's own geometry pass draws the list as it stands.
+  if (!occlusion_pending_) return;
+  occlusion_pending_ = false;
+  if (culling_.on_gpu) {
+    // The same phases on the GPU: the revealed commands, then the shown ones
+    // for every pass after this one.
+    gpu_culling_.reveal(depth, size);
+    gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed);
+    draw(list_.opaque);
+    gpu_culling_.remember(depth, size);
+    active_phase_ = GpuOcclusionCulling::Phase::Shown;
+    bind();
+    return;
+  }
+  const auto& view = registry.resource<ViewState>();
+  DepthPyramid pyramid = depth_reader_.read(depth, size);
+  const OcclusionCounts late = reveal_unhidden(registry, pyramid, view);
+  if (late.tested > late.hidden) {
+    const auto& assets = registry.resource<assets::AssetManager>();
+    const lighting::DrawList revealed = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Revealed);
+    upload(revealed);
+    draw(revealed.opaque);
+    list_ = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Shown);
+    upload(list_);
+    pyramid = depth_reader_.read(depth, size);
+  }
+  triangles_occluded_ = remember_shown(registry, pyramid, view).triangles_hidden;
+}
+
+FrameModule FrameDraws::occlusion_module() {
+  return {FrameStage::BeforeLighting, "occlusion culling", [this](FrameBuild& build) {
+            if (!culling_.on_gpu) return;
+            // Before anything draws the list: what the last frame showed.
+            build.graph.add_pass("occlusion culling", [](PassBuilder& pass) { pass.keep(); }, [this](const PassResources&) {
+              gpu_culling_.begin(list_, commands_.buffer.id());
+              active_phase_ = GpuOcclusionCulling::Phase::First;
+              bind();
+            });
+          }, {}};
+}
+
+}  // namespace atrium::render

@@ -1,0 +1,75 @@
+// The frame's draws, with one owner: the draw list, the GPU buffers it is
+// uploaded to (instances, materials, indirect commands; on the compute-free
+// tier the records' textures and the CPU's commands), and occlusion culling's
+// phases, on the GPU or the CPU. Every pass that draws the list finds it bound
+// by bind(); the first pass over opaque geometry draws through
+// draw_first_pass(), which tests what the last frame hid against the depth that
+// pass wrote (render/culling/occlusion_culling.hpp). Reads the registry's
+// meshes and the scene's depth; writes the bound buffers.
+#pragma once
+
+#include <optional>
+
+#include <glm/glm.hpp>
+
+#include "ecs/registry.hpp"
+#include "gfx/stream_buffer.hpp"
+#include "render/culling/gpu_occlusion_culling.hpp"
+#include "render/culling/occlusion_culling.hpp"
+#include "render/frame/frame_modules.hpp"
+#include "render/gpu_assets.hpp"
+#include "render/light_buffer.hpp"
+#include "render/storage_free.hpp"
+
+namespace atrium::render {
+
+// How a frame culls what it draws (RendererSettings' culling switches, resolved).
+struct CullingChoice {
+  bool occlusion = false;  // two-phase occlusion culling this frame
+  bool on_gpu = false;     // ... with compute shaders (the list holds every in-view command)
+};
+
+class FrameDraws {
+ public:
+  FrameDraws(assets::GpuAssets& gpu, gfx::ShaderLibrary& shaders);
+
+  // Builds the frame's list from the registry (with occlusion culling: what
+  // the last frame showed, or on the GPU every command in view), uploads it
+  // with the lights of the compute-free tier (`compute_free`), and binds it.
+  void begin_frame(ecs::Registry& registry, CullingChoice culling, bool compute_free, std::span<const GpuLight> lights);
+  [[nodiscard]] const lighting::DrawList& list() const { return list_; }
+  [[nodiscard]] bool culled_on_gpu() const { return culling_.on_gpu; }
+
+  // Binds the list's buffers (or the tier's textures and CPU commands) again,
+  // after a pass that bound its own (the shadow maps).
+  void bind() const;
+  // FrameContext::draw_first_pass: draws what the last frame showed, then,
+  // once a frame with occlusion culling, what the depth it wrote (`depth`, the
+  // scene's depth-stencil texture) does not hide; list() then holds both.
+  // Returns the triangles found hidden on the CPU (GPU counts arrive later: take_gpu_counts).
+  void draw_first_pass(ecs::Registry& registry, const lighting::BatchDrawer& draw, GLuint depth, glm::ivec2 size);
+  [[nodiscard]] std::size_t triangles_occluded() const { return triangles_occluded_; }
+  [[nodiscard]] std::optional<GpuCullingCounts> take_gpu_counts() { return gpu_culling_.take_counts(); }
+
+  // The "occlusion culling" module (before lighting): with GPU culling, the
+  // pass that tests the list's commands before anything draws them.
+  [[nodiscard]] FrameModule occlusion_module();
+
+ private:
+  void upload(const lighting::DrawList& list);
+
+  assets::GpuAssets& gpu_;
+  lighting::DrawList list_;
+  CullingChoice culling_;
+  bool compute_free_ = false;
+  bool occlusion_pending_ = false;  // list_ holds only what the last frame showed; draw_first_pass tests the rest
+  std::size_t triangles_occluded_ = 0;
+  gfx::StreamBuffer instances_, materials_, commands_;
+  StorageFreeRecords storage_free_;  // the compute-free tier's lights, instances and materials
+  DepthReader depth_reader_;
+  GpuOcclusionCulling gpu_culling_;
+  // The GPU culling phase whose commands passes draw list_ from; none: the uploaded commands.
+  std::optional<GpuOcclusionCulling::Phase> active_phase_;
+};
+
+}  // namespace atrium::render
