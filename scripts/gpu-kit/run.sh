@@ -168,6 +168,11 @@ for device in cpu gpu; do
   step "occlusion culling on the $device, grid" 30 "$out/.culling-$device.md" "$atrium" bench "$grid" --modes clustered-deferred,tiled-deferred \
     --views 2 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --culling "$device"
 done
+# Bloom's cost per pixel (its three passes in the pass table), off against on.
+for bloom in 0 0.04; do
+  step "bloom $bloom, built-in" 30 "$out/.bloom-$bloom.md" "$atrium" bench --modes clustered-deferred,deferred --views 1 --size "$size" \
+    --frames "$frames" --warmup "$warmup" --frame-limit 1000 --lights 1024 --bloom "$bloom" --lighting-stage compute
+done
 gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
@@ -228,6 +233,9 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
     section "Light assignment $assignment, compute stage, Sponza lion view, 1,024 lights of 4 m" "$out/.assign-lion-$assignment.md"
   done
   section "$million lights, compute stage, built-in scene, constant density" "$out/.million.md"
+  for bloom in 0 0.04; do
+    section "Bloom $bloom, compute stage, built-in scene, 1,024 lights" "$out/.bloom-$bloom.md"
+  done
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
   section "Pictures" "$out/.render-sponza.txt"

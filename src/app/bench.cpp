@@ -252,6 +252,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   world_options.frustum_culling = options.frustum_culling;
   world_options.occlusion_culling = options.occlusion_culling;
   world_options.culling_device = options.culling_device;
+  world_options.system_options = options.system_options;
   // One world for the sweep: the scene loads once, and each count replaces
   // the lights as a world made with that count would have them.
   World world(world_options);

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,8 @@ struct BenchOptions {
   bool frustum_culling = true;               // --no-culling
   bool occlusion_culling = true;             // --no-occlusion-culling
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
+  // Settings of optional systems (components/system_options.hpp): every row has them.
+  std::map<std::string, double> system_options;
   // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame

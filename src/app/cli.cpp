@@ -200,6 +200,7 @@ int run_bench_command(const CliOptions& options) {
   bench.occlusion_culling = options.occlusion_culling;
   bench.culling_device = options.culling_device;
   bench.lighting_stages = options.lighting_stages;
+  bench.system_options = options.system_options;
   for (const std::string& mode : bench.modes) require_known_mode(mode);
   // One line per run on stderr: a long sweep (a GPU kit run) shows where it is.
   const BenchResult result = run_bench(bench, [](std::size_t done, std::size_t total, const BenchRow& row) {

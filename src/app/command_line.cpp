@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <functional>
+#include <sstream>
+#include <type_traits>
 #include <string>
 #include <vector>
 
@@ -80,12 +82,17 @@ struct SystemOptionSpec {
   std::string_view name;  // with its dashes
   std::string_view value;
   std::string_view help;
-  int min, max;
+  double min, max;
+  bool whole;  // a count: refused unless a whole number
 };
 
 constexpr std::array kSystemOptions{
     SystemOptionSpec{"--fireflies", "N", "N small point lights wandering through the scene, each drawn as a glowing sprite (0..4096; "
-                     "a scene file's \"systems\": {\"fireflies\": N})", 0, 4096},
+                     "a scene file's \"systems\": {\"fireflies\": N})", 0, 4096, true},
+    SystemOptionSpec{"--bloom", "S", "bloom: bright light glows over its surroundings, the image moved towards the glow by S (0..1, "
+                     "0 off, the default; 0.04 is subtle; a scene file's \"systems\": {\"bloom\": S})", 0, 1, false},
+    SystemOptionSpec{"--bloom-radius", "R", "how far the bloom's glow reaches, as a fraction of the image height (0.02..1, default 0.2; "
+                     "a scene file's \"systems\": {\"bloom-radius\": R})", 0.02, 1, false},
 };
 
 // "5 targets, 48 B/px": a layout's targets and bytes per pixel with depth.
@@ -110,10 +117,26 @@ Enum parse_choice(std::string_view text, const std::array<std::string_view, N>& 
 template <typename T>
 T parse_number(std::string_view flag, std::string_view text, T min, T max) {
   T value{};
-  const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-  if (error != std::errc() || end != text.data() + text.size() || value < min || value > max) {
-    throw UsageError(std::string(flag) + " expects a whole number from " + std::to_string(min) + " to " +
-                     std::to_string(max) + ", got '" + std::string(text) + "'");
+  bool whole_text = false;
+  if constexpr (std::is_integral_v<T>) {
+    const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+    whole_text = error == std::errc() && end == text.data() + text.size();
+  } else {
+    // strtod: the WebAssembly build's library has no from_chars for floating point.
+    const std::string copy(text);
+    char* end = nullptr;
+    value = static_cast<T>(std::strtod(copy.c_str(), &end));
+    whole_text = !copy.empty() && end == copy.c_str() + copy.size();
+  }
+  // Written so that NaN, which compares false with everything, is refused.
+  if (!whole_text || !(value >= min && value <= max)) {
+    const auto shown = [](T bound) {
+      std::ostringstream out;
+      out << bound;
+      return out.str();
+    };
+    throw UsageError(std::string(flag) + " expects " + (std::is_integral_v<T> ? "a whole number" : "a number") + " from " + shown(min) +
+                     " to " + shown(max) + ", got '" + std::string(text) + "'");
   }
   return value;
 }
@@ -398,9 +421,11 @@ const std::vector<OptionSpec>& option_table() {
   static const std::vector<OptionSpec> with_systems = [] {
     std::vector<OptionSpec> rows = table;
     for (const SystemOptionSpec& s : kSystemOptions) {
-      rows.push_back({std::string(s.name), std::string(s.value), kWindow | kRender | kCompare, std::string(s.help),
+      rows.push_back({std::string(s.name), std::string(s.value), kDrawing, std::string(s.help),
                       [s](std::string_view value, CliOptions& o) {
-                        o.system_options[std::string(s.name.substr(2))] = parse_number<int>(s.name, value, s.min, s.max);
+                        o.system_options[std::string(s.name.substr(2))] =
+                            s.whole ? parse_number<int>(s.name, value, static_cast<int>(s.min), static_cast<int>(s.max))
+                                    : parse_number<double>(s.name, value, s.min, s.max);
                       }});
     }
     return rows;

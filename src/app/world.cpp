@@ -25,6 +25,7 @@
 #include "systems/bounds.hpp"
 #include "systems/camera.hpp"
 #include "systems/fireflies/fireflies.hpp"
+#include "render/post/bloom/bloom.hpp"
 #include "systems/frustum_culling.hpp"
 #include "render/light_buffer.hpp"
 #include "systems/light_radius.hpp"
@@ -183,6 +184,7 @@ void World::start(const WorldOptions& options) {
   register_camera(scheduler_);
   register_frustum_culling(scheduler_);
   register_fireflies(scheduler_, registry_);
+  render::register_bloom(registry_);
   register_light_buffer(scheduler_);
   register_mesh_renderer(scheduler_);
 }

@@ -235,6 +235,13 @@ void Overlay::controls(ecs::Registry& registry) {
   if (auto* system_options = registry.try_resource<SystemOptions>()) {
     for (auto& [name, option] : system_options->options) {
       if (!option.declared) continue;
+      if (option.step == SystemOption::Step::Fraction) {
+        auto value = static_cast<float>(option.value);
+        if (ImGui::SliderFloat(option.label.c_str(), &value, static_cast<float>(option.min), static_cast<float>(option.max), "%.3f")) {
+          option.value = value;
+        }
+        continue;
+      }
       int value = static_cast<int>(option.value);
       if (ImGui::SliderInt(option.label.c_str(), &value, static_cast<int>(option.min), static_cast<int>(option.max), "%d",
                            ImGuiSliderFlags_Logarithmic)) {
