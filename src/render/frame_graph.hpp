@@ -8,7 +8,8 @@
 // objects from a pool kept across frames, issues glMemoryBarrier where a pass
 // reads what an earlier pass wrote through storage or image access, and times
 // every pass with the frame's PassTimer. Resources are found by name, so any
-// contributor (a debug view, a system that draws) can read what another made.
+// module of the frame (a debug view, a system that draws; render/frame/frame_modules.hpp)
+// can read what another made.
 #pragma once
 
 #include <any>
@@ -95,7 +96,7 @@ class PassBuilder {
   ResourceId create(const std::string& name, const BufferDesc& desc, ViewKind view = ViewKind::None);
   ResourceId read(ResourceId resource, Access access);
   ResourceId write(ResourceId resource, Access access);
-  // By name (any contributor's resource); invalid when none has that name.
+  // By name (any module's resource); invalid when none has that name.
   [[nodiscard]] ResourceId find(const std::string& name) const;
 
   // The pass has effects the graph cannot see (presenting, a read-back, state
@@ -180,7 +181,7 @@ class FrameGraph {
   [[nodiscard]] ViewKind view_kind(ResourceId resource) const;
   [[nodiscard]] ResourceId first_of(ViewKind kind) const;
 
-  // What a contributor tells the frame's later passes beyond its resources
+  // What a module tells the frame's later passes beyond its resources
   // (how its light lists map pixels to bins, say): one value per type, kept
   // until reset(). The reader needs no hook into the writer.
   template <typename T>

@@ -71,7 +71,7 @@ using DrawView = void (*)(DebugViews& views, const DebugViewFrame& frame, const 
 // of `kind`) drawn by the visualiser for that resource's kind, or with `draw`
 // a picture derived from the frame (the G-buffer's quantities decoded,
 // outlines, depth slices). `offered`: whether a frame's graph, as its
-// technique and contributors built it, has what the view shows. A view whose
+// technique and modules built it, has what the view shows. A view whose
 // frame lacks it still draws, flat grey.
 struct DebugView {
   std::string_view name;
