@@ -141,7 +141,7 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ", or a tiled or clustered mode"));
 }
 
-void MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSettings& settings) {
+lighting::DebugViewNeeds MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSettings& settings) {
   // A named view says what it needs before the frame is drawn; a view of a
   // resource by its name needs nothing (it is checked once the graph is built).
   const lighting::DebugViewNeeds needs = lighting::DebugViewModule::needs(settings.debug_view);
@@ -159,7 +159,7 @@ void MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSetting
     reload_pending_ = false;
     invalidate_modules(registry);
   }
-  if (globals == globals_ && settings.technique_options == technique_options_) return;
+  if (globals == globals_ && settings.technique_options == technique_options_) return needs;
   gpu_.shaders().set_global_defines(globals);
   globals_ = std::move(globals);
   // Every target is remade with the new sample count.
@@ -172,6 +172,7 @@ void MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSetting
   // Their programs were compiled with the old globals, their targets in the old layout.
   technique_.reset();
   invalidate_modules(registry);
+  return needs;
 }
 
 void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& settings, LightBuffer& lights) {
@@ -268,7 +269,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const std::uint64_t waits_at_start = gfx::gpu_waits();
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
-  apply_settings(registry, settings);
+  const lighting::DebugViewNeeds needs = apply_settings(registry, settings);
   if (size != size_) resize(registry, size);
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
   auto& lights = registry.resource<LightBuffer>();
@@ -281,7 +282,6 @@ void MeshRenderer::render(ecs::Registry& registry) {
   add_modules(build);
   graph_.compile();
 
-  const lighting::DebugViewNeeds needs = lighting::DebugViewModule::needs(settings.debug_view);
   counted_lights_ = needs.count_lights;
   counted_fragments_ = needs.count_fragments;
   timer_.begin_frame();

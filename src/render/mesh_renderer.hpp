@@ -112,8 +112,9 @@ class MeshRenderer {
   [[nodiscard]] gfx::Texture resolve(GLuint texture, GLenum format, bool depth) const;
   void make_shader_writes_readable() const;
   // Compiles programs with the settings' global defines; on a change drops
-  // the technique and calls every module's invalidate hook.
-  void apply_settings(ecs::Registry& registry, const RendererSettings& settings);
+  // the technique and calls every module's invalidate hook. Returns what the
+  // shown debug view asks of the frame.
+  lighting::DebugViewNeeds apply_settings(ecs::Registry& registry, const RendererSettings& settings);
   void resize(ecs::Registry& registry, glm::ivec2 size);
   // Makes the diffuse and specular light targets while split_lighting_ is
   // on, drops them while it is off.

@@ -30,12 +30,12 @@ inline double share_differing(const assets::Image& a, const assets::Image& b, in
   return static_cast<double>(differing) / static_cast<double>(a.rgba.size() / 4);
 }
 
-// From each of the world's five stored views, renders forward and then every
-// other mode, and calls `check(mode, view, reference, image)` with forward's
-// image as the reference.
+// From each of the world's five stored views (or those in `views`), renders
+// forward and then every other mode, and calls `check(mode, view, reference,
+// image)` with forward's image as the reference.
 template <typename Check>
-void compare_every_mode_with_forward(World& world, Check check) {
-  for (int view = 1; view <= 5; ++view) {
+void compare_every_mode_with_forward(World& world, Check check, const std::vector<int>& views = {1, 2, 3, 4, 5}) {
+  for (const int view : views) {
     world.set_view(view);
     world.set_mode("forward");
     world.frame(0.0);

@@ -16,6 +16,7 @@
 #include "components/system_options.hpp"
 #include "render/gpu_assets.hpp"
 #include "render/post/bloom/bloom.hpp"
+#include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
 #include "support/graph_capture.hpp"
 #include "support/modes.hpp"
@@ -27,7 +28,6 @@ namespace {
 using Bloom = testing::GlTest;
 using testing::kSize;
 
-constexpr double kMinimumPsnr = 40.0;
 
 WorldOptions bloom_options(double strength, const std::string& mode = "forward") {
   WorldOptions options{.scene = "atrium", .lights = 24u, .mode = mode, .size = kSize};
@@ -140,20 +140,12 @@ TEST_F(Bloom, ItBrightensTheSurroundingsOfLightsVisibly) {
 // five-view comparison of each mode runs with bloom off elsewhere).
 void expect_every_mode_matches_forward(WorldOptions options, const std::string& name) {
   World world(options);
-  for (const int view : {1, 4}) {
-    world.set_view(view);
-    world.set_mode("forward");
-    world.frame(0.0);
-    ASSERT_TRUE(has_pass(world, "bloom composite")) << name;
-    const assets::Image reference = world.renderer().read_output();
-    for (const std::string& mode : testing::non_forward_modes()) {
-      world.set_mode(mode);
-      world.frame(0.0);
-      const assets::Image image = world.renderer().read_output();
-      EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << name << ": " << mode << " view " << view;
-      if (view == 1 && mode == "clustered-deferred") assets::write_png("bloom_" + name + ".png", image);
-    }
-  }
+  testing::compare_every_mode_with_forward(world, [&](const std::string& mode, int view, const assets::Image& reference,
+                                                      const assets::Image& image) {
+    EXPECT_TRUE(has_pass(world, "bloom composite")) << name << ": " << mode;
+    EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << name << ": " << mode << " view " << view;
+    if (view == 1 && mode == "clustered-deferred") assets::write_png("bloom_" + name + ".png", image);
+  }, {1, 4});
 }
 
 TEST_F(Bloom, EveryModeDrawsTheForwardPictureWithBloomOn) { expect_every_mode_matches_forward(bloom_options(0.3), "modes"); }
