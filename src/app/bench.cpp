@@ -110,6 +110,8 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   std::vector<double> frame_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
+  std::map<std::string, std::vector<double>> system_ms;
+  std::vector<std::string> system_order;
   auto slices_depth = [&] {
     const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>();
     return bins && bins->binning == lighting::LightBins::Binning::Clusters;
@@ -145,6 +147,17 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
       frame_gpu_ms += pass.milliseconds;
     }
     gpu_ms.push_back(frame_gpu_ms);
+    for (const ecs::SystemTime& system : world.scheduler().last_frame_times()) {
+      if (!system_ms.contains(system.name)) system_order.push_back(system.name);
+      system_ms[system.name].push_back(system.milliseconds);
+    }
+  }
+  if (!over_limit && !frame_ms.empty()) {
+    gfx::finish();
+    const auto start = std::chrono::steady_clock::now();
+    for (int f = 0; f < frames; ++f) world.frame(1.0 / 60.0);
+    gfx::finish();
+    row.pipelined_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
   }
   row.sliced = slices_depth();
   if (const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>()) {
@@ -164,6 +177,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   for (const std::string& name : pass_order) {
     row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5)});
   }
+  for (const std::string& name : system_order) row.system_medians.push_back({name, percentile(system_ms[name], 0.5)});
   // Counting costs one more frame: not for a mode already over the limit.
   row.evaluated_per_pixel = over_limit ? std::numeric_limits<double>::quiet_NaN() : count_evaluations(world, mode);
   return row;
@@ -312,6 +326,9 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
 
 namespace {
 
+// The markdown table lists the systems that took at least this long (the CSV all of them).
+constexpr double kListedSystemMs = 0.05;
+
 // A row's column in the tables: its mode, with the depth slicing when the
 // bench compares several ("clustered-deferred/uniform").
 std::string label(const BenchResult& result, const BenchRow& row) {
@@ -401,20 +418,29 @@ std::string bench_markdown(const BenchResult& result) {
   }
   md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image; "
         "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
-        "in one frame that could wait for the GPU):\n\n"
-        "| mode | lights | view | median | p5 | p95 | fps | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists |\n"
-        "|---|---:|---|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+        "in one frame that could wait for the GPU; pipelined is the frame with frames submitted back to back, one frame's CPU work "
+        "overlapping the GPU's of the one before, as in a window; systems are the CPU time of those over 0.05 ms, the renderer's including its "
+        "passes' submission):\n\n"
+        "| mode | lights | view | median | p5 | p95 | fps | pipelined | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists | systems (CPU, median) |\n"
+        "|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
     if (!row.refused.empty()) passes = "refused: " + row.refused;
     if (!row.skipped.empty()) passes = "skipped: " + row.skipped;
     if (!row.stopped.empty()) passes = "stopped: " + row.stopped + "; " + passes;
+    std::string systems;
+    for (const ecs::SystemTime& system : row.system_medians) {
+      if (system.milliseconds < kListedSystemMs) continue;
+      const std::string_view name = std::string_view(system.name).substr(system.name.find('/') + 1);
+      systems += (systems.empty() ? "" : ", ") + std::string(name) + " " + fixed(system.milliseconds, 2);
+    }
     md << "| " << label(result, row) << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
-       << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | " << passes
+       << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | "
+       << fixed(row.pipelined_ms, 2) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
        << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " | " << fixed(row.gpu_ms, 2) << " | "
-       << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " | " << row.light_lists << " |\n";
+       << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " | " << row.light_lists << " | " << systems << " |\n";
   }
   return md.str();
 }
@@ -423,13 +449,17 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
     for (const auto& pass : row.pass_medians) {
       passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
       cpu_passes += (cpu_passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.cpu_milliseconds, 4);
+    }
+    std::string cpu_systems;
+    for (const ecs::SystemTime& system : row.system_medians) {
+      cpu_systems += (cpu_systems.empty() ? "" : ";") + system.name + "=" + fixed(system.milliseconds, 4);
     }
     csv << row.mode << "," << row.lights << "," << row.view << "," << row.view_name << "," << result.options.size.x << ","
         << result.options.size.y << "," << result.options.frames << "," << fixed(row.median_ms, 4) << "," << fixed(row.p5_ms, 4)
@@ -442,7 +472,7 @@ std::string bench_csv(const BenchResult& result) {
         << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
         << "\","
         << (std::isnan(row.median_ms) ? std::string_view() : lighting::kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
-        << ",\"" << row.light_lists << "\"\n";
+        << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << "\n";
   }
   return csv.str();
 }

@@ -15,6 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "assets/scene.hpp"
+#include "ecs/scheduler.hpp"
 #include "gfx/pass_timer.hpp"
 #include "components/frame_resources.hpp"
 #include "components/technique_options.hpp"
@@ -70,10 +71,17 @@ struct BenchRow {
   std::string view_name;
   double median_ms = 0, p5_ms = 0, p95_ms = 0;
   double gpu_ms = 0;  // median over frames of the passes' summed times (GPU time with timer queries)
+  // The same frames submitted back to back, the total over their count: the
+  // frame as a window sees it, one frame's CPU work overlapping the GPU's work
+  // of the one before (median_ms adds the two: glFinish before and after each).
+  double pipelined_ms = std::numeric_limits<double>::quiet_NaN();
   // The most calls that could wait for the GPU in one measured frame
   // (FrameStats::gpu_waits): 0 in a frame that never stalls the GPU.
   std::uint32_t gpu_waits = 0;
   std::vector<gfx::PassTime> pass_medians;  // GPU and CPU (submission) medians per pass
+  // Each system's CPU time, median over the measured frames ("Render/light_buffer"):
+  // where the frame goes besides its passes. The renderer's includes its passes' submission.
+  std::vector<ecs::SystemTime> system_medians;
   std::size_t triangles_drawn = 0;  // per geometry pass, after frustum and occlusion culling
   std::size_t triangles_occluded = 0;  // in view, but left out as hidden (occlusion culling)
   std::size_t draw_calls = 0;       // per geometry pass

@@ -1,5 +1,7 @@
 #include "ecs/scheduler.hpp"
 
+#include <chrono>
+
 namespace atrium::ecs {
 
 std::string_view phase_name(Phase phase) {
@@ -26,7 +28,12 @@ void Scheduler::run_frame(Registry& registry, double delta_seconds) {
 }
 
 void Scheduler::run_phase(Phase phase, Registry& registry) {
-  for (auto& entry : phases_[static_cast<std::size_t>(phase)]) entry.system(registry);
+  using Clock = std::chrono::steady_clock;
+  for (auto& entry : phases_[static_cast<std::size_t>(phase)]) {
+    const Clock::time_point start = Clock::now();
+    entry.system(registry);
+    entry.milliseconds = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+  }
 }
 
 std::vector<std::string> Scheduler::execution_order() const {
@@ -37,6 +44,16 @@ std::vector<std::string> Scheduler::execution_order() const {
     }
   }
   return order;
+}
+
+std::vector<SystemTime> Scheduler::last_frame_times() const {
+  std::vector<SystemTime> times;
+  for (Phase phase : kPhases) {
+    for (const auto& entry : phases_[static_cast<std::size_t>(phase)]) {
+      times.push_back({std::string(phase_name(phase)) + "/" + entry.name, entry.milliseconds});
+    }
+  }
+  return times;
 }
 
 }  // namespace atrium::ecs

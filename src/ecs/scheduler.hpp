@@ -26,6 +26,13 @@ struct FrameClock {
 
 using System = std::function<void(Registry&)>;
 
+// How long one system ran on the CPU in the last frame: what lies between a
+// frame's wall-clock time and its passes' GPU time (the bench reports it).
+struct SystemTime {
+  std::string name;  // "Phase/name"
+  double milliseconds = 0.0;
+};
+
 class Scheduler {
  public:
   void add(Phase phase, std::string name, System system);
@@ -36,11 +43,14 @@ class Scheduler {
 
   // "Phase/name" of every system in execution order, for tests and the docs.
   [[nodiscard]] std::vector<std::string> execution_order() const;
+  // Each system's time in the last run_frame, in execution order.
+  [[nodiscard]] std::vector<SystemTime> last_frame_times() const;
 
  private:
   struct Entry {
     std::string name;
     System system;
+    double milliseconds = 0.0;  // its last run
   };
   std::array<std::vector<Entry>, kPhases.size()> phases_;
 };

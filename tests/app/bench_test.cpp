@@ -51,7 +51,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 29u);
+  ASSERT_EQ(header.size(), 31u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -66,6 +66,8 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[26], "skipped");
   EXPECT_EQ(header[27], "lighting_stage");
   EXPECT_EQ(header[28], "light_lists");
+  EXPECT_EQ(header[29], "cpu_systems");
+  EXPECT_EQ(header[30], "pipelined_ms");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -121,7 +123,7 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
     std::istringstream csv(read_text(folder / "s.csv"));
     std::string line;
     std::getline(csv, line);
-    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists")) << line;
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms")) << line;
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     return rows;
@@ -132,13 +134,21 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
   EXPECT_EQ(rows[1][27], "compute");
   EXPECT_EQ(rows[2][27], gfx::is_software_renderer() ? "fragment" : "compute");
   EXPECT_TRUE(rows[0][28].starts_with("2x2 tiles of 16 px, ")) << rows[0][28];
+  // Each system's CPU time: the light buffer's and the renderer's are there, in execution order.
+  EXPECT_NE(rows[0][29].find("Render/light_buffer="), std::string::npos) << rows[0][29];
+  EXPECT_LT(rows[0][29].find("Render/light_buffer="), rows[0][29].find("Render/mesh_renderer=")) << rows[0][29];
+  // The frames back to back: a time for a measured row, none for a refused one.
+  EXPECT_GT(std::stod(rows[0][30]), 0.0) << rows[0][30];
   const std::string md = read_text(folder / "stdout.txt");
   EXPECT_NE(md.find("| lights | tiled-deferred/fragment | tiled-deferred/compute | tiled-deferred/auto |"), std::string::npos) << md;
+  EXPECT_NE(md.find("| systems (CPU, median) |"), std::string::npos) << md;
+  EXPECT_NE(md.find("mesh_renderer "), std::string::npos) << "the renderer takes over 0.05 ms: " << md;
   const auto refused = run("--msaa 2 --lighting-stage fragment,compute");
   ASSERT_EQ(refused.size(), 2u);
   EXPECT_EQ(refused[0][17], "");
   EXPECT_NE(refused[1][17].find("the compute stage does not shade MSAA edges per sample"), std::string::npos) << refused[1][17];
   EXPECT_EQ(refused[1][27], "") << "a refused run has no stage";
+  EXPECT_EQ(refused[1][30], "-") << "nor frames back to back";
   fs::remove_all(folder);
 }
 
@@ -158,7 +168,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 29u) << line;
+    ASSERT_EQ(f.size(), 31u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     // A pixel grid never has fewer tiles than 16x9 (32x18 pixels: 2-pixel tiles), each cut into 32 slices.
     if (f[0] == "clustered-forward") EXPECT_TRUE(f[28].starts_with("16x9x32 clusters, ")) << f[28];

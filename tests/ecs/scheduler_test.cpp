@@ -2,6 +2,9 @@
 
 #include "ecs/scheduler.hpp"
 
+#include <chrono>
+#include <thread>
+
 namespace atrium::ecs {
 namespace {
 
@@ -56,6 +59,20 @@ TEST(Scheduler, RunPhaseRunsOnlyThatPhase) {
   scheduler.run_phase(Phase::Render, registry);
   EXPECT_EQ(input, 0);
   EXPECT_EQ(render, 1);
+}
+
+TEST(Scheduler, TimesEachSystemOfTheLastFrame) {
+  Registry registry;
+  Scheduler scheduler;
+  scheduler.add(Phase::Render, "slow", [](Registry&) { std::this_thread::sleep_for(std::chrono::milliseconds(20)); });
+  scheduler.add(Phase::Update, "quick", [](Registry&) {});
+  scheduler.run_frame(registry, 0.016);
+  const std::vector<SystemTime> times = scheduler.last_frame_times();
+  ASSERT_EQ(times.size(), 2u);
+  EXPECT_EQ(times[0].name, "Update/quick");
+  EXPECT_EQ(times[1].name, "Render/slow");
+  EXPECT_GE(times[1].milliseconds, 20.0);
+  EXPECT_LT(times[0].milliseconds, times[1].milliseconds);
 }
 
 }  // namespace
