@@ -2,10 +2,13 @@
 // waiting: each copy goes to a slot of a persistently mapped buffer with a
 // fence (a plain buffer read after its fence where persistent mapping is
 // missing), and poll() hands back the copies whose fences have passed (asked with
-// timeout 0), oldest first. A copy asked for while every slot is still in
-// flight is dropped: the GPU is that many frames behind, and the next one will
-// do. Used by the light lists (their totals) and the debug views' averages;
-// one-shot commands wait for the GPU first (MeshRenderer::settle) and then poll.
+// timeout 0), oldest first. Where the context has compute shaders a shader
+// writes the slot (shaders/common/readback_copy.comp): on an H200 a buffer copy
+// into the ring made the CPU wait for the GPU to reach it. A copy asked for
+// while every slot is still in flight is dropped: the GPU is that many frames
+// behind, and the next one will do. Used by the light lists (their totals),
+// occlusion culling (its counts) and the debug views' averages; one-shot
+// commands wait for the GPU first (MeshRenderer::settle) and then poll.
 #pragma once
 
 #include <cstddef>
@@ -14,8 +17,12 @@
 #include <vector>
 
 #include "gfx/gl_object.hpp"
+#include "gfx/shader_program.hpp"
 
 namespace atrium::gfx {
+
+// The storage slots of readback_copy.comp (render/binding_slots.hpp lists them with the frame's).
+inline constexpr unsigned kReadbackSourceBinding = 22, kReadbackSlotBinding = 23;
 
 class ReadbackRing {
  public:
@@ -28,6 +35,8 @@ class ReadbackRing {
   // Copies `bytes` (at most the slot size) of `buffer` from `offset` once the
   // commands before it have run, keeping `tag` with it (what the caller needs
   // to read it: the capacity it ran with, a count). False when it was dropped.
+  // Shader writes to `buffer` before it need no barrier from the caller; the
+  // current program stays current.
   bool copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::uint64_t tag);
   // Calls `arrived` for every copy whose fence has passed, oldest first.
   void poll(const std::function<void(const void* data, std::size_t bytes, std::uint64_t tag)>& arrived);
@@ -47,6 +56,7 @@ class ReadbackRing {
   std::vector<Slot> slots_;
   std::size_t next_ = 0;
   std::uint64_t copies_ = 0;
+  ShaderProgram copy_program_;  // readback_copy.comp, where the context has compute shaders
 };
 
 }  // namespace atrium::gfx

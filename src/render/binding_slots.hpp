@@ -8,6 +8,8 @@
 
 #include <string_view>
 
+#include "gfx/readback_ring.hpp"
+
 namespace atrium::render {
 
 // Storage blocks (std430) and uniform blocks (std140).
@@ -28,6 +30,8 @@ inline constexpr unsigned kBlockSumsBinding = 11;       // BlockSums: the debug 
 inline constexpr unsigned kBigLightsBinding = 12, kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
 inline constexpr unsigned kCommandTemplateBinding = 16, kCullOutBinding = 17, kCullShownBinding = 18, kCullRecordsBinding = 19,
                           kLastShownBinding = 20, kCullCountersBinding = 21;  // GPU occlusion culling
+inline constexpr unsigned kReadbackSourceBinding = gfx::kReadbackSourceBinding;  // ReadbackSource, ReadbackSlot: a
+inline constexpr unsigned kReadbackSlotBinding = gfx::kReadbackSlotBinding;      // readback ring's copy (gfx/readback_ring.hpp)
 
 // Texture units that stay bound while passes run: clear of a full-screen
 // pass's inputs and the materials' textures (0-7), within the 16 a WebGL2
@@ -67,7 +71,8 @@ inline constexpr BlockSlot kBlockSlots[] = {
     {"Packed", kCullShownBinding},              {"Shown", kCullShownBinding},
     {"Batches", kCullRecordsBinding},           {"Records", kCullRecordsBinding},
     {"LastShown", kLastShownBinding},           {"Counters", kCullCountersBinding},
-    {"Counts", kCullCountersBinding},
+    {"Counts", kCullCountersBinding},           {"ReadbackSource", kReadbackSourceBinding},
+    {"ReadbackSlot", kReadbackSlotBinding},
 };
 
 }  // namespace atrium::render

@@ -138,7 +138,6 @@ void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {
   const KeepProgram keep;
   build_pyramid(depth, size);
   cull(kRemember);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   readback_.copy(counters_.id(), 0, 2 * sizeof(std::uint32_t), blended_triangles_);
 }
 

@@ -30,9 +30,9 @@ ClusterGrid::ClusterGrid(glm::uvec3 dims, ZSlicing slicing)
       list_(dims_) {
   glNamedBufferStorage(uniform_buffer_.id(), sizeof(ClusterUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(bounds_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(ClusterBox)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(pixel_bounds_.id(), static_cast<GLsizeiptr>(2 * std::size_t{cluster_count()} * sizeof(glm::uvec4)), nullptr,
-                       GL_DYNAMIC_STORAGE_BIT);
+  // Written only by the GPU (shaders and clears): no storage the CPU may update.
+  glNamedBufferStorage(active_.id(), static_cast<GLsizeiptr>(cluster_count() * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(pixel_bounds_.id(), static_cast<GLsizeiptr>(2 * std::size_t{cluster_count()} * sizeof(glm::uvec4)), nullptr, 0);
   upload_uniforms();
 }
 

@@ -1,6 +1,7 @@
 #include "render/lighting/light_index_list.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <string>
@@ -20,6 +21,8 @@ constexpr GLuint kGatherGroup = 64, kGatherBatch = 1024;
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
 constexpr std::size_t kListHeader = 4;
 constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
+// Where the resets buffer keeps an empty list's header, after the total's start.
+constexpr GLintptr kResetListOffset = 32;
 }  // namespace
 
 LightIndexList::LightIndexList(glm::uvec3 shape)
@@ -36,14 +39,12 @@ LightIndexList::LightIndexList(glm::uvec3 shape)
   static_assert(sizeof(Total) == 24, "must match LightTotal in shaders/common/light_lists.glsl");
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * 2 * sizeof(std::uint32_t)), nullptr, 0);
   glNamedBufferStorage(bin_counts_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * sizeof(std::uint32_t)), nullptr, 0);
-  glNamedBufferStorage(total_.id(), sizeof(Total), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kListHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr,
-                       GL_DYNAMIC_STORAGE_BIT);
   // Until a frame runs, the lists are empty and nothing overflowed.
+  const Total none;
+  glNamedBufferStorage(total_.id(), sizeof(Total), &none, 0);
+  glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kListHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr, 0);
   const std::uint32_t zero = 0;
   glClearNamedBufferData(ranges_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  const Total none;
-  glNamedBufferSubData(total_.id(), 0, sizeof none, &none);
   resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
   reserve_lights(1);
 }
@@ -98,6 +99,15 @@ void LightIndexList::resize(std::uint32_t capacity) {
   capacity_ = capacity;
   indices_ = gfx::create_buffer();
   glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(std::max<std::uint32_t>(capacity, 1) * sizeof(std::uint32_t)), nullptr, 0);
+  // A frame's starting values, which hold the capacity: made with it, never written after.
+  static_assert(sizeof(Total) <= kResetListOffset);
+  Total start;
+  start.capacity = capacity_;
+  std::array<unsigned char, kResetListOffset + sizeof kEmptyList> resets{};
+  std::memcpy(resets.data(), &start, sizeof start);
+  std::memcpy(resets.data() + kResetListOffset, kEmptyList, sizeof kEmptyList);
+  resets_ = gfx::create_buffer();
+  glNamedBufferStorage(resets_.id(), static_cast<GLsizeiptr>(resets.size()), resets.data(), 0);
 }
 
 void LightIndexList::reserve_lights(std::uint32_t light_count) {
@@ -109,7 +119,7 @@ void LightIndexList::reserve_lights(std::uint32_t light_count) {
   big_lights_ = gfx::create_buffer();
   glNamedBufferStorage(overflow_.id(), bytes, nullptr, 0);
   glNamedBufferStorage(fits_.id(), bytes, nullptr, 0);
-  glNamedBufferStorage(big_lights_.id(), bytes + static_cast<GLsizeiptr>(kListHeader * sizeof(std::uint32_t)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(big_lights_.id(), bytes + static_cast<GLsizeiptr>(kListHeader * sizeof(std::uint32_t)), nullptr, 0);
 }
 
 void LightIndexList::check(const Total& total) const {
@@ -165,13 +175,14 @@ void LightIndexList::run(std::uint32_t light_count, const LightAssignmentProgram
   // Asked for by name, the gather still keeps under a driver's loop cap (the scatter's lists are the same).
   if (method == LightAssignment::Gather && !gather_fits_loops(light_count, loop_limit_)) method = LightAssignment::Scatter;
   last_assignment_ = method;
-  Total start;
-  start.capacity = capacity_;
-  glNamedBufferSubData(total_.id(), 0, sizeof start, &start);
+  // Copies and a clear on the GPU, never an upload: uploading into a buffer
+  // that earlier commands may use made the CPU wait for them (on an H200 for
+  // the whole G-buffer pass, 4-5 ms a frame, before each light assignment).
+  glCopyNamedBufferSubData(resets_.id(), total_.id(), 0, 0, sizeof(Total));
   const std::uint32_t zero = 0;
   glClearNamedBufferData(bin_counts_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glNamedBufferSubData(long_bins_.id(), 0, sizeof kEmptyList, kEmptyList);
-  glNamedBufferSubData(big_lights_.id(), 0, sizeof kEmptyList, kEmptyList);
+  glCopyNamedBufferSubData(resets_.id(), long_bins_.id(), kResetListOffset, 0, sizeof kEmptyList);
+  glCopyNamedBufferSubData(resets_.id(), big_lights_.id(), kResetListOffset, 0, sizeof kEmptyList);
   bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLongBinsBinding, long_bins_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinCountsBinding, bin_counts_.id());
@@ -279,7 +290,8 @@ void LightIndexList::bind() const {
 
 render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const std::string& name, render::ViewKind view) const {
   const std::size_t bytes =
-      (static_cast<std::size_t>(bins_) * 4 + capacity_ + 3 * std::size_t{light_capacity_} + 2 * kListHeader) * sizeof(std::uint32_t) + sizeof(Total);
+      (static_cast<std::size_t>(bins_) * 4 + capacity_ + 3 * std::size_t{light_capacity_} + 2 * kListHeader) * sizeof(std::uint32_t) + sizeof(Total) +
+      kResetListOffset + sizeof kEmptyList;
   return graph.import_buffer(name, ranges_.id(), {bytes}, view);
 }
 

@@ -189,6 +189,9 @@ class LightIndexList {
   std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest loop a pixel may run
   bool software_;              // gfx::is_software_renderer(), asked once
   gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_, big_lights_;
+  // The total's start (with the capacity) and an empty list's header, which
+  // each frame copies over total_, long_bins_ and big_lights_ (made in resize).
+  gfx::Buffer resets_;
   std::uint32_t light_capacity_ = 0;  // lights overflow_, fits_ and big_lights_ hold
   gfx::ReadbackRing totals_;  // each frame's Total on its way back, tagged with its light count
   std::uint32_t capacity_ = 0, last_total_ = 0, overflow_frames_ = 0;
