@@ -226,6 +226,7 @@ lighting::FrameContext MeshRenderer::import_targets(ecs::Registry& registry, con
   const auto& view = registry.resource<ViewState>();
   graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
   lighting::FrameContext frame{draws_.list(),
+                               draws_.commands(),
                                [this, &registry](const lighting::BatchDrawer& draw) { draws_.draw_first_pass(registry, draw, depth_stencil_.id(), size_); },
                                gpu_,
                                lights.staging,

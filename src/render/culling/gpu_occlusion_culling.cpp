@@ -122,16 +122,15 @@ void GpuOcclusionCulling::pack(Phase phase) {
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);
 }
 
-void GpuOcclusionCulling::bind(Phase phase) const {
+GLintptr GpuOcclusionCulling::bind(Phase phase) const {
   if (!packs_) {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_of(phase).buffer.id());
-    lighting::draw_counts_from(-1);
-    return;
+    return -1;
   }
   const auto p = static_cast<std::uint32_t>(phase);
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, packed_[p].buffer.id());
   glBindBuffer(GL_PARAMETER_BUFFER_ARB, draw_counts_.buffer.id());
-  lighting::draw_counts_from(static_cast<GLintptr>(p * batch_count_ * sizeof(std::uint32_t)));
+  return static_cast<GLintptr>(p * batch_count_ * sizeof(std::uint32_t));
 }
 
 void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {

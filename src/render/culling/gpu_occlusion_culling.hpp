@@ -54,9 +54,10 @@ class GpuOcclusionCulling {
   void remember(GLuint depth, glm::ivec2 size);
 
   // Which commands the next draws take (GL_DRAW_INDIRECT_BUFFER, and with
-  // packing the parameter buffer and lighting::draw_counts_from).
+  // packing the parameter buffer): returns the CommandSource::count_base to
+  // draw them with (-1: every command).
   enum class Phase { First, Revealed, Shown };
-  void bind(Phase phase) const;
+  [[nodiscard]] GLintptr bind(Phase phase) const;
   [[nodiscard]] bool packs() const { return packs_; }
 
   // The newest counts that have arrived; nullopt until one has. Never waits.

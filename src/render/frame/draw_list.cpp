@@ -238,16 +238,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   return list;
 }
 
-namespace {
-std::span<const DrawCommand> g_cpu_commands;  // draw_commands_from_cpu's
-GLintptr g_count_base = -1;                   // draw_counts_from's
-}  // namespace
-
-void draw_commands_from_cpu(std::span<const DrawCommand> commands) { g_cpu_commands = commands; }
-
-void draw_counts_from(GLintptr base) { g_count_base = base; }
-
-void draw_items(std::span<const DrawBatch> batches) {
+void draw_items(std::span<const DrawBatch> batches, const CommandSource& source) {
+  const std::span<const DrawCommand> cpu_commands = source.cpu_commands;
   GLuint bound_vertex_array = 0;
   const DrawBatch* bound_textures = nullptr;
   glEnable(GL_CULL_FACE);
@@ -265,19 +257,19 @@ void draw_items(std::span<const DrawBatch> batches) {
     else glEnable(GL_CULL_FACE);
     glFrontFace(batch.mirrored ? GL_CW : GL_CCW);
     const auto* first = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(batch.first_command) * sizeof(DrawCommand));
-    if (g_cpu_commands.empty() && g_count_base >= 0) {
+    if (cpu_commands.empty() && source.count_base >= 0) {
       glMultiDrawElementsIndirectCountARB(GL_TRIANGLES, GL_UNSIGNED_INT, first,
-                                          g_count_base + static_cast<GLintptr>(batch.count_slot) * static_cast<GLintptr>(sizeof(std::uint32_t)),
+                                          source.count_base + static_cast<GLintptr>(batch.count_slot) * static_cast<GLintptr>(sizeof(std::uint32_t)),
                                           static_cast<GLsizei>(batch.command_count), 0);
       continue;
     }
-    if (g_cpu_commands.empty()) {
+    if (cpu_commands.empty()) {
       glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, first, static_cast<GLsizei>(batch.command_count), 0);
       continue;
     }
     glDisableVertexAttribArray(assets::kInstanceIndexLocation);
-    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count && c < g_cpu_commands.size(); ++c) {
-      const DrawCommand& command = g_cpu_commands[c];
+    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count && c < cpu_commands.size(); ++c) {
+      const DrawCommand& command = cpu_commands[c];
       if (command.instance_count == 0) continue;
       glVertexAttribI4ui(assets::kInstanceIndexLocation, command.base_instance, 0, 0, 0);
       const auto* indices = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t));
@@ -298,15 +290,16 @@ void draw_items(std::span<const DrawBatch> batches) {
   glBindSamplers(0, kMaterialTextureSlots, nullptr);
 }
 
-void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked) {
+void draw_depth(std::span<const DrawBatch> batches, const CommandSource& source, gfx::ShaderProgram& position_only,
+                gfx::ShaderProgram& masked) {
   // build_draw_list puts the masked batches last.
   const auto first_masked = std::find_if(batches.begin(), batches.end(), [](const DrawBatch& b) { return b.alpha_masked; });
   const auto split = static_cast<std::size_t>(first_masked - batches.begin());
   position_only.use();
-  draw_items(batches.first(split));
+  draw_items(batches.first(split), source);
   if (split == batches.size()) return;
   masked.use();
-  draw_items(batches.subspan(split));
+  draw_items(batches.subspan(split), source);
 }
 
 void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
@@ -320,7 +313,7 @@ void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forw
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   forward_program.use();
-  draw_items(frame.draws.blended);
+  draw_items(frame.draws.blended, frame.commands);
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 }

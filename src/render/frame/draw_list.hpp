@@ -103,7 +103,7 @@ struct DrawBatch {
   bool alpha_masked = false;
   std::uint32_t first_command = 0;  // into DrawList::commands
   std::uint32_t command_count = 0;
-  // Its draw count's slot in a parameter buffer (draw_counts_from): opaque
+  // Its draw count's slot in a parameter buffer (CommandSource::count_base): opaque
   // batches first, then blended, in list order.
   std::uint32_t count_slot = 0;
 };
@@ -153,32 +153,34 @@ enum class DrawSelection {
                                        const assets::GpuAssets& gpu, const glm::mat4& view,
                                        DrawSelection selection = DrawSelection::InView);
 
-// Where draw_items takes its commands: from the bound GL_DRAW_INDIRECT_BUFFER
-// (an empty span, the default), or on the compute-free tier (no indirect draws
-// or base instances on WebGL2 and OpenGL ES 3.0) from these CPU copies, one
-// draw each, the first instance given as the constant value of the
-// instance-index attribute (common/mesh.vert adds gl_InstanceID). The span
-// must outlive the draws; the renderer sets it each frame.
-void draw_commands_from_cpu(std::span<const DrawCommand> commands);
-
-// GPU occlusion culling where GL 4.6 or ARB_indirect_parameters has
-// glMultiDrawElementsIndirectCount: each batch draws the first commands of its
-// range, as many as the bound GL_PARAMETER_BUFFER holds at
-// `base + 4 * count_slot` bytes (a negative base: every command, the default).
-void draw_counts_from(GLintptr base);
+// Where draw_items takes a list's commands, kept with the buffers that hold
+// them by whoever binds those (render::FrameDraws, the shadow atlas).
+struct CommandSource {
+  // Empty: the bound GL_DRAW_INDIRECT_BUFFER. Else, on the compute-free tier
+  // (no indirect draws or base instances on WebGL2 and OpenGL ES 3.0), these
+  // CPU copies, one draw each, the first instance given as the constant value
+  // of the instance-index attribute (common/mesh.vert adds gl_InstanceID).
+  std::span<const DrawCommand> cpu_commands;
+  // GPU occlusion culling where GL 4.6 or ARB_indirect_parameters has
+  // glMultiDrawElementsIndirectCount: each batch draws the first commands of
+  // its range, as many as the bound GL_PARAMETER_BUFFER holds at
+  // `count_base + 4 * count_slot` bytes. Negative: every command.
+  GLintptr count_base = -1;
+};
 
 // Issues one multi-draw per batch with the program in use, binding each batch's
 // textures to units 0-4, disabling back-face culling for double-sided batches
-// and turning the front face for mirrored ones. The frame's instance, material
-// and indirect buffers must be bound (the MeshRenderer binds them). Leaves
-// culling enabled and counter-clockwise front faces on return.
-void draw_items(std::span<const DrawBatch> batches);
+// and turning the front face for mirrored ones. The instance and material
+// buffers and `source`'s indirect buffer must be bound (FrameDraws::bind binds
+// the frame's). Leaves culling enabled and counter-clockwise front faces on return.
+void draw_items(std::span<const DrawBatch> batches, const CommandSource& source);
 
 // Depth only, for pre-passes: batches without an alpha test through
 // `position_only` (common/mesh.vert with POSITION_ONLY and common/depth_only.frag:
 // no varyings, no material reads), alpha-masked ones through `masked`, which
 // discards below the cutoff. Colour writes are the caller's to disable.
-void draw_depth(std::span<const DrawBatch> batches, gfx::ShaderProgram& position_only, gfx::ShaderProgram& masked);
+void draw_depth(std::span<const DrawBatch> batches, const CommandSource& source, gfx::ShaderProgram& position_only,
+                gfx::ShaderProgram& masked);
 
 struct FrameContext;
 struct FrameTargets;

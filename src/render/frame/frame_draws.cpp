@@ -33,27 +33,25 @@ void FrameDraws::upload(const lighting::DrawList& list) {
   bind();
 }
 
-void FrameDraws::bind() const {
+void FrameDraws::bind() {
   if (compute_free_) {
     // The tier's twins: records in textures, commands drawn from the CPU; no storage or indirect buffer.
     storage_free_.bind();
-    lighting::draw_commands_from_cpu(list_.commands);
-    lighting::draw_counts_from(-1);
+    source_ = {list_.commands, -1};
     return;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
-  lighting::draw_commands_from_cpu({});
   if (active_phase_) {
-    gpu_culling_.bind(*active_phase_);
+    source_ = {{}, gpu_culling_.bind(*active_phase_)};
   } else {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
-    lighting::draw_counts_from(-1);
+    source_ = {};
   }
 }
 
 void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchDrawer& draw, GLuint depth, glm::ivec2 size) {
-  draw(list_.opaque);
+  draw(list_.opaque, source_);
   // Once a frame: a debug view's own geometry pass draws the list as it stands.
   if (!occlusion_pending_) return;
   occlusion_pending_ = false;
@@ -61,8 +59,7 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchD
     // The same phases on the GPU: the revealed commands, then the shown ones
     // for every pass after this one.
     gpu_culling_.reveal(depth, size);
-    gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed);
-    draw(list_.opaque);
+    draw(list_.opaque, {{}, gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed)});
     gpu_culling_.remember(depth, size);
     active_phase_ = GpuOcclusionCulling::Phase::Shown;
     bind();
@@ -75,7 +72,7 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchD
     const auto& assets = registry.resource<assets::AssetManager>();
     const lighting::DrawList revealed = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Revealed);
     upload(revealed);
-    draw(revealed.opaque);
+    draw(revealed.opaque, source_);
     list_ = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Shown);
     upload(list_);
     pyramid = depth_reader_.read(depth, size);

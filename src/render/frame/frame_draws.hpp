@@ -38,11 +38,13 @@ class FrameDraws {
   // with the lights of the compute-free tier (`compute_free`), and binds it.
   void begin_frame(ecs::Registry& registry, CullingChoice culling, bool compute_free, std::span<const GpuLight> lights);
   [[nodiscard]] const lighting::DrawList& list() const { return list_; }
+  // Where the list's commands are drawn from now (FrameContext::commands).
+  [[nodiscard]] const lighting::CommandSource& commands() const { return source_; }
   [[nodiscard]] bool culled_on_gpu() const { return culling_.on_gpu; }
 
-  // Binds the list's buffers (or the tier's textures and CPU commands) again,
-  // after a pass that bound its own (the shadow maps).
-  void bind() const;
+  // Binds the list's buffers (or the tier's textures) again, after a pass that
+  // bound its own (the shadow maps), and sets commands() to match.
+  void bind();
   // FrameContext::draw_first_pass: draws what the last frame showed, then,
   // once a frame with occlusion culling, what the depth it wrote (`depth`, the
   // scene's depth-stencil texture) does not hide; list() then holds both.
@@ -70,6 +72,7 @@ class FrameDraws {
   GpuOcclusionCulling gpu_culling_;
   // The GPU culling phase whose commands passes draw list_ from; none: the uploaded commands.
   std::optional<GpuOcclusionCulling::Phase> active_phase_;
+  lighting::CommandSource source_;  // what bind() bound
 };
 
 }  // namespace atrium::render

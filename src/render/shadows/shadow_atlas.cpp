@@ -441,9 +441,8 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
   }
-  // The casters' commands, all of them, until the maps are drawn; whoever draws next binds its own.
-  lighting::draw_commands_from_cpu(compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>());
-  lighting::draw_counts_from(-1);
+  // The casters' commands, all of them; whoever draws next binds its own.
+  const lighting::CommandSource source{compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>(), -1};
 
   gfx::ShaderProgram& position_only = gpu_.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}, {"SHADOW_PASS"}});
   gfx::ShaderProgram& masked = gpu_.shaders().get({"common/mesh.vert", "common/depth_masked.frag"}, {{"SHADOW_PASS"}});
@@ -468,12 +467,11 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     if (batches[v].empty()) continue;
     position_only.set("u_shadow_view_projection", view.view_projection);
     masked.set("u_shadow_view_projection", view.view_projection);
-    lighting::draw_depth(batches[v], position_only, masked);
+    lighting::draw_depth(batches[v], source, position_only, masked);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  lighting::draw_commands_from_cpu({});
 }
 
 void ShadowAtlas::bind() const {

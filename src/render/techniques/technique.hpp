@@ -25,9 +25,10 @@
 
 namespace atrium::lighting {
 
-// A function that draws batches of the frame's draw list with the caller's
-// program and state (what the first pass over opaque geometry is given).
-using BatchDrawer = std::function<void(std::span<const DrawBatch>)>;
+// A function that draws batches of the frame's draw list from `source` with
+// the caller's program and state (what the first pass over opaque geometry is
+// given; draw_items is one).
+using BatchDrawer = std::function<void(std::span<const DrawBatch>, const CommandSource& source)>;
 
 // What a technique reads each frame. The frame uniform block and the light
 // storage buffer are already bound at kFrameUniformBinding / kLightStorageBinding.
@@ -36,6 +37,9 @@ struct FrameContext {
   // has run, `opaque` holds only what the last frame showed; after it, all
   // that pass drew (occlusion culling, render/culling/occlusion_culling.hpp).
   const DrawList& draws;
+  // Where the passes after the first draw the list's commands from
+  // (draw_items); FrameDraws sets it as occlusion culling's phases go.
+  const CommandSource& commands;
   // The first pass over opaque geometry (the one that fills the depth buffer)
   // draws through this, never over draws.opaque itself: it calls `draw` with
   // what the last frame showed, tests the rest against the depth just written,

@@ -78,7 +78,7 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
     glDepthMask(GL_FALSE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     mark_blended_->use();
-    draw_items(frame.draws.blended);
+    draw_items(frame.draws.blended, frame.commands);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
   }
@@ -130,7 +130,9 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
 
 void ClusteredTechnique::draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
   begin_scene_pass(res, frame, targets);
-  const BatchDrawer draw_prepass = [&](std::span<const DrawBatch> batches) { draw_depth(batches, position_only_, geometry_); };
+  const BatchDrawer draw_prepass = [&](std::span<const DrawBatch> batches, const CommandSource& source) {
+    draw_depth(batches, source, position_only_, geometry_);
+  };
   if (shading_depth_.valid()) {
     const GLuint prepass_framebuffer = res.framebuffer({shading_depth_}, frame.scene_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer);
@@ -166,7 +168,7 @@ void ClusteredTechnique::shade(const render::PassResources& res, const FrameCont
   glDepthFunc(gfx::kDepthCloserOrEqual);
   glDepthMask(GL_FALSE);
   shading_->use();
-  draw_items(frame.draws.opaque);
+  draw_items(frame.draws.opaque, frame.commands);
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);
 }

@@ -102,7 +102,7 @@ void LightPrepassTechnique::shade_materials(const render::PassResources& res, co
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) glBindTextureUnit(5 + static_cast<GLuint>(i), res.texture(light_buffer_[i]));
   material_.draw([&](gfx::ShaderProgram& program) {
     program.use();
-    draw_items(frame.draws.opaque);
+    draw_items(frame.draws.opaque, frame.commands);
   });
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);

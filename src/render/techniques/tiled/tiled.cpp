@@ -107,7 +107,7 @@ void TiledTechnique::cull_for_blended(const render::PassResources& res, const Fr
     glDepthFunc(gfx::kDepthCloser);
     glDepthMask(GL_TRUE);
     blended_depth_.use();
-    draw_items(frame.draws.blended);
+    draw_items(frame.draws.blended, frame.commands);
     glBindTextureUnit(0, res.texture(frame.scene_depth));
     glBindTextureUnit(1, res.texture(front_depth_));
     assign_lights(*blended_list_, *blended_bounds_, static_cast<std::uint32_t>(frame.lights.size()));
