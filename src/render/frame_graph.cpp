@@ -134,6 +134,12 @@ ResourceId PassBuilder::write(ResourceId resource, Access access) {
   return resource;
 }
 
+ResourceId PassBuilder::sample_at(ResourceId texture, unsigned unit) {
+  graph_.use(pass_, texture, Access::Sampled, false);
+  graph_.passes_[pass_].units.emplace_back(texture.index, unit);
+  return texture;
+}
+
 ResourceId PassBuilder::find(const std::string& name) const { return graph_.find(name); }
 
 void PassBuilder::keep() { graph_.passes_[pass_].kept = true; }
@@ -212,7 +218,7 @@ void FrameGraph::use(std::uint32_t pass, ResourceId resource, Access access, boo
 
 void FrameGraph::add_pass(const std::string& name, const Setup& setup, Execute execute, bool timed) {
   const auto index = static_cast<std::uint32_t>(passes_.size());
-  passes_.push_back({name, std::move(execute), timed, false, {}});
+  passes_.push_back({name, std::move(execute), timed, false, {}, {}});
   PassBuilder builder(*this, index);
   if (setup) setup(builder);
 }
@@ -333,6 +339,7 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
     Pass& pass = passes_[p];
     if (!pass.execute) continue;
     const PassResources resources(*this);
+    for (const auto& [resource, unit] : pass.units) glBindTextureUnit(unit, resources.texture({resource}));
     if (timer && pass.timed) {
       const auto scope = timer->scope(pass.name);
       pass.execute(resources);

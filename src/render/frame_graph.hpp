@@ -96,6 +96,9 @@ class PassBuilder {
   ResourceId create(const std::string& name, const BufferDesc& desc, ViewKind view = ViewKind::None);
   ResourceId read(ResourceId resource, Access access);
   ResourceId write(ResourceId resource, Access access);
+  // Reads a texture that the pass's shaders sample at a shared texture unit
+  // (render/binding_slots.hpp): the graph binds it there before the pass runs.
+  ResourceId sample_at(ResourceId texture, unsigned unit);
   // By name (any module's resource); invalid when none has that name.
   [[nodiscard]] ResourceId find(const std::string& name) const;
 
@@ -217,6 +220,7 @@ class FrameGraph {
     bool timed = true;
     bool kept = false;
     std::vector<Use> uses;
+    std::vector<std::pair<std::uint32_t, unsigned>> units;  // sample_at's textures and units
   };
   struct Resource {
     std::string name;

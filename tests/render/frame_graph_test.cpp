@@ -6,7 +6,8 @@
 // objects are reused frame after frame; every timed pass is timed; resources
 // declared with a view kind are listed for the debug views; what a pass
 // publishes is found by later ones until the next frame; a framebuffer on an
-// imported target is made once and made again after forget_imports().
+// imported target is made once and made again after forget_imports(); a
+// texture read with sample_at is bound at its unit when the pass runs.
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -109,6 +110,28 @@ TEST_F(FrameGraphTest, ObjectsArePooledFromFrameToFrame) {
     graph.execute(nullptr);
   }
   EXPECT_EQ(graph.pooled_objects(), 0u);
+}
+
+TEST_F(FrameGraphTest, ATextureSampledAtAUnitIsBoundThereWhenThePassRuns) {
+  const gfx::Texture atlas = gfx::create_render_target(GL_RGBA8, 64, 32);
+  const gfx::Texture output = gfx::create_render_target(GL_RGBA8, 64, 32);
+  FrameGraph graph;
+  const ResourceId shared = graph.import_texture("atlas", atlas.id(), kColour);
+  const ResourceId out = graph.import_texture("output", output.id(), kColour);
+  constexpr unsigned kUnit = 11;
+  glBindTextureUnit(kUnit, 0);
+  GLint bound = -1;
+  graph.add_pass("shade", [&](PassBuilder& p) {
+    p.sample_at(shared, kUnit);
+    p.write(out, Access::Attachment);
+  }, [&](const PassResources&) {
+    glActiveTexture(GL_TEXTURE0 + kUnit);
+    glGetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    glActiveTexture(GL_TEXTURE0);
+  });
+  graph.compile();
+  graph.execute(nullptr);
+  EXPECT_EQ(static_cast<GLuint>(bound), atlas.id());
 }
 
 TEST_F(FrameGraphTest, StorageWritesGetTheBarrierTheirReadersNeed) {

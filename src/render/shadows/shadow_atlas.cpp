@@ -475,7 +475,6 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
 }
 
 void ShadowAtlas::bind() const {
-  glBindTextureUnit(kShadowAtlasUnit, atlas_.id());
   if (compute_free_) view_texture_.bind(render::kShadowViewTextureUnit);
   else glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kShadowViewBinding, view_buffer_.buffer.id());
 }

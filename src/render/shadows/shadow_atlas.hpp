@@ -31,7 +31,7 @@
 namespace atrium::shadows {
 
 // Where the shaders find the atlas (a sampler2DShadow) and the views (std430).
-using render::kShadowAtlasUnit, render::kShadowViewBinding;
+using render::kShadowViewBinding;
 // The atlas's side, or the context's largest texture if that is smaller.
 inline constexpr int kAtlasSize = 4096;
 // Depth bias while drawing maps: the slope-scaled term grows with how steeply a

@@ -18,6 +18,7 @@
 
 #include "render/gpu_assets.hpp"
 #include "gfx/gl.hpp"
+#include "render/binding_slots.hpp"
 #include "render/frame_graph.hpp"
 #include "components/technique_options.hpp"
 #include "render/light_buffer.hpp"
@@ -77,11 +78,11 @@ inline GLuint lighting_framebuffer(const render::PassResources& res, const Frame
 }
 
 // What every pass that shades reads besides its own inputs: the lights and,
-// with shadows on, the shadow atlas (so that the graph orders it after the
-// shadow maps are drawn and keeps the maps' pass).
+// with shadows on, the shadow atlas, which the graph binds at its unit (and
+// orders the pass after the shadow maps are drawn, keeping the maps' pass).
 inline void read_shading_inputs(render::PassBuilder& pass, const FrameContext& frame) {
   pass.read(frame.light_buffer, render::Access::Storage);
-  if (frame.shadow_atlas.valid()) pass.read(frame.shadow_atlas, render::Access::Sampled);
+  if (frame.shadow_atlas.valid()) pass.sample_at(frame.shadow_atlas, render::kShadowAtlasUnit);
 }
 
 // The shape of the frame's targets (owned by the MeshRenderer). Their GL
