@@ -13,7 +13,7 @@ constexpr GLbitfield kMapping = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP
 ReadbackRing::ReadbackRing(std::size_t slot_bytes, std::size_t slots)
     : slot_bytes_(std::max<std::size_t>(slot_bytes, 4)), buffer_(create_buffer()), slots_(std::max<std::size_t>(slots, 1)) {
   const auto total = static_cast<GLsizeiptr>(slot_bytes_ * slots_.size());
-  if (gl_features().compute_shaders && gl_features().storage_buffers) copy_program_ = ShaderProgram::load({"common/readback_copy.comp"});
+  if (gl_features().full_tier()) copy_program_ = ShaderProgram::load({"common/readback_copy.comp"});
   if (gl_features().buffer_storage) {
     glNamedBufferStorage(buffer_.id(), total, nullptr, kMapping);
     mapped_ = static_cast<const unsigned char*>(glMapNamedBufferRange(buffer_.id(), 0, total, kMapping));
@@ -39,8 +39,7 @@ bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::
   if (copy_program_ && bytes % 4 == 0 && offset % 4 == 0 && destination % 4 == 0) {
     // The shader reads what shaders wrote, and the CPU reads what it writes.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    GLint current = 0;
-    glGetIntegerv(GL_CURRENT_PROGRAM, &current);
+    const KeepProgram keep;
     copy_program_.use();
     copy_program_.set("u_source_word", static_cast<unsigned>(offset / 4));
     copy_program_.set("u_slot_word", static_cast<unsigned>(destination / 4));
@@ -49,7 +48,6 @@ bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kReadbackSlotBinding, buffer_.id());
     glDispatchCompute(static_cast<GLuint>((bytes / 4 + 63) / 64), 1, 1);
     glMemoryBarrier(GL_CLIENT_MAPPED_BUFFER_BARRIER_BIT);
-    glUseProgram(static_cast<GLuint>(current));
   } else {
     // The copy reads what shaders wrote through storage or images.
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -83,4 +83,17 @@ class ShaderProgram {
   glm::uvec3 work_group_size_{1};
 };
 
+// Keeps the program in use across dispatches made inside a pass that draws
+// (whose program is live; at a frame's start the one in use may be a deleted one).
+class KeepProgram {
+ public:
+  KeepProgram() { glGetIntegerv(GL_CURRENT_PROGRAM, &program_); }
+  ~KeepProgram() { glUseProgram(static_cast<GLuint>(program_)); }
+  KeepProgram(const KeepProgram&) = delete;
+  KeepProgram& operator=(const KeepProgram&) = delete;
+
+ private:
+  GLint program_ = 0;
+};
+
 }  // namespace atrium::gfx

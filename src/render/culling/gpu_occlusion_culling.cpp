@@ -20,19 +20,6 @@ constexpr GLuint kCullGroup = 64;
 
 enum Phase : unsigned { kFirst = 0, kReveal = 1, kRemember = 2 };
 
-// Keeps the program in use across dispatches made inside a pass that draws
-// (whose program is live; at a frame's start the one in use may be a deleted one).
-class KeepProgram {
- public:
-  KeepProgram() { glGetIntegerv(GL_CURRENT_PROGRAM, &program_); }
-  ~KeepProgram() { glUseProgram(static_cast<GLuint>(program_)); }
-  KeepProgram(const KeepProgram&) = delete;
-  KeepProgram& operator=(const KeepProgram&) = delete;
-
- private:
-  GLint program_ = 0;
-};
-
 }  // namespace
 
 std::vector<glm::ivec4> depth_pyramid_levels(glm::ivec2 viewport) {
@@ -92,7 +79,7 @@ void GpuOcclusionCulling::begin(const lighting::DrawList& list, GLuint commands)
 }
 
 void GpuOcclusionCulling::reveal(GLuint depth, glm::ivec2 size) {
-  const KeepProgram keep;
+  const gfx::KeepProgram keep;
   build_pyramid(depth, size);
   cull(kReveal);
   pack(Phase::Revealed);
@@ -134,7 +121,7 @@ GLintptr GpuOcclusionCulling::bind(Phase phase) const {
 }
 
 void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {
-  const KeepProgram keep;
+  const gfx::KeepProgram keep;
   build_pyramid(depth, size);
   cull(kRemember);
   readback_.copy(counters_.id(), 0, 2 * sizeof(std::uint32_t), blended_triangles_);
