@@ -16,14 +16,14 @@
 namespace {
 using namespace atrium;
 
-std::vector<GpuLight> courtyard_lights(std::size_t count) {
+std::vector<render::GpuLight> courtyard_lights(std::size_t count) {
   std::mt19937 random(7);
   std::uniform_real_distribution<float> x(-17.0f, 17.0f), y(0.0f, 14.9f), z(-14.0f, 14.0f);
   const float radius = 4.0f * std::cbrt(1024.0f / static_cast<float>(count));
-  std::vector<GpuLight> lights(count);
-  for (GpuLight& light : lights) {
+  std::vector<render::GpuLight> lights(count);
+  for (render::GpuLight& light : lights) {
     light.position_radius = glm::vec4(x(random), y(random), z(random), radius);
-    light.color_kind = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(GpuLightKind::Point));
+    light.color_kind = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(render::GpuLightKind::Point));
   }
   return lights;
 }

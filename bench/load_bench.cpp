@@ -173,7 +173,7 @@ void BM_UploadLargeGltf(benchmark::State& state) {
   assets::AssetManager assets;
   (void)assets::import_gltf(path, assets);
   for (auto _ : state) {
-    assets::GpuAssets gpu;
+    render::GpuAssets gpu;
     gpu.upload(assets);
     glFinish();
   }

@@ -161,8 +161,8 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   }
   row.sliced = slices_depth();
   if (const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>()) {
-    const FrameStats& stats = world.renderer().stats();
-    row.light_lists = lighting::describe(*bins) + ", " + std::string(lighting::light_assignment_label(stats.light_assignment)) + " at density " +
+    const render::FrameStats& stats = world.renderer().stats();
+    row.light_lists = lighting::describe(*bins) + ", " + std::string(light_assignment_label(stats.light_assignment)) + " at density " +
                       fixed(stats.light_list_density, 4);
   }
   row.median_ms = percentile(frame_ms, 0.5);
@@ -186,7 +186,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
 // Why `mode` is not measured at `lights` after the rows measured so far (empty:
 // measure it): a frame at a smaller count passed the limit, or would at this
 // count if its time grew with the lights (the linear cost of forward shading).
-std::string skip_reason(const std::vector<BenchRow>& rows, const std::string& mode, lighting::LightingStage stage, std::uint32_t lights,
+std::string skip_reason(const std::vector<BenchRow>& rows, const std::string& mode, LightingStage stage, std::uint32_t lights,
                         int shadows, double frame_limit_ms) {
   for (auto row = rows.rbegin(); row != rows.rend(); ++row) {
     if (row->mode != mode || row->stage_asked != stage || row->shadows != shadows || row->lights >= lights || !row->skipped.empty()) continue;
@@ -224,7 +224,7 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   result.options.warmup = warmup;
   const std::string previous = world.mode();
   const double reaching = count_reaching(world);
-  for (const std::string& mode : lighting::mode_names()) {
+  for (const std::string& mode : techniques::mode_names()) {
     result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching, BenchOptions{}.frame_limit_ms));
     result.rows.back().view_name = "current camera";
   }
@@ -234,11 +234,11 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
 }
 
 // Every pair of a shadowed-light count and a lighting stage, counts outermost.
-std::vector<std::pair<int, lighting::LightingStage>> sweep(const std::vector<int>& shadow_counts,
-                                                           const std::vector<lighting::LightingStage>& stages) {
-  std::vector<std::pair<int, lighting::LightingStage>> pairs;
+std::vector<std::pair<int, LightingStage>> sweep(const std::vector<int>& shadow_counts,
+                                                           const std::vector<LightingStage>& stages) {
+  std::vector<std::pair<int, LightingStage>> pairs;
   for (const int shadows : shadow_counts) {
-    for (const lighting::LightingStage stage : stages) pairs.emplace_back(shadows, stage);
+    for (const LightingStage stage : stages) pairs.emplace_back(shadows, stage);
   }
   return pairs;
 }
@@ -246,11 +246,11 @@ std::vector<std::pair<int, lighting::LightingStage>> sweep(const std::vector<int
 BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress) {
   BenchResult result;
   result.options = options;
-  const std::vector<std::string> modes = options.modes.empty() ? lighting::mode_names() : options.modes;
-  const std::vector<lighting::ZSlicing> slicings =
+  const std::vector<std::string> modes = options.modes.empty() ? techniques::mode_names() : options.modes;
+  const std::vector<ZSlicing> slicings =
       options.z_slicings.empty() ? std::vector{options.technique_options.z_slicing} : options.z_slicings;
   const std::vector<int> shadow_counts = options.shadow_counts.empty() ? std::vector{0} : options.shadow_counts;
-  const std::vector<lighting::LightingStage> stages =
+  const std::vector<LightingStage> stages =
       options.lighting_stages.empty() ? std::vector{options.technique_options.lighting_stage} : options.lighting_stages;
   std::vector<std::uint32_t> light_counts = options.light_counts;
   std::sort(light_counts.begin(), light_counts.end());  // skipping learns from the smaller counts
@@ -289,7 +289,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
         settings.technique_options.lighting_stage = stage;
         // Modes that do not slice depth are measured once, with the first slicing.
         std::vector<std::string> to_measure = modes;
-        for (const lighting::ZSlicing slicing : slicings) {
+        for (const ZSlicing slicing : slicings) {
           settings.technique_options.z_slicing = slicing;
           for (const std::string& mode : modes) {
             if (std::find(to_measure.begin(), to_measure.end(), mode) == to_measure.end()) {
@@ -334,9 +334,9 @@ constexpr double kListedSystemMs = 0.05;
 std::string label(const BenchResult& result, const BenchRow& row) {
   std::string name = row.mode;
   if (result.options.z_slicings.size() >= 2 && row.sliced) {
-    name += "/" + std::string(lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
+    name += "/" + std::string(kZSlicingNames[static_cast<std::size_t>(row.z_slicing)]);
   }
-  if (result.options.lighting_stages.size() >= 2) name += "/" + std::string(lighting::kLightingStageNames[static_cast<std::size_t>(row.stage_asked)]);
+  if (result.options.lighting_stages.size() >= 2) name += "/" + std::string(kLightingStageNames[static_cast<std::size_t>(row.stage_asked)]);
   if (result.options.shadow_counts.size() >= 2) name += " " + std::to_string(row.shadows) + " shadowed";
   return name;
 }
@@ -467,11 +467,11 @@ std::string bench_csv(const BenchResult& result) {
         << fixed(row.reaching_per_pixel, 4) << "," << fixed(row.efficiency(), 4) << ",\"" << passes << "\",\""
         << result.timing_method << "\",\"" << result.renderer << "\",\"" << row.refused << "\"," << row.triangles_drawn << ","
         << row.draw_calls << ",\"" << cpu_passes << "\","
-        << (row.sliced ? lighting::kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
+        << (row.sliced ? kZSlicingNames[static_cast<std::size_t>(row.z_slicing)] : std::string_view()) << ","
         << row.shadows << "," << row.triangles_occluded << "," << fixed(row.gpu_ms, 4) << ","
         << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
         << "\","
-        << (std::isnan(row.median_ms) ? std::string_view() : lighting::kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
+        << (std::isnan(row.median_ms) ? std::string_view() : kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
         << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << "\n";
   }
   return csv.str();

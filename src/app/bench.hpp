@@ -34,11 +34,11 @@ struct BenchOptions {
   std::optional<float> light_radius;         // every light gets this radius
   bool constant_density = false;             // radii shrink as cbrt(1024 / lights)
   std::string shading = "pbr";
-  lighting::TechniqueOptions technique_options;
+  TechniqueOptions technique_options;
   // --z-slicing LIST: every mode is measured with each (empty: technique_options').
-  std::vector<lighting::ZSlicing> z_slicings;
+  std::vector<ZSlicing> z_slicings;
   // --lighting-stage LIST: every mode is measured in each stage (empty: technique_options').
-  std::vector<lighting::LightingStage> lighting_stages;
+  std::vector<LightingStage> lighting_stages;
   bool frustum_culling = true;               // --no-culling
   bool occlusion_culling = true;             // --no-occlusion-culling
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
@@ -56,7 +56,7 @@ struct BenchRow {
   std::string mode;
   // The depth slicing the row ran with, and whether the mode bins lights by
   // depth slices at all (a clustered mode): only those are measured per slicing.
-  lighting::ZSlicing z_slicing = lighting::ZSlicing::Log;
+  ZSlicing z_slicing = ZSlicing::Log;
   bool sliced = false;
   // How the mode's light lists cut the frame and were built ("60x34x32
   // clusters, gather"; empty for modes without lists): --cluster-grid and
@@ -64,8 +64,8 @@ struct BenchRow {
   std::string light_lists;
   int shadows = 0;  // lights with shadow maps (--shadows)
   // The stage asked for (a sweep's) and the one the full-screen passes ran in.
-  lighting::LightingStage stage_asked = lighting::LightingStage::Automatic;
-  lighting::LightingStage lighting_stage = lighting::LightingStage::Fragment;
+  LightingStage stage_asked = LightingStage::Automatic;
+  LightingStage lighting_stage = LightingStage::Fragment;
   std::uint32_t lights = 0;
   int view = 1;
   std::string view_name;

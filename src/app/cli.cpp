@@ -34,7 +34,7 @@ int list_debug_views(const CliOptions& options) {
   listed.size = {16, 16};  // one frame makes the technique; its picture is not needed
   World world(listed);
   world.frame(0.0);
-  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
+  for (const render::OfferedView& view : world.renderer().offered_views()) {
     std::printf("%-24s %s\n", view.name.c_str(), view.help.c_str());
   }
   return kExitOk;
@@ -51,7 +51,7 @@ int run_render(const CliOptions& options) {
   world.frame(0.0);
   assets::write_png(out, world.renderer().read_output());
   world.renderer().settle();  // what the GPU reports a frame late: averages, list totals, pass timings
-  const FrameStats& stats = world.renderer().stats();
+  const render::FrameStats& stats = world.renderer().stats();
   std::printf("wrote %s (%dx%d, mode %s, view %d '%s', %u lights, %zu triangles drawn of %zu in %zu draws, %s)\n",
               options.out.c_str(), options.size.x, options.size.y, world.mode().c_str(), world.view(),
               world.scene().views[static_cast<std::size_t>(world.view() - 1)].name.c_str(), stats.lights,
@@ -85,7 +85,7 @@ int run_render(const CliOptions& options) {
   }
   if (stats.light_list_entries > 0) {
     std::printf("light lists: %u entries (%s, density %.4f), %u overflowed frames%s\n", stats.light_list_entries,
-                std::string(lighting::light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density, stats.light_list_overflows,
+                std::string(light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density, stats.light_list_overflows,
                 stats.light_list_overflows > 0 ? " (their lights that did not fit were shaded wherever they reach; the list grew)" : "");
   }
   return kExitOk;
@@ -103,10 +103,10 @@ int run_info(const CliOptions& options) {
   if (options.memory) {
     world.set_size(options.size);
     info.memory_size = options.size;
-    for (const std::string& mode : lighting::mode_names()) {
+    for (const std::string& mode : techniques::mode_names()) {
       world.set_mode(mode);
       world.frame(0.0);
-      info.memory.push_back({mode, world.renderer().graph().memory()});
+      info.memory.push_back({mode, world.renderer().graph().memory(), world.renderer().graph().used_resources()});
     }
   }
   std::fputs((options.json ? format_info_json(info) : format_info_text(info)).c_str(), stdout);
@@ -120,14 +120,14 @@ int run_compare(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   WorldOptions compared = world_options(options);
   compared.mode = "forward";
-  compared.lighting_stage = lighting::LightingStage::Fragment;
+  compared.lighting_stage = LightingStage::Fragment;
   World world(compared);
-  lighting::TechniqueOptions& technique_options = world.registry().resource<RendererSettings>().technique_options;
+  TechniqueOptions& technique_options = world.registry().resource<RendererSettings>().technique_options;
   // By default both stages, less one this context or --msaa cannot run (said once).
-  std::vector<lighting::LightingStage> stages = options.lighting_stages;
+  std::vector<LightingStage> stages = options.lighting_stages;
   if (stages.empty()) {
-    for (const lighting::LightingStage stage : {lighting::LightingStage::Fragment, lighting::LightingStage::Compute}) {
-      lighting::TechniqueOptions asked = technique_options;
+    for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute}) {
+      TechniqueOptions asked = technique_options;
       asked.lighting_stage = stage;
       try {
         (void)lighting::resolve_lighting_stage(asked);
@@ -142,14 +142,14 @@ int run_compare(const CliOptions& options) {
   for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
     world.set_view(view);
     world.set_mode("forward");
-    technique_options.lighting_stage = lighting::LightingStage::Fragment;
+    technique_options.lighting_stage = LightingStage::Fragment;
     world.frame(0.0);
     const assets::Image reference = world.renderer().read_output();
     const std::string view_name = std::to_string(view) + " " + world.scene().views[static_cast<std::size_t>(view - 1)].name;
-    for (const lighting::LightingStage stage : stages) {
+    for (const LightingStage stage : stages) {
       technique_options.lighting_stage = stage;
-      for (const auto& technique : lighting::technique_table()) {
-        if (technique.name == "forward" && stage == lighting::LightingStage::Fragment) continue;
+      for (const auto& technique : techniques::technique_table()) {
+        if (technique.name == "forward" && stage == LightingStage::Fragment) continue;
         world.set_mode(std::string(technique.name));
         world.frame(0.0);
         const assets::Image image = world.renderer().read_output();
@@ -275,7 +275,7 @@ int run_cli(int argc, char** argv) {
     return fail(e, kExitUsage);
   } catch (const assets::ImageError& e) {
     return fail(e, kExitUsage);
-  } catch (const lighting::UnknownViewError& e) {
+  } catch (const render::UnknownViewError& e) {
     return fail(e, kExitUsage);  // found by the first frame: its graph does not offer that view
   } catch (const gfx::ShaderError& e) {
     std::fprintf(stderr, "atrium: shader error:\n%s\n", e.what());

@@ -41,7 +41,7 @@ struct CliOptions {
   std::optional<std::string> mode;
   std::string shading = "pbr";
   std::string debug_view;  // empty: the lit image
-  lighting::TechniqueOptions technique_options;  // --cluster-grid, --active-clusters
+  TechniqueOptions technique_options;  // --cluster-grid, --active-clusters
   std::optional<std::uint32_t> lights;
   std::optional<float> light_radius;  // --light-radius: one radius for every point and spot light
   int max_texture_size = 0;           // --max-texture-size; 0: the context's limit
@@ -57,8 +57,8 @@ struct CliOptions {
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
   // --lighting-stage: the window's and render's (absent: the scene file's, else
   // auto); compare's and bench's list (empty: their defaults).
-  std::optional<lighting::LightingStage> lighting_stage;
-  std::vector<lighting::LightingStage> lighting_stages;
+  std::optional<LightingStage> lighting_stage;
+  std::vector<LightingStage> lighting_stages;
   int shadows = 0;                      // --shadows K: lights with shadow maps
   std::map<std::string, double> system_options;  // rows of the system options table, by name
   bool gl_debug = false;                // KHR_debug output and a GL error count (on in debug builds)

@@ -96,7 +96,7 @@ constexpr std::array kSystemOptions{
 };
 
 // "5 targets, 48 B/px": a layout's targets and bytes per pixel with depth.
-std::string gbuffer_size(lighting::GBufferLayout layout) {
+std::string gbuffer_size(GBufferLayout layout) {
   return std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) +
          " B/px";
 }
@@ -153,8 +153,8 @@ glm::ivec2 parse_size(std::string_view text) {
   }
 }
 
-lighting::LightingStage parse_lighting_stage(std::string_view text) {
-  return parse_choice<lighting::LightingStage>(text, lighting::kLightingStageNames, "lighting stage", "stages");
+LightingStage parse_lighting_stage(std::string_view text) {
+  return parse_choice<LightingStage>(text, kLightingStageNames, "lighting stage", "stages");
 }
 
 std::vector<std::string> split_list(std::string_view text) {
@@ -191,7 +191,7 @@ ApplyOption set_flag(Field field) {
 
 // Sets a technique option from a names table (parse_choice).
 template <typename Enum, std::size_t N>
-ApplyOption set_choice(Enum lighting::TechniqueOptions::*member, const std::array<std::string_view, N>& names, const char* what,
+ApplyOption set_choice(Enum TechniqueOptions::*member, const std::array<std::string_view, N>& names, const char* what,
                        const char* plural) {
   return [member, &names, what, plural](std::string_view value, CliOptions& o) {
     o.technique_options.*member = parse_choice<Enum>(value, names, what, plural);
@@ -203,7 +203,7 @@ ApplyOption set_choice(Enum lighting::TechniqueOptions::*member, const std::arra
 const std::vector<OptionSpec>& option_table() {
   static const std::vector<OptionSpec> table{
       {"--mode", "M", kWindow | kRender,
-       "lighting technique (default: the scene's, 'forward'): " + lighting::technique_names(),
+       "lighting technique (default: the scene's, 'forward'): " + techniques::technique_names(),
        [](std::string_view value, CliOptions& o) { o.mode = std::string(value); }},
       {"--shading", "S", kDrawing, "shading model: pbr (default), blinn-phong or phong",
        [](std::string_view value, CliOptions& o) {
@@ -222,40 +222,40 @@ const std::vector<OptionSpec>& option_table() {
            const std::string rest = text.substr(px + 2);
            if (!rest.empty() && !rest.starts_with('x')) throw bad();
            const unsigned tile = parse_number<unsigned>("--cluster-grid", value.substr(0, px), 8, 512);
-           const unsigned slices = rest.empty() ? lighting::ClusterGridSize{}.dims.z : parse_number<unsigned>("--cluster-grid", rest.substr(1), 2, 256);
-           o.technique_options.cluster_grid = lighting::ClusterGridSize::pixels(tile, slices);
+           const unsigned slices = rest.empty() ? ClusterGridSize{}.dims.z : parse_number<unsigned>("--cluster-grid", rest.substr(1), 2, 256);
+           o.technique_options.cluster_grid = ClusterGridSize::pixels(tile, slices);
            return;
          }
          const auto x1 = text.find('x'), x2 = text.find('x', x1 == std::string::npos ? x1 : x1 + 1);
          if (x1 == std::string::npos || x2 == std::string::npos) throw bad();
-         o.technique_options.cluster_grid = lighting::ClusterGridSize::fixed({parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
+         o.technique_options.cluster_grid = ClusterGridSize::fixed({parse_number<unsigned>("--cluster-grid", value.substr(0, x1), 1, 256),
                                                                              parse_number<unsigned>("--cluster-grid", value.substr(x1 + 1, x2 - x1 - 1), 1, 256),
                                                                              parse_number<unsigned>("--cluster-grid", value.substr(x2 + 1), 2, 256)});
        }},
       {"--cluster-bounds", "B", kDrawing,
        "clustered modes: test lights against each cluster's box of the pixels it holds (pixels, default) or its "
        "whole frustum slice (grid)",
-       set_choice(&lighting::TechniqueOptions::cluster_bounds, lighting::kClusterBoundsNames, "cluster bounds", "bounds")},
+       set_choice(&TechniqueOptions::cluster_bounds, kClusterBoundsNames, "cluster bounds", "bounds")},
       {"--active-clusters", "", kDrawing, "clustered modes, grid bounds: only clusters holding visible pixels get lights",
        set_flag([](CliOptions& o) -> bool& { return o.technique_options.active_clusters; })},
       {"--light-assignment", "A", kDrawing,
        "tiled and clustered modes: how the light lists are built, scatter (each light visits the bins it may reach), "
        "gather (each bin tests every light) or auto (default: per frame, gather where lights are dense)",
-       set_choice(&lighting::TechniqueOptions::light_assignment, lighting::kLightAssignmentNames, "light assignment", "assignments")},
+       set_choice(&TechniqueOptions::light_assignment, kLightAssignmentNames, "light assignment", "assignments")},
       {"--z-slicing", "S", kWindow | kRender | kCompare,
        "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
        "plain-log (logarithmic from the near plane) or uniform",
-       set_choice(&lighting::TechniqueOptions::z_slicing, lighting::kZSlicingNames, "depth slicing", "slicings")},
+       set_choice(&TechniqueOptions::z_slicing, kZSlicingNames, "depth slicing", "slicings")},
       {"--z-slicing", "LIST", kBench, "clustered modes: measure each of these depth slicings (log, plain-log, uniform)",
        [](std::string_view value, CliOptions& o) {
-         o.bench.z_slicings = parse_list<lighting::ZSlicing>("--z-slicing", value, "slicings", [](const std::string& item) {
-           return parse_choice<lighting::ZSlicing>(item, lighting::kZSlicingNames, "depth slicing", "slicings");
+         o.bench.z_slicings = parse_list<ZSlicing>("--z-slicing", value, "slicings", [](const std::string& item) {
+           return parse_choice<ZSlicing>(item, kZSlicingNames, "depth slicing", "slicings");
          });
        }},
       {"--gbuffer", "L", kDrawing,
-       "deferred modes: G-buffer layout, full (" + gbuffer_size(lighting::GBufferLayout::Full) + ", default) or compact (" +
-           gbuffer_size(lighting::GBufferLayout::Compact) + "; position from depth, octahedral normal)",
-       set_choice(&lighting::TechniqueOptions::gbuffer_layout, lighting::kGBufferLayoutNames, "G-buffer layout", "layouts")},
+       "deferred modes: G-buffer layout, full (" + gbuffer_size(GBufferLayout::Full) + ", default) or compact (" +
+           gbuffer_size(GBufferLayout::Compact) + "; position from depth, octahedral normal)",
+       set_choice(&TechniqueOptions::gbuffer_layout, kGBufferLayoutNames, "G-buffer layout", "layouts")},
       {"--split-lighting", "", kDrawing,
        "deferred modes: also write the diffuse and the specular light sums to targets of their own (the "
        "diffuse-light and specular-light views turn this on while shown)",
@@ -282,7 +282,7 @@ const std::vector<OptionSpec>& option_table() {
       {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)",
        set_flag([](CliOptions& o) -> bool& { return o.bench.shadow_redraw; })},
       {"--debug-view", "V", kWindow | kRender,
-       "show a debug view: " + lighting::debug_view_names() +
+       "show a debug view: " + render::debug_view_names() +
            ", or any resource the mode's frame graph declares viewable, by its name; `render --debug-view list` "
            "prints the views the mode offers with what each shows",
        [](std::string_view value, CliOptions& o) {
@@ -350,8 +350,8 @@ const std::vector<OptionSpec>& option_table() {
          o.bench.modes.clear();
          if (value == "all") return;
          o.bench.modes = parse_list<std::string>("--modes", value, "modes (or all)", [](const std::string& mode) {
-           if (!lighting::find_technique(mode)) {
-             throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + lighting::technique_names() + ")");
+           if (!techniques::find_technique(mode)) {
+             throw UsageError("unknown mode '" + mode + "' in --modes (modes: " + techniques::technique_names() + ")");
            }
            return mode;
          });
@@ -396,7 +396,7 @@ const std::vector<OptionSpec>& option_table() {
        "measure each of these stages (fragment, compute, auto; compare: default fragment,compute, leaving out a stage the "
        "context or --msaa cannot run; bench: default auto)",
        [](std::string_view value, CliOptions& o) {
-         o.lighting_stages = parse_list<lighting::LightingStage>("--lighting-stage", value, "stages", parse_lighting_stage);
+         o.lighting_stages = parse_list<LightingStage>("--lighting-stage", value, "stages", parse_lighting_stage);
        }},
       {"--no-compute", "", kDrawing | kInfo,
        "run on the compute-free tier, as on WebGL2 or OpenGL 4.1: no compute shaders or storage buffers (lights, instances "
@@ -574,7 +574,7 @@ std::string help_text(Command command) {
             "Options ([render, bench]: only for those commands; the others are for every command that draws):\n";
     for (const OptionSpec& option : option_table()) text += option_help(option, true);
     std::string modes;
-    for (const auto& info : lighting::technique_table()) {
+    for (const auto& info : techniques::technique_table()) {
       constexpr std::size_t kColumn = 26;
       const std::size_t padding = info.name.size() + 2 < kColumn ? kColumn - info.name.size() : 2;
       modes += "  " + std::string(info.name) + std::string(padding, ' ') + std::string(info.description) + "\n";
@@ -672,9 +672,9 @@ CliOptions parse_cli(std::span<const std::string_view> args) {
   if (options.command == Command::Render && options.out.empty() && options.debug_view != "list") {
     throw UsageError("render needs --out FILE.png");
   }
-  if (options.lighting_stage == lighting::LightingStage::Compute) {
+  if (options.lighting_stage == LightingStage::Compute) {
     // A combination that can never run is bad usage, refused before any context.
-    lighting::TechniqueOptions asked = options.technique_options;
+    TechniqueOptions asked = options.technique_options;
     asked.lighting_stage = *options.lighting_stage;
     try {
       (void)lighting::resolve_lighting_stage(asked);

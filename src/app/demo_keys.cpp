@@ -36,7 +36,7 @@ void request_view(World& world, int view) { world.registry().resource<DemoReques
 constexpr std::array kDemoKeys{
     DemoKey{{GLFW_KEY_T, 0},
             [](World& world, bool shift) {
-              world.registry().resource<DemoRequests>().mode = step_name(lighting::mode_names(), world.mode(), shift ? -1 : 1);
+              world.registry().resource<DemoRequests>().mode = step_name(techniques::mode_names(), world.mode(), shift ? -1 : 1);
             }},
     DemoKey{{GLFW_KEY_1, 0}, [](World& world, bool) { request_view(world, 1); }},
     DemoKey{{GLFW_KEY_2, 0}, [](World& world, bool) { request_view(world, 2); }},
@@ -46,7 +46,7 @@ constexpr std::array kDemoKeys{
     DemoKey{{GLFW_KEY_G, 0},
             [](World& world, bool shift) {
               std::vector<std::string> views{""};
-              for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
+              for (const render::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
               set_debug_view(world, step_name(views, world.registry().resource<RendererSettings>().debug_view, shift ? -1 : 1));
             }},
     DemoKey{{GLFW_KEY_L, 0},

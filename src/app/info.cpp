@@ -57,9 +57,9 @@ SceneInfo gather_info(World& world, const std::string& scene, glm::ivec2 size) {
   info.upload_seconds = world.upload_seconds();
   info.warnings = world.load_report().warnings.size();
   info.bins_size = size;
-  info.tile_pixels = lighting::kTileSize;
-  info.tiles = (glm::uvec2(glm::max(info.bins_size, glm::ivec2(1))) + glm::uvec2(lighting::kTileSize - 1)) / glm::uvec2(lighting::kTileSize);
-  const lighting::ClusterGridSize grid = registry.resource<RendererSettings>().technique_options.cluster_grid;
+  info.tile_pixels = techniques::kTileSize;
+  info.tiles = (glm::uvec2(glm::max(info.bins_size, glm::ivec2(1))) + glm::uvec2(techniques::kTileSize - 1)) / glm::uvec2(techniques::kTileSize);
+  const ClusterGridSize grid = registry.resource<RendererSettings>().technique_options.cluster_grid;
   info.clusters = grid.at(info.bins_size);
   info.cluster_tile_pixels = grid.tile_pixels;
   return info;
@@ -97,8 +97,8 @@ std::string format_info_text(const SceneInfo& i) {
                 i.gl.version.c_str(), i.gl.platform.c_str());
   std::string text = buffer;
   const std::string grid = i.cluster_tile_pixels ? std::to_string(i.cluster_tile_pixels) + "-pixel tiles, at least " +
-                                                       std::to_string(lighting::kMinPixelGridTiles.x) + "x" +
-                                                       std::to_string(lighting::kMinPixelGridTiles.y) + ", --cluster-grid"
+                                                       std::to_string(kMinPixelGridTiles.x) + "x" +
+                                                       std::to_string(kMinPixelGridTiles.y) + ", --cluster-grid"
                                                  : "fixed, --cluster-grid";
   char bins[256];
   std::snprintf(bins, sizeof bins, "light bins   at %dx%d: tiles %ux%u of %u px; clusters %ux%ux%u (%s)\n", i.bins_size.x, i.bins_size.y,
@@ -114,6 +114,11 @@ std::string format_info_text(const SceneInfo& i) {
                     format_bytes(static_cast<double>(m.bytes.aliased_bytes)).c_str(),
                     format_bytes(static_cast<double>(m.bytes.transient_bytes)).c_str());
       text += line;
+      for (const render::ResourceUse& target : m.targets) {
+        std::snprintf(line, sizeof line, "    %-26s %-34s %10s  %s\n", target.name.c_str(), target.description.c_str(),
+                      format_bytes(static_cast<double>(target.bytes)).c_str(), target.imported ? "long-lived" : "transient");
+        text += line;
+      }
     }
   }
   return text;
@@ -151,8 +156,13 @@ std::string format_info_json(const SceneInfo& i) {
   if (!i.memory.empty()) {
     nlohmann::json modes = nlohmann::json::array();
     for (const SceneInfo::ModeMemory& m : i.memory) {
+      nlohmann::json targets = nlohmann::json::array();
+      for (const render::ResourceUse& target : m.targets) {
+        targets.push_back({{"name", target.name}, {"kind", target.kind == render::ResourceKind::Texture ? "texture" : "buffer"},
+                           {"description", target.description}, {"bytes", target.bytes}, {"long_lived", target.imported}});
+      }
       modes.push_back({{"mode", m.mode}, {"imported_bytes", m.bytes.imported_bytes}, {"transient_bytes", m.bytes.transient_bytes},
-                       {"aliased_bytes", m.bytes.aliased_bytes}});
+                       {"aliased_bytes", m.bytes.aliased_bytes}, {"targets", targets}});
     }
     j["render_targets"] = {{"size", {i.memory_size.x, i.memory_size.y}}, {"modes", modes}};
   }

@@ -34,10 +34,12 @@ struct SceneInfo {
   glm::uvec3 clusters{0};
   std::uint32_t cluster_tile_pixels = 0;  // the pixel grid's tile (--cluster-grid NpxxZ); 0: a fixed grid (XxYxZ)
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
-  // --memory: per mode, the frame graph's render-target memory at `memory_size`.
+  // --memory: per mode, the frame graph's render-target memory at `memory_size`
+  // and every target and buffer its frame uses.
   struct ModeMemory {
     std::string mode;
     render::GraphMemory bytes;
+    std::vector<render::ResourceUse> targets;
   };
   std::vector<ModeMemory> memory;
   glm::ivec2 memory_size{0};

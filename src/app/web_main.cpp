@@ -62,7 +62,7 @@ std::string stats_json(World& world, double fps) {
     passes.push_back({{"name", pass.name}, {"ms", pass.milliseconds}});
     total += pass.milliseconds;
   }
-  for (const lighting::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
+  for (const render::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
   const nlohmann::ordered_json stats{
       {"fps", fps},
       {"mode", world.mode()},
@@ -74,7 +74,7 @@ std::string stats_json(World& world, double fps) {
       {"passes_ms", total},
       {"passes", passes},
       {"views", views},
-      {"modes", lighting::mode_names()}};
+      {"modes", techniques::mode_names()}};
   return stats.dump();
 }
 
@@ -168,7 +168,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_set_paused(int paused) {
 EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
   return atrium::apply([&](atrium::World& world) {
     std::filesystem::create_directories(folder);
-    for (const std::string& mode : atrium::lighting::mode_names()) {
+    for (const std::string& mode : atrium::techniques::mode_names()) {
       world.set_mode(mode);
       world.frame(0.0);
       atrium::assets::write_png(std::filesystem::path(folder) / (mode + ".png"), world.renderer().read_output());
@@ -187,7 +187,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
 EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
   nlohmann::ordered_json medians = nlohmann::ordered_json::object();
   const char* error = atrium::apply([&](atrium::World& world) {
-    for (const std::string& mode : atrium::lighting::mode_names()) {
+    for (const std::string& mode : atrium::techniques::mode_names()) {
       world.set_mode(mode);
       for (int i = 0; i < warmup; ++i) world.frame(0.0);
       atrium::wait_for_frame();

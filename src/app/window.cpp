@@ -101,7 +101,7 @@ void carry_out(World& world) {
 struct Settings {
   std::string mode;
   std::uint32_t lights = 0;
-  lighting::TechniqueOptions options;
+  TechniqueOptions options;
 };
 
 // A frame asked for more than the driver allows: the window goes back to the
@@ -109,7 +109,7 @@ struct Settings {
 // window, a wider light radius), halves the lights. Only a refusal with no
 // lights left ends the program.
 void step_back(World& world, Settings& settled, const gfx::ResourceLimitError& e) {
-  lighting::TechniqueOptions& options = world.registry().resource<RendererSettings>().technique_options;
+  TechniqueOptions& options = world.registry().resource<RendererSettings>().technique_options;
   const bool changed = world.mode() != settled.mode || world.light_count() != settled.lights || options != settled.options;
   if (!changed && world.light_count() == 0) throw;
   if (!changed) settled.lights /= 2;

@@ -35,10 +35,10 @@ namespace atrium {
 namespace {
 
 // The scene file's "lighting_stage" (checked when it loaded), else auto.
-lighting::LightingStage scene_lighting_stage(const assets::SceneDescription& scene) {
-  const auto& names = lighting::kLightingStageNames;
+LightingStage scene_lighting_stage(const assets::SceneDescription& scene) {
+  const auto& names = kLightingStageNames;
   const auto found = std::find(names.begin(), names.end(), scene.lighting_stage);
-  return found == names.end() ? lighting::LightingStage::Automatic : static_cast<lighting::LightingStage>(found - names.begin());
+  return found == names.end() ? LightingStage::Automatic : static_cast<LightingStage>(found - names.begin());
 }
 
 assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetManager& assets, assets::LoadReport& report) {
@@ -61,12 +61,12 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
     }
     if (extension == ".json") {
       assets::SceneDescription scene = assets::load_scene_file(options.scene, assets, report, progress);
-      if (!lighting::find_technique(scene.default_mode)) {
+      if (!techniques::find_technique(scene.default_mode)) {
         throw InputError(options.scene + ": /default_mode: unknown mode '" + scene.default_mode + "' (modes: " +
-                         lighting::technique_names() + ")");
+                         techniques::technique_names() + ")");
       }
-      if (!scene.lighting_stage.empty() && std::find(lighting::kLightingStageNames.begin(), lighting::kLightingStageNames.end(),
-                                                     scene.lighting_stage) == lighting::kLightingStageNames.end()) {
+      if (!scene.lighting_stage.empty() && std::find(kLightingStageNames.begin(), kLightingStageNames.end(),
+                                                     scene.lighting_stage) == kLightingStageNames.end()) {
         throw InputError(options.scene + ": /lighting_stage: unknown lighting stage '" + scene.lighting_stage + "' (stages: auto, fragment, compute)");
       }
       if (options.lights) assets::resize_lights(scene, *options.lights);
@@ -123,8 +123,8 @@ void spawn(ecs::Registry& registry, const assets::SceneDescription& scene, std::
 }  // namespace
 
 void require_known_mode(const std::string& mode) {
-  if (lighting::find_technique(mode)) return;
-  throw InputError("unknown mode '" + mode + "' (modes: " + lighting::technique_names() + ")");
+  if (techniques::find_technique(mode)) return;
+  throw InputError("unknown mode '" + mode + "' (modes: " + techniques::technique_names() + ")");
 }
 
 World::World(const WorldOptions& options) {
@@ -142,7 +142,7 @@ World::World(assets::AssetManager assets, assets::SceneDescription scene, const 
 void World::start(const WorldOptions& options) {
   if (options.camera) scene_.views = {*options.camera};
   const auto upload_start = std::chrono::steady_clock::now();
-  auto& gpu = registry_.set_resource<assets::GpuAssets>(options.max_texture_size);
+  auto& gpu = registry_.set_resource<render::GpuAssets>(options.max_texture_size);
   for (std::string& warning : gpu.upload(registry_.resource<assets::AssetManager>())) {
     std::fprintf(stderr, "warning: %s\n", warning.c_str());
     report_.warnings.push_back(std::move(warning));
@@ -159,7 +159,7 @@ void World::start(const WorldOptions& options) {
   for (const auto& [name, value] : scene_.system_options) system_options.set(name, value);
   for (const auto& [name, value] : options.system_options) system_options.set(name, value);
   registry_.set_resource<render::FrameModules>();
-  registry_.set_resource<MeshRenderer>(registry_.resource<assets::GpuAssets>());
+  registry_.set_resource<render::MeshRenderer>(registry_.resource<render::GpuAssets>());
   light_radius_ = options.light_radius;
   spawn(registry_, scene_, light_radius_);
 
@@ -185,8 +185,8 @@ void World::start(const WorldOptions& options) {
   register_frustum_culling(scheduler_);
   register_fireflies(scheduler_, registry_);
   render::register_bloom(registry_);
-  register_light_buffer(scheduler_);
-  register_mesh_renderer(scheduler_);
+  render::register_light_buffer(scheduler_);
+  render::register_mesh_renderer(scheduler_);
 }
 
 void World::frame(double delta_seconds) { scheduler_.run_frame(registry_, delta_seconds); }
@@ -223,9 +223,9 @@ void World::set_light_radius(std::optional<float> radius) {
 std::uint32_t World::light_count() const { return static_cast<std::uint32_t>(scene_.lights.size()); }
 
 std::vector<std::string> World::reload_shaders() {
-  std::vector<std::string> errors = registry_.resource<assets::GpuAssets>().shaders().reload();
+  std::vector<std::string> errors = registry_.resource<render::GpuAssets>().shaders().reload();
   // Programs that were replaced lost the uniforms their technique set once.
-  registry_.resource<MeshRenderer>().recreate_technique();
+  registry_.resource<render::MeshRenderer>().recreate_technique();
   return errors;
 }
 

@@ -33,7 +33,7 @@ struct WorldOptions {
   glm::ivec2 size{1280, 720};
   std::string shading = "pbr";          // a name from render/lighting/shading_model.hpp
   std::string debug_view;               // empty, or a name from render/debug/debug_views.hpp
-  lighting::TechniqueOptions technique_options;
+  TechniqueOptions technique_options;
   // Every point and spot light gets this radius, and the intensity whose derived
   // radius it is (so brightness stays sane); absent: the scene's own.
   std::optional<float> light_radius;
@@ -52,7 +52,7 @@ struct WorldOptions {
   CullingDevice culling_device = CullingDevice::Automatic;
   // --lighting-stage: where full-screen passes run; absent: the scene file's
   // "lighting_stage", else auto (components/technique_options.hpp).
-  std::optional<lighting::LightingStage> lighting_stage;
+  std::optional<LightingStage> lighting_stage;
   // Settings of optional systems by name (components/system_options.hpp),
   // over the scene file's.
   std::map<std::string, double> system_options;
@@ -90,7 +90,7 @@ class World {
   // animation and overlay).
   [[nodiscard]] ecs::Scheduler& scheduler() { return scheduler_; }
   [[nodiscard]] const assets::SceneDescription& scene() const { return scene_; }
-  [[nodiscard]] MeshRenderer& renderer() { return registry_.resource<MeshRenderer>(); }
+  [[nodiscard]] render::MeshRenderer& renderer() { return registry_.resource<render::MeshRenderer>(); }
   [[nodiscard]] const std::string& mode() const;
   [[nodiscard]] int view() const { return view_; }
   // What loading reported: warnings, parse and decode times, images.

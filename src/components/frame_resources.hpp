@@ -50,7 +50,7 @@ struct RendererSettings {
   std::string mode = "forward";
   std::string shading = "pbr";  // pbr, blinn-phong or phong
   std::string debug_view;       // empty, or a name from render/debug/debug_views.hpp
-  lighting::TechniqueOptions technique_options;
+  TechniqueOptions technique_options;
   bool present_to_window = false;  // blit the final image to the default framebuffer
   bool gbuffer_thumbnails = false; // render the overlay's G-buffer thumbnails (G-buffer modes)
   bool frustum_culling = true;     // off: every pass draws the whole scene (--no-culling, for comparisons)

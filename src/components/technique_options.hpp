@@ -10,7 +10,7 @@
 
 #include <glm/glm.hpp>
 
-namespace atrium::lighting {
+namespace atrium {
 
 // Which G-buffer the deferred modes write: the reference's five targets, or two
 // packed targets with position reconstructed from depth (gbuffer.glsl). Thin is
@@ -114,4 +114,4 @@ struct TechniqueOptions {
   bool operator==(const TechniqueOptions&) const = default;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium

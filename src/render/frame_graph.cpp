@@ -11,18 +11,47 @@ namespace {
 // switched off, a size changed): a few, so that toggles do not churn.
 constexpr int kIdleFramesKept = 3;
 
-std::size_t bytes_per_texel(GLenum format) {
-  switch (format) {
-    case GL_R8: case GL_STENCIL_INDEX8: return 1;
-    case GL_RG8: case GL_R16F: case GL_R16UI: return 2;
-    case GL_RGBA8: case GL_SRGB8_ALPHA8: case GL_R32F: case GL_R32UI: case GL_RG16F: case GL_RGB10_A2: case GL_R11F_G11F_B10F:
-    case GL_DEPTH24_STENCIL8: case GL_DEPTH_COMPONENT32F: case GL_RG16UI: return 4;
-    case GL_DEPTH32F_STENCIL8: return 8;  // 32-bit depth, 8-bit stencil, padded as drivers store it
-    case GL_RGBA16F: case GL_RGBA16: case GL_RG32F: case GL_RG32UI: case GL_RGBA16UI: return 8;
-    case GL_RGBA32F: case GL_RGBA32UI: return 16;
-    default: throw std::logic_error("frame graph: no size known for texture format " + std::to_string(format));
+// Every texture format a frame target is made in: its name for listings and
+// its bytes per texel (per sample).
+struct FormatRow {
+  GLenum format;
+  const char* name;
+  std::size_t bytes;
+};
+constexpr FormatRow kFormats[] = {
+    {GL_R8, "R8", 1},
+    {GL_STENCIL_INDEX8, "S8", 1},
+    {GL_RG8, "RG8", 2},
+    {GL_R16F, "R16F", 2},
+    {GL_R16UI, "R16UI", 2},
+    {GL_RGBA8, "RGBA8", 4},
+    {GL_SRGB8_ALPHA8, "SRGB8_A8", 4},
+    {GL_R32F, "R32F", 4},
+    {GL_R32UI, "R32UI", 4},
+    {GL_RG16F, "RG16F", 4},
+    {GL_RGB10_A2, "RGB10_A2", 4},
+    {GL_R11F_G11F_B10F, "R11F_G11F_B10F", 4},
+    {GL_DEPTH24_STENCIL8, "D24S8", 4},
+    {GL_DEPTH_COMPONENT32F, "D32F", 4},
+    {GL_RG16UI, "RG16UI", 4},
+    {GL_DEPTH32F_STENCIL8, "D32FS8", 8},  // 32-bit depth, 8-bit stencil, padded as drivers store it
+    {GL_RGBA16F, "RGBA16F", 8},
+    {GL_RGBA16, "RGBA16", 8},
+    {GL_RG32F, "RG32F", 8},
+    {GL_RG32UI, "RG32UI", 8},
+    {GL_RGBA16UI, "RGBA16UI", 8},
+    {GL_RGBA32F, "RGBA32F", 16},
+    {GL_RGBA32UI, "RGBA32UI", 16},
+};
+
+const FormatRow& format_row(GLenum format) {
+  for (const FormatRow& row : kFormats) {
+    if (row.format == format) return row;
   }
+  throw std::logic_error("frame graph: no size known for texture format " + std::to_string(format));
 }
+
+std::size_t bytes_per_texel(GLenum format) { return format_row(format).bytes; }
 
 bool is_depth(GLenum format) {
   return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8 || format == GL_DEPTH_COMPONENT32F ||
@@ -117,11 +146,11 @@ struct FrameGraph::Pool {
 };
 
 ResourceId PassBuilder::create(const std::string& name, const TextureDesc& desc, ViewKind view) {
-  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Texture, .texture = desc, .view = view}, Access::Attachment);
+  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Texture, .texture = desc, .buffer = {}, .view = view}, Access::Attachment);
 }
 
 ResourceId PassBuilder::create(const std::string& name, const BufferDesc& desc, ViewKind view) {
-  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Buffer, .buffer = desc, .view = view}, Access::Transfer);
+  return graph_.create(pass_, {.name = name, .kind = ResourceKind::Buffer, .texture = {}, .buffer = desc, .view = view}, Access::Transfer);
 }
 
 ResourceId PassBuilder::read(ResourceId resource, Access access) {
@@ -195,11 +224,11 @@ ResourceId FrameGraph::create(std::uint32_t pass, Resource resource, Access firs
 }
 
 ResourceId FrameGraph::import_texture(const std::string& name, GLuint texture, const TextureDesc& desc, ViewKind view) {
-  return {add_resource({.name = name, .kind = ResourceKind::Texture, .texture = desc, .imported = true, .view = view, .object = texture})};
+  return {add_resource({.name = name, .kind = ResourceKind::Texture, .texture = desc, .buffer = {}, .imported = true, .view = view, .object = texture})};
 }
 
 ResourceId FrameGraph::import_buffer(const std::string& name, GLuint buffer, const BufferDesc& desc, ViewKind view) {
-  return {add_resource({.name = name, .kind = ResourceKind::Buffer, .buffer = desc, .imported = true, .view = view, .object = buffer})};
+  return {add_resource({.name = name, .kind = ResourceKind::Buffer, .texture = {}, .buffer = desc, .imported = true, .view = view, .object = buffer})};
 }
 
 void FrameGraph::use(std::uint32_t pass, ResourceId resource, Access access, bool write) {
@@ -226,6 +255,24 @@ void FrameGraph::add_pass(const std::string& name, const Setup& setup, Execute e
 ResourceId FrameGraph::find(const std::string& name) const {
   const auto it = by_name_.find(name);
   return it == by_name_.end() ? ResourceId{} : ResourceId{it->second};
+}
+
+std::string texture_format_name(GLenum format) { return format_row(format).name; }
+
+std::vector<ResourceUse> FrameGraph::used_resources() const {
+  std::vector<ResourceUse> used;
+  for (const Resource& r : resources_) {
+    if (!r.used) continue;
+    ResourceUse use{r.name, r.kind, r.imported, r.kind == ResourceKind::Texture ? texture_bytes(r.texture) : r.buffer.bytes, {}};
+    if (r.kind == ResourceKind::Texture) {
+      use.description = texture_format_name(r.texture.format) + " " + std::to_string(r.texture.size.x) + "x" + std::to_string(r.texture.size.y);
+      if (r.texture.samples > 1) use.description += " x" + std::to_string(r.texture.samples) + " samples";
+    } else {
+      use.description = "buffer";
+    }
+    used.push_back(std::move(use));
+  }
+  return used;
 }
 
 std::vector<ViewableResource> FrameGraph::viewable() const {

@@ -55,6 +55,8 @@ struct BufferDesc {
 
 // Bytes a texture of `desc` holds (every sample, no mip chain).
 [[nodiscard]] std::size_t texture_bytes(const TextureDesc& desc);
+// A texture format's short name for listings ("RGBA16F", "D32FS8").
+[[nodiscard]] std::string texture_format_name(GLenum format);
 
 struct ResourceId {
   static constexpr std::uint32_t kNone = 0xffffffffu;
@@ -141,6 +143,15 @@ struct GraphMemory {
   std::size_t imported_bytes = 0;   // long-lived targets owned outside the graph (depth, HDR colour, output, shadows...)
 };
 
+// One resource a compiled frame uses (info --memory): what it is and what it holds.
+struct ResourceUse {
+  std::string name;
+  ResourceKind kind;
+  bool imported;            // long-lived, owned outside the graph; else transient
+  std::size_t bytes;        // as declared: every sample, no mip chain
+  std::string description;  // "RGBA16F 1280x720 x4 samples", "buffer"
+};
+
 // One pass as compiled: for tests, the overlay and docs.
 struct CompiledPass {
   std::string name;
@@ -202,6 +213,8 @@ class FrameGraph {
 
   [[nodiscard]] const std::vector<CompiledPass>& passes() const { return compiled_; }
   [[nodiscard]] GraphMemory memory() const { return memory_; }
+  // Every resource a pass that runs uses, in the order declared.
+  [[nodiscard]] std::vector<ResourceUse> used_resources() const;
   // The objects the pool holds (transient resources made in earlier frames).
   [[nodiscard]] std::size_t pooled_objects() const;
 

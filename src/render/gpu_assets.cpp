@@ -7,15 +7,15 @@
 #include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 
-namespace atrium::assets {
+namespace atrium::render {
 namespace {
 
 constexpr float kMaxAnisotropy = 8.0f;
 
-gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_t& bytes) {
+gfx::Texture upload_image(const assets::Image& image, assets::ColorSpace color_space, std::size_t& bytes) {
   const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
   gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
-  const GLenum format = color_space == ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  const GLenum format = color_space == assets::ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
   glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
@@ -25,29 +25,29 @@ gfx::Texture upload_image(const Image& image, ColorSpace color_space, std::size_
 }
 
 // The GL format of a block format in a colour space (BC4 and BC5 hold data, never colour).
-GLenum compressed_format(BlockFormat format, ColorSpace space) {
-  const bool srgb = space == ColorSpace::Srgb;
+GLenum compressed_format(assets::BlockFormat format, assets::ColorSpace space) {
+  const bool srgb = space == assets::ColorSpace::Srgb;
   switch (format) {
-    case BlockFormat::BC1: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT : GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
-    case BlockFormat::BC2: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT : GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
-    case BlockFormat::BC3: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
-    case BlockFormat::BC4: return GL_COMPRESSED_RED_RGTC1;
-    case BlockFormat::BC5: return GL_COMPRESSED_RG_RGTC2;
-    case BlockFormat::BC7: return srgb ? GL_COMPRESSED_SRGB_ALPHA_BPTC_UNORM : GL_COMPRESSED_RGBA_BPTC_UNORM;
+    case assets::BlockFormat::BC1: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT1_EXT : GL_COMPRESSED_RGBA_S3TC_DXT1_EXT;
+    case assets::BlockFormat::BC2: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT3_EXT : GL_COMPRESSED_RGBA_S3TC_DXT3_EXT;
+    case assets::BlockFormat::BC3: return srgb ? GL_COMPRESSED_SRGB_ALPHA_S3TC_DXT5_EXT : GL_COMPRESSED_RGBA_S3TC_DXT5_EXT;
+    case assets::BlockFormat::BC4: return GL_COMPRESSED_RED_RGTC1;
+    case assets::BlockFormat::BC5: return GL_COMPRESSED_RG_RGTC2;
+    case assets::BlockFormat::BC7: return srgb ? GL_COMPRESSED_SRGB_ALPHA_BPTC_UNORM : GL_COMPRESSED_RGBA_BPTC_UNORM;
   }
   return GL_NONE;
 }
 
 // RGTC (BC4, BC5) and BPTC (BC7) are core since GL 3.0 and 4.2; S3TC (BC1-BC3)
 // is an extension, with sRGB variants of its own.
-bool compressed_supported(BlockFormat format) {
-  if (format == BlockFormat::BC4 || format == BlockFormat::BC5 || format == BlockFormat::BC7) return true;
+bool compressed_supported(assets::BlockFormat format) {
+  if (format == assets::BlockFormat::BC4 || format == assets::BlockFormat::BC5 || format == assets::BlockFormat::BC7) return true;
   return epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc") &&
          (epoxy_has_gl_extension("GL_EXT_texture_sRGB") || epoxy_has_gl_extension("GL_EXT_texture_compression_s3tc_srgb"));
 }
 
 // Uploads a DDS's levels from `first` on, as they are.
-gfx::Texture upload_compressed(const CompressedImage& image, std::size_t first, ColorSpace space, std::size_t& bytes) {
+gfx::Texture upload_compressed(const assets::CompressedImage& image, std::size_t first, assets::ColorSpace space, std::size_t& bytes) {
   const int levels = static_cast<int>(image.levels.size() - first);
   const GLenum format = compressed_format(image.format, space);
   gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
@@ -60,7 +60,7 @@ gfx::Texture upload_compressed(const CompressedImage& image, std::size_t first, 
     bytes += data.size();
   }
   // One channel of data reads as grey, as a greyscale PNG does.
-  if (image.format == BlockFormat::BC4) {
+  if (image.format == assets::BlockFormat::BC4) {
     const GLint swizzle[] = {GL_RED, GL_RED, GL_RED, GL_ONE};
     glTextureParameteriv(texture.id(), GL_TEXTURE_SWIZZLE_RGBA, swizzle);
   }
@@ -69,17 +69,17 @@ gfx::Texture upload_compressed(const CompressedImage& image, std::size_t first, 
 
 }  // namespace
 
-std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
+std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
   std::vector<std::string> warnings;
   if (!white_) {
-    const Image white{1, 1, {255, 255, 255, 255}};
+    const assets::Image white{1, 1, {255, 255, 255, 255}};
     std::size_t ignored = 0;
-    white_ = upload_image(white, ColorSpace::Linear, ignored);
-    make_sampler(SamplerDesc{});
+    white_ = upload_image(white, assets::ColorSpace::Linear, ignored);
+    make_sampler(assets::SamplerDesc{});
   }
   const int context_limit = gfx::max_texture_size();
   const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
-  auto too_large = [&](std::size_t t, const TextureData& data, glm::ivec2 to) {
+  auto too_large = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 to) {
     return "texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.width()) + "x" + std::to_string(data.height()) +
            ", more than " +
            (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
@@ -88,8 +88,8 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
            std::to_string(to.y);
   };
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
-    const TextureData& data = assets.texture(TextureHandle{static_cast<std::uint32_t>(t)});
-    two_channel_.push_back(data.compressed && data.compressed->format == BlockFormat::BC5);
+    const assets::TextureData& data = assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)});
+    two_channel_.push_back(data.compressed && data.compressed->format == assets::BlockFormat::BC5);
     if (data.compressed) {
       if (compressed_supported(data.compressed->format)) {
         std::size_t first = 0;
@@ -103,15 +103,15 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
         continue;
       }
       std::string error;
-      std::optional<Image> decoded = decode_blocks(*data.compressed, error);
+      std::optional<assets::Image> decoded = assets::decode_blocks(*data.compressed, error);
       if (!decoded) {
         warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
-        textures_.push_back(upload_image(Image{1, 1, {255, 255, 255, 255}}, ColorSpace::Linear, texture_bytes_));
+        textures_.push_back(upload_image(assets::Image{1, 1, {255, 255, 255, 255}}, assets::ColorSpace::Linear, texture_bytes_));
         continue;
       }
-      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + block_format_name(data.compressed->format) +
+      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + assets::block_format_name(data.compressed->format) +
                          ", which this driver cannot sample; it is decoded and uploaded uncompressed");
-      const Image fitted = downscale_to_fit(*decoded, limit, data.color_space == ColorSpace::Srgb);
+      const assets::Image fitted = assets::downscale_to_fit(*decoded, limit, data.color_space == assets::ColorSpace::Srgb);
       textures_.push_back(upload_image(fitted, data.color_space, texture_bytes_));
       continue;
     }
@@ -119,14 +119,14 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
       textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
       continue;
     }
-    const Image smaller = downscale_to_fit(data.image, limit, data.color_space == ColorSpace::Srgb);
+    const assets::Image smaller = assets::downscale_to_fit(data.image, limit, data.color_space == assets::ColorSpace::Srgb);
     warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
     textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
   }
   for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
-    const MeshAsset& asset = assets.mesh_asset(MeshAssetHandle{static_cast<std::uint32_t>(a)});
-    for (const Material& m : asset.materials) {
-      for (const TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
+    const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    for (const assets::Material& m : asset.materials) {
+      for (const assets::TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
     }
     // Every vertex buffer once, primitives as index ranges with the base
     // vertex of the buffer they index: shared vertices stay shared.
@@ -137,20 +137,20 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
       base_vertex[b] = static_cast<std::int32_t>(vertex_total);
       vertex_total += asset.vertex_buffers[b].size();
     }
-    for (const Mesh& mesh : asset.meshes) {
-      for (const Primitive& p : mesh.primitives) index_total += p.indices.size();
+    for (const assets::Mesh& mesh : asset.meshes) {
+      for (const assets::Primitive& p : mesh.primitives) index_total += p.indices.size();
     }
     gpu.vertices = gfx::create_buffer();
     gpu.indices = gfx::create_index_buffer();
-    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(Vertex)), nullptr,
+    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(assets::Vertex)), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
     glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t)), nullptr,
                          GL_DYNAMIC_STORAGE_BIT);
     for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
       const auto& vertices = asset.vertex_buffers[b];
       if (vertices.empty()) continue;
-      glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(Vertex)),
-                           static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)), vertices.data());
+      glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(assets::Vertex)),
+                           static_cast<GLsizeiptr>(vertices.size() * sizeof(assets::Vertex)), vertices.data());
     }
     // Without glDrawElements*BaseVertex (ES 3.0, WebGL2) the indices are
     // stored already offset by their buffer's first vertex, and every range
@@ -158,9 +158,9 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
     const bool offset_indices = !gfx::gl_features().base_vertex;
     std::vector<std::uint32_t> offset;
     std::size_t first_index = 0;
-    for (const Mesh& mesh : asset.meshes) {
+    for (const assets::Mesh& mesh : asset.meshes) {
       auto& ranges = gpu.meshes.emplace_back();
-      for (const Primitive& p : mesh.primitives) {
+      for (const assets::Primitive& p : mesh.primitives) {
         const std::int32_t base = base_vertex.at(p.vertex_buffer);
         ranges.push_back({static_cast<std::uint32_t>(first_index), static_cast<std::uint32_t>(p.indices.size()), offset_indices ? 0 : base});
         const std::uint32_t* indices = p.indices.data();
@@ -180,7 +180,7 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
 
     gpu.vertex_array = gfx::create_vertex_array();
     const GLuint vao = gpu.vertex_array.id();
-    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(Vertex));
+    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(assets::Vertex));
     glVertexArrayElementBuffer(vao, gpu.indices.id());
     struct Attribute {
       GLuint location;
@@ -189,12 +189,12 @@ std::vector<std::string> GpuAssets::upload(const AssetManager& assets) {
       GLboolean normalized;
       std::size_t offset;
     };
-    const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, position)},
-                                    {1, 3, GL_FLOAT, GL_FALSE, offsetof(Vertex, normal)},
-                                    {2, 4, GL_FLOAT, GL_FALSE, offsetof(Vertex, tangent)},
-                                    {3, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv0)},
-                                    {4, 2, GL_FLOAT, GL_FALSE, offsetof(Vertex, uv1)},
-                                    {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(Vertex, color)}};
+    const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, position)},
+                                    {1, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, normal)},
+                                    {2, 4, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, tangent)},
+                                    {3, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv0)},
+                                    {4, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv1)},
+                                    {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(assets::Vertex, color)}};
     for (const auto& attribute : attributes) {
       glEnableVertexArrayAttrib(vao, attribute.location);
       glVertexArrayAttribFormat(vao, attribute.location, attribute.components, attribute.type, attribute.normalized,
@@ -226,19 +226,19 @@ void GpuAssets::reserve_instances(std::size_t count) {
   }
 }
 
-GLuint GpuAssets::sampler(const SamplerDesc& desc) const {
+GLuint GpuAssets::sampler(const assets::SamplerDesc& desc) const {
   auto it = samplers_.find(desc);
-  return it != samplers_.end() ? it->second.id() : samplers_.at(SamplerDesc{}).id();
+  return it != samplers_.end() ? it->second.id() : samplers_.at(assets::SamplerDesc{}).id();
 }
 
-void GpuAssets::make_sampler(const SamplerDesc& desc) {
+void GpuAssets::make_sampler(const assets::SamplerDesc& desc) {
   if (samplers_.contains(desc)) return;
   gfx::Sampler sampler = gfx::create_sampler();
   glSamplerParameteri(sampler.id(), GL_TEXTURE_MAG_FILTER, desc.mag_filter);
   glSamplerParameteri(sampler.id(), GL_TEXTURE_MIN_FILTER, desc.min_filter);
   glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_S, desc.wrap_s);
   glSamplerParameteri(sampler.id(), GL_TEXTURE_WRAP_T, desc.wrap_t);
-  const bool mipmapped = desc.min_filter != SamplerDesc::kNearest && desc.min_filter != SamplerDesc::kLinear;
+  const bool mipmapped = desc.min_filter != assets::SamplerDesc::kNearest && desc.min_filter != assets::SamplerDesc::kLinear;
   // llvmpipe filters anisotropically with an elliptical weighted average that
   // loops over every texel of a pixel's footprint. A leaf seen edge-on right at
   // the camera has a footprint of thousands of texels (its derivatives
@@ -253,12 +253,12 @@ void GpuAssets::make_sampler(const SamplerDesc& desc) {
   samplers_.emplace(desc, std::move(sampler));
 }
 
-bool GpuAssets::two_channel(TextureHandle handle) const {
+bool GpuAssets::two_channel(assets::TextureHandle handle) const {
   return handle.valid() && handle.index < two_channel_.size() && two_channel_[handle.index];
 }
 
-GLuint GpuAssets::texture(TextureHandle handle) const {
+GLuint GpuAssets::texture(assets::TextureHandle handle) const {
   return handle.valid() && handle.index < textures_.size() ? textures_[handle.index].id() : white_.id();
 }
 
-}  // namespace atrium::assets
+}  // namespace atrium::render

@@ -14,7 +14,7 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_library.hpp"
 
-namespace atrium::assets {
+namespace atrium::render {
 
 // The vertex attribute that carries the instance index (see reserve_instances).
 inline constexpr GLuint kInstanceIndexLocation = 6;
@@ -41,26 +41,26 @@ class GpuAssets {
   // Uploads everything the AssetManager holds that is not on the GPU yet and
   // returns a warning for each texture it had to downscale. Needs a current GL
   // 4.5 context.
-  std::vector<std::string> upload(const AssetManager& assets);
+  std::vector<std::string> upload(const assets::AssetManager& assets);
 
-  [[nodiscard]] const GpuMeshAsset& mesh_asset(MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
+  [[nodiscard]] const GpuMeshAsset& mesh_asset(assets::MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
   // Every mesh asset's vertex array feeds attribute kInstanceIndexLocation from
   // one buffer holding 0, 1, 2, ... with a divisor of 1, so an instanced draw
   // with base instance B gives its instances B, B+1, ...: the index of their
   // record in the frame's instance buffer. Grows that buffer to `count`.
   void reserve_instances(std::size_t count);
   // The texture's GL name, or the white default for an empty handle.
-  [[nodiscard]] GLuint texture(TextureHandle handle) const;
+  [[nodiscard]] GLuint texture(assets::TextureHandle handle) const;
   // Whether it holds two channels (BC5): a normal map's z is then rebuilt from x and y.
-  [[nodiscard]] bool two_channel(TextureHandle handle) const;
+  [[nodiscard]] bool two_channel(assets::TextureHandle handle) const;
   // The sampler object for `desc` (made by upload for every material slot).
-  [[nodiscard]] GLuint sampler(const SamplerDesc& desc) const;
+  [[nodiscard]] GLuint sampler(const assets::SamplerDesc& desc) const;
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
   // Shader programs, cached by files and defines.
   [[nodiscard]] gfx::ShaderLibrary& shaders() { return shaders_; }
 
  private:
-  void make_sampler(const SamplerDesc& desc);
+  void make_sampler(const assets::SamplerDesc& desc);
 
   int max_texture_size_;
   std::vector<GpuMeshAsset> mesh_assets_;
@@ -69,9 +69,9 @@ class GpuAssets {
   gfx::Texture white_;
   gfx::Buffer instance_indices_;
   std::size_t instance_capacity_ = 0;
-  std::map<SamplerDesc, gfx::Sampler> samplers_;
+  std::map<assets::SamplerDesc, gfx::Sampler> samplers_;
   gfx::ShaderLibrary shaders_;
   std::size_t texture_bytes_ = 0;
 };
 
-}  // namespace atrium::assets
+}  // namespace atrium::render

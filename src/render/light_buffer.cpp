@@ -17,7 +17,7 @@
 #include "gfx/limits.hpp"
 #include "render/lighting/light_falloff.hpp"
 
-namespace atrium {
+namespace atrium::render {
 namespace {
 
 std::string describe(float value) {
@@ -221,4 +221,4 @@ std::vector<std::uint32_t> directional_lights(std::span<const GpuLight> lights) 
   return indices;
 }
 
-}  // namespace atrium
+}  // namespace atrium::render

@@ -18,7 +18,7 @@
 #include "ecs/scheduler.hpp"
 #include "gfx/gl_object.hpp"
 
-namespace atrium {
+namespace atrium::render {
 
 enum class GpuLightKind : std::uint32_t { Point = 0, Spot = 1, Directional = 2 };
 
@@ -88,4 +88,4 @@ struct GatheredLights {
 
 void register_light_buffer(ecs::Scheduler& scheduler);
 
-}  // namespace atrium
+}  // namespace atrium::render

@@ -20,7 +20,7 @@
 #include "render/shadows/shadow_pass.hpp"
 #include "render/storage_free.hpp"
 
-namespace atrium {
+namespace atrium::render {
 namespace {
 
 void require_msaa(int samples) {
@@ -33,7 +33,7 @@ void require_msaa(int samples) {
 
 // The SPLIT_LIGHTING and MSAA_SAMPLES rows of the shader globals: the
 // renderer's light-sum targets and sample count.
-void target_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+void target_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
   if (inputs.split_lighting) defines.push_back({"SPLIT_LIGHTING"});
   const int samples = inputs.settings.technique_options.msaa;
   if (samples > 1) defines.push_back({"MSAA_SAMPLES", std::to_string(samples)});
@@ -41,13 +41,13 @@ void target_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::S
 
 // Every define shaders are compiled with, each row from the part that needs it
 // (render/shader_globals.hpp), in the order the programs' cache keys list them.
-constexpr render::GlobalDefineRow kGlobalDefines[] = {&lighting::shading_model_defines, &lighting::DebugViews::counting_defines,
+constexpr GlobalDefineRow kGlobalDefines[] = {&lighting::shading_model_defines, &DebugViews::counting_defines,
                                                       &lighting::GBuffer::layout_defines, &target_defines,
-                                                      &shadows::ShadowAtlas::shadow_defines, &render::storage_defines};
+                                                      &shadows::ShadowAtlas::shadow_defines, &storage_defines};
 
 }  // namespace
 
-MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
+MeshRenderer::MeshRenderer(GpuAssets& gpu)
     : frame_uniforms_(gfx::create_buffer()),
       gpu_(gpu),
       draws_(gpu, gpu.shaders()),
@@ -55,17 +55,17 @@ MeshRenderer::MeshRenderer(assets::GpuAssets& gpu)
       debug_(gpu),
       tonemap_(gpu.shaders()),
       loop_limit_(gfx::shader_loop_limit()) {
-  glNamedBufferStorage(frame_uniforms_.id(), sizeof(lighting::FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(frame_uniforms_.id(), sizeof(FrameUniforms), nullptr, GL_DYNAMIC_STORAGE_BIT);
   // The renderer's own modules, in stage order; the technique is the lighting stage.
   modules_ = {draws_.occlusion_module(),
               shadows::shadow_module(shadows_, draws_),
               debug_.counters_module(),
               lighting::light_sums_module(),
-              {render::FrameStage::Lighting, "technique",
-               [this](render::FrameBuild& build) { technique_->add_passes(build.graph, build.frame, build.targets); }, {}},
+              {FrameStage::Lighting, "technique",
+               [this](FrameBuild& build) { technique_->add_passes(build.graph, build.frame, build.targets); }, {}},
               tonemap_.module(),
               debug_.view_module(),
-              render::present_module()};
+              present_module()};
 }
 
 MeshRenderer::~MeshRenderer() = default;
@@ -91,11 +91,11 @@ void MeshRenderer::resize(ecs::Registry& registry, glm::ivec2 size) {
 }
 
 void MeshRenderer::invalidate_modules(ecs::Registry& registry) {
-  for (const render::FrameModule& module : modules_) {
+  for (const FrameModule& module : modules_) {
     if (module.invalidate) module.invalidate();
   }
-  if (const auto* systems = registry.try_resource<render::FrameModules>()) {
-    for (const render::FrameModule& module : systems->modules()) {
+  if (const auto* systems = registry.try_resource<FrameModules>()) {
+    for (const FrameModule& module : systems->modules()) {
       if (module.invalidate) module.invalidate();
     }
   }
@@ -112,10 +112,10 @@ void MeshRenderer::update_split_targets() {
   graph_.forget_imports();
 }
 
-lighting::FrameTargets MeshRenderer::targets() const { return {size_, technique_options_.msaa}; }
+FrameTargets MeshRenderer::targets() const { return {size_, technique_options_.msaa}; }
 
 void MeshRenderer::select_technique(const std::string& mode) {
-  const lighting::TechniqueInfo* info = lighting::find_technique(mode);
+  const techniques::TechniqueInfo* info = techniques::find_technique(mode);
   if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
   technique_.reset();  // release the old technique's targets before the new one allocates
   technique_ = info->create(gpu_, technique_options_);
@@ -128,9 +128,9 @@ void MeshRenderer::recreate_technique() {
   reload_pending_ = true;
 }
 
-void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const {
+void MeshRenderer::refuse_unbounded_loops(const DrawList& draws, std::uint32_t light_count) const {
   if (!loop_limit_ || light_count <= loop_limit_) return;
-  const lighting::LightLoops loops = lighting::find_technique(mode_)->loops_over_every_light;
+  const techniques::LightLoops loops = techniques::find_technique(mode_)->loops_over_every_light;
   const std::string why = loops.opaque                             ? "each pixel loops over every light"
                           : loops.blended && !draws.blended.empty() ? "the scene's blended surfaces are shaded forward over every light"
                                                                     : "";
@@ -141,10 +141,10 @@ void MeshRenderer::refuse_unbounded_loops(const lighting::DrawList& draws, std::
                                 " lights here" + (draws.blended.empty() ? ", or a tiled, clustered or light-volumes mode" : ", or a tiled or clustered mode"));
 }
 
-lighting::DebugViewNeeds MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSettings& settings) {
+DebugViewNeeds MeshRenderer::apply_settings(ecs::Registry& registry, const RendererSettings& settings) {
   // A named view says what it needs before the frame is drawn; a view of a
   // resource by its name needs nothing (it is checked once the graph is built).
-  const lighting::DebugViewNeeds needs = lighting::DebugViewModule::needs(settings.debug_view);
+  const DebugViewNeeds needs = DebugViewModule::needs(settings.debug_view);
   // Refused before any program is compiled for them: a context without image
   // atomics or multisampled textures could not compile those programs.
   if (settings.technique_options.compute_free && (needs.count_lights || needs.count_fragments)) {
@@ -154,7 +154,7 @@ lighting::DebugViewNeeds MeshRenderer::apply_settings(ecs::Registry& registry, c
   require_msaa(settings.technique_options.msaa);
   const bool split_lighting = settings.technique_options.split_lighting || needs.split_lighting;
   std::vector<gfx::ShaderDefine> globals;
-  for (const render::GlobalDefineRow row : kGlobalDefines) row({settings, needs.count_lights, needs.count_fragments, split_lighting}, globals);
+  for (const GlobalDefineRow row : kGlobalDefines) row({settings, needs.count_lights, needs.count_fragments, split_lighting}, globals);
   if (reload_pending_) {
     reload_pending_ = false;
     invalidate_modules(registry);
@@ -179,7 +179,7 @@ void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& 
   const auto& view = registry.resource<ViewState>();
   const auto& scene = registry.resource<SceneSettings>();
   // Both culling paths test with compute shaders: the compute-free tier draws what is in view.
-  render::CullingChoice culling;
+  CullingChoice culling;
   culling.occlusion = settings.frustum_culling && settings.occlusion_culling && !technique_options_.compute_free;
   const CullingDevice device = settings.culling_device != CullingDevice::Automatic ? settings.culling_device
                                : gfx::is_software_renderer()                        ? CullingDevice::Cpu
@@ -194,7 +194,7 @@ void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& 
     frame_stats_.objects_drawn = counts->objects_visible;
   }
 
-  lighting::FrameUniforms uniforms{};
+  FrameUniforms uniforms{};
   uniforms.view = view.view;
   uniforms.projection = view.projection;
   uniforms.view_projection = view.view_projection;
@@ -209,8 +209,8 @@ void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& 
   uniforms.near_plane = view.near_plane;
   uniforms.far_plane = view.far_plane;
   glNamedBufferSubData(frame_uniforms_.id(), 0, sizeof(uniforms), &uniforms);
-  glBindBufferBase(GL_UNIFORM_BUFFER, lighting::kFrameUniformBinding, frame_uniforms_.id());
-  if (!technique_options_.compute_free) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kLightStorageBinding, lights.buffer.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kFrameUniformBinding, frame_uniforms_.id());
+  if (!technique_options_.compute_free) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightStorageBinding, lights.buffer.id());
   // Chooses the shadowed lights and moves them to the front of the light
   // buffer, before anything reads it; their maps are drawn by the graph.
   shadows_.set_compute_free(technique_options_.compute_free);
@@ -221,44 +221,47 @@ void MeshRenderer::begin_frame(ecs::Registry& registry, const RendererSettings& 
   refuse_unbounded_loops(draws_.list(), lights.count);
 }
 
-lighting::FrameContext MeshRenderer::import_targets(ecs::Registry& registry, const LightBuffer& lights) {
+FrameContext MeshRenderer::import_targets(ecs::Registry& registry, const LightBuffer& lights) {
   const int samples = technique_options_.msaa;
   const auto& view = registry.resource<ViewState>();
   graph_.import_texture("output", output_color_.id(), {GL_RGBA8, size_, 1});
-  lighting::FrameContext frame{draws_.list(),
-                               draws_.commands(),
-                               [this, &registry](const lighting::BatchDrawer& draw) { draws_.draw_first_pass(registry, draw, depth_stencil_.id(), size_); },
-                               gpu_,
-                               lights.staging,
-                               registry.resource<SceneSettings>().background,
-                               graph_.import_texture("depth", depth_stencil_.id(), {gfx::kDepthStencilFormat, size_, samples}, render::ViewKind::Depth),
-                               graph_.import_texture("hdr", hdr_color_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color),
-                               graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)}),
-                               view.view,
-                               view.projection,
-                               view.near_plane,
-                               view.far_plane};
+  const ResourceId depth = graph_.import_texture("depth", depth_stencil_.id(), {gfx::kDepthStencilFormat, size_, samples}, ViewKind::Depth);
+  FrameContext frame{draws_,
+                     [this, &registry, depth](const PassResources& res, const BatchDrawer& draw) {
+                       draws_.draw_first_pass(registry, draw, res.texture(depth), size_);
+                     },
+                     gpu_,
+                     lights.staging,
+                     registry.resource<SceneSettings>().background,
+                     depth,
+                     graph_.import_texture("hdr", hdr_color_.id(), {GL_RGBA16F, size_, samples}, ViewKind::Color),
+                     graph_.import_buffer("lights", lights.buffer.id(), {static_cast<std::size_t>(lights.count) * sizeof(GpuLight)}),
+                     view.view,
+                     view.projection,
+                     view.near_plane,
+                     view.far_plane};
+  frame.draw_buffers = draws_.import_into(graph_);
   if (split_lighting_) {
-    frame.diffuse_light = graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color);
-    frame.specular_light = graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples}, render::ViewKind::Color);
+    frame.diffuse_light = graph_.import_texture("diffuse-light", diffuse_light_.id(), {GL_RGBA16F, size_, samples}, ViewKind::Color);
+    frame.specular_light = graph_.import_texture("specular-light", specular_light_.id(), {GL_RGBA16F, size_, samples}, ViewKind::Color);
   }
   if (shadows_.texture() != 0 && registry.resource<RendererSettings>().shadows > 0) {
     frame.shadow_atlas = graph_.import_texture("shadow-atlas", shadows_.texture(),
                                                {shadows::ShadowAtlas::kAtlasFormat, glm::ivec2(frame_stats_.shadows.atlas_size), 1},
-                                               render::ViewKind::ShadowAtlas);
+                                               ViewKind::ShadowAtlas);
   }
   return frame;
 }
 
-void MeshRenderer::add_modules(render::FrameBuild& build) {
-  const auto* systems = build.registry.try_resource<render::FrameModules>();
-  for (std::size_t stage = 0; stage < render::kFrameStageNames.size(); ++stage) {
-    const auto in_stage = [&](const render::FrameModule& module) { return module.stage == static_cast<render::FrameStage>(stage); };
-    for (const render::FrameModule& module : modules_) {
+void MeshRenderer::add_modules(FrameBuild& build) {
+  const auto* systems = build.registry.try_resource<FrameModules>();
+  for (std::size_t stage = 0; stage < kFrameStageNames.size(); ++stage) {
+    const auto in_stage = [&](const FrameModule& module) { return module.stage == static_cast<FrameStage>(stage); };
+    for (const FrameModule& module : modules_) {
       if (in_stage(module)) module.add_passes(build);
     }
     if (!systems) continue;
-    for (const render::FrameModule& module : systems->modules()) {
+    for (const FrameModule& module : systems->modules()) {
       if (in_stage(module)) module.add_passes(build);
     }
   }
@@ -270,16 +273,16 @@ void MeshRenderer::render(ecs::Registry& registry) {
   const std::uint64_t waits_at_start = gfx::gpu_waits();
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
-  const lighting::DebugViewNeeds needs = apply_settings(registry, settings);
+  const DebugViewNeeds needs = apply_settings(registry, settings);
   if (size != size_) resize(registry, size);
   if (!technique_ || settings.mode != mode_) select_technique(settings.mode);
   auto& lights = registry.resource<LightBuffer>();
   begin_frame(registry, settings, lights);
 
   graph_.reset();
-  const lighting::FrameContext frame = import_targets(registry, lights);
-  const lighting::FrameTargets frame_targets = targets();
-  render::FrameBuild build{graph_, registry, frame, frame_targets, frame.scene_color, graph_.find("output")};
+  const FrameContext frame = import_targets(registry, lights);
+  const FrameTargets frame_targets = targets();
+  FrameBuild build{graph_, registry, frame, frame_targets, frame.scene_color, graph_.find("output")};
   add_modules(build);
   graph_.compile();
 
@@ -305,8 +308,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
 }
 
 bool MeshRenderer::offers(std::string_view view) const {
-  const std::vector<lighting::OfferedView>& offered = offered_views();
-  return std::any_of(offered.begin(), offered.end(), [&](const lighting::OfferedView& v) { return v.name == view; });
+  const std::vector<OfferedView>& offered = offered_views();
+  return std::any_of(offered.begin(), offered.end(), [&](const OfferedView& v) { return v.name == view; });
 }
 
 void MeshRenderer::settle() {
@@ -316,7 +319,7 @@ void MeshRenderer::settle() {
 }
 
 void MeshRenderer::take_reports(FrameStats& stats) {
-  for (const lighting::DebugViews::CountAverage& average : debug_.take_averages()) {
+  for (const DebugViews::CountAverage& average : debug_.take_averages()) {
     (average.fragments ? fragment_average_ : light_average_) = average.per_pixel;
   }
   if (counted_lights_) stats.light_evaluations_per_pixel = light_average_;
@@ -329,7 +332,7 @@ void MeshRenderer::take_reports(FrameStats& stats) {
     }
   }
   if (!technique_) return;
-  const lighting::LightingTechnique::ListStats lists = technique_->light_lists();
+  const techniques::LightingTechnique::ListStats lists = technique_->light_lists();
   stats.light_list_entries = lists.entries;
   stats.light_list_overflows = lists.overflowed_frames;
   stats.light_assignment = lists.assignment;
@@ -409,4 +412,4 @@ void register_mesh_renderer(ecs::Scheduler& scheduler) {
                 [](ecs::Registry& registry) { registry.resource<MeshRenderer>().render(registry); });
 }
 
-}  // namespace atrium
+}  // namespace atrium::render

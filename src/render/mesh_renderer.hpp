@@ -27,7 +27,7 @@
 #include "render/shadows/shadow_atlas.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium {
+namespace atrium::render {
 
 struct FrameStats {
   std::size_t draw_calls = 0;       // multi-draws one geometry pass issues (opaque and blended)
@@ -36,7 +36,7 @@ struct FrameStats {
   std::size_t triangles_occluded = 0;  // in view, but hidden behind what the first pass drew
   bool culled_on_gpu = false;       // occlusion culling ran on the GPU: the two counts above arrive a frame or more late
   // Where the full-screen passes ran (--lighting-stage resolved): Fragment or Compute.
-  lighting::LightingStage lighting_stage = lighting::LightingStage::Fragment;
+  LightingStage lighting_stage = LightingStage::Fragment;
   std::size_t objects = 0;          // entities with a mesh
   std::size_t objects_drawn = 0;    // of which the camera sees some primitive
   std::uint32_t lights = 0;
@@ -46,7 +46,7 @@ struct FrameStats {
   double fragments_per_pixel = 0.0;          // rasterised by geometry passes
   std::uint32_t light_list_entries = 0;      // tiled and clustered modes
   std::uint32_t light_list_overflows = 0;    // frames whose lists did not fit (counted as their totals arrive)
-  lighting::LightAssignment light_assignment = lighting::LightAssignment::Automatic;  // the latest frame's (light_assignment_label)
+  LightAssignment light_assignment = LightAssignment::Automatic;  // the latest frame's (light_assignment_label)
   double light_list_density = 0.0;  // what the choice of assignment went by (LightIndexList::last_density)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
   std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
@@ -54,7 +54,7 @@ struct FrameStats {
 
 class MeshRenderer {
  public:
-  explicit MeshRenderer(assets::GpuAssets& gpu);
+  explicit MeshRenderer(GpuAssets& gpu);
   ~MeshRenderer();
 
   // Renders one frame of the registry's world. Throws std::invalid_argument for
@@ -80,7 +80,7 @@ class MeshRenderer {
 
   [[nodiscard]] const std::string& mode() const { return mode_; }
   // The technique that drew the last frame (tests and tools inspect it).
-  [[nodiscard]] const lighting::LightingTechnique* technique() const { return technique_.get(); }
+  [[nodiscard]] const techniques::LightingTechnique* technique() const { return technique_.get(); }
   // The G-buffer thumbnails of the last frame (see DebugViews::draw_thumbnails),
   // 0 when the frame drew none (setting off, or a forward mode).
   [[nodiscard]] GLuint gbuffer_thumbnails() const { return debug_.thumbnails(); }
@@ -93,15 +93,15 @@ class MeshRenderer {
   [[nodiscard]] gfx::PassTimer& timer() { return timer_; }
   // The debug views the last frame's graph offered (its technique's and
   // modules' passes made what they show), and whether it offered `view`.
-  [[nodiscard]] const std::vector<lighting::OfferedView>& offered_views() const { return debug_.offered_views(); }
+  [[nodiscard]] const std::vector<OfferedView>& offered_views() const { return debug_.offered_views(); }
   [[nodiscard]] bool offers(std::string_view view) const;
   // The last frame's graph: its passes, resources and render-target memory.
-  [[nodiscard]] const render::FrameGraph& graph() const { return graph_; }
+  [[nodiscard]] const FrameGraph& graph() const { return graph_; }
   // The shadow maps of the last frame (RendererSettings::shadows).
   [[nodiscard]] const shadows::ShadowAtlas& shadow_atlas() const { return shadows_; }
   // The renderer's own modules, stage by stage (the frame runs each stage's
   // own modules, then the systems' of that stage: render/frame/frame_modules.hpp).
-  [[nodiscard]] const std::vector<render::FrameModule>& own_modules() const { return modules_; }
+  [[nodiscard]] const std::vector<FrameModule>& own_modules() const { return modules_; }
 
   // Drops the technique and every module's programs; the next frame makes
   // them again from the shader library (after a shader reload).
@@ -114,7 +114,7 @@ class MeshRenderer {
   // Compiles programs with the settings' global defines; on a change drops
   // the technique and calls every module's invalidate hook. Returns what the
   // shown debug view asks of the frame.
-  lighting::DebugViewNeeds apply_settings(ecs::Registry& registry, const RendererSettings& settings);
+  DebugViewNeeds apply_settings(ecs::Registry& registry, const RendererSettings& settings);
   void resize(ecs::Registry& registry, glm::ivec2 size);
   // Makes the diffuse and specular light targets while split_lighting_ is
   // on, drops them while it is off.
@@ -123,37 +123,37 @@ class MeshRenderer {
   // The frame's draws, uniforms and shadow choice, before the graph is built.
   void begin_frame(ecs::Registry& registry, const RendererSettings& settings, LightBuffer& lights);
   // The renderer's long-lived targets in the graph, as the frame's context.
-  [[nodiscard]] lighting::FrameContext import_targets(ecs::Registry& registry, const LightBuffer& lights);
+  [[nodiscard]] FrameContext import_targets(ecs::Registry& registry, const LightBuffer& lights);
   // Every module's passes, stage by stage.
-  void add_modules(render::FrameBuild& build);
+  void add_modules(FrameBuild& build);
   // Takes what the GPU reported a frame or more late and has arrived into
   // `stats`: the counters' averages (DebugViews::take_averages) for the views
   // the last frame counted, and the light lists' totals. Never waits.
   void take_reports(FrameStats& stats);
   void select_technique(const std::string& mode);
-  [[nodiscard]] lighting::FrameTargets targets() const;
+  [[nodiscard]] FrameTargets targets() const;
   // Throws gfx::ResourceLimitError when the driver limits shader loops and a
   // pixel of this frame would loop over more lights than that limit.
-  void refuse_unbounded_loops(const lighting::DrawList& draws, std::uint32_t light_count) const;
+  void refuse_unbounded_loops(const DrawList& draws, std::uint32_t light_count) const;
 
   glm::ivec2 size_{0};
   std::string mode_;
-  lighting::TechniqueOptions technique_options_;
+  TechniqueOptions technique_options_;
   std::vector<gfx::ShaderDefine> globals_;  // what every program is compiled with (render/shader_globals.hpp)
   bool split_lighting_ = false;  // the light-sum targets exist (shaders compiled with SPLIT_LIGHTING)
   bool reload_pending_ = false;  // recreate_technique(): the next frame calls every module's invalidate hook
-  std::unique_ptr<lighting::LightingTechnique> technique_;
+  std::unique_ptr<techniques::LightingTechnique> technique_;
   gfx::Texture hdr_color_;
   gfx::Texture depth_stencil_;
   gfx::Texture diffuse_light_, specular_light_;  // with the split on (split_lighting_)
   gfx::Texture output_color_;
   gfx::Buffer frame_uniforms_;
-  assets::GpuAssets& gpu_;
-  render::FrameDraws draws_;
+  GpuAssets& gpu_;
+  FrameDraws draws_;
   shadows::ShadowAtlas shadows_;
-  lighting::DebugViewModule debug_;
-  render::TonemapPass tonemap_;
-  std::vector<render::FrameModule> modules_;  // the renderer's own, in stage order
+  DebugViewModule debug_;
+  TonemapPass tonemap_;
+  std::vector<FrameModule> modules_;  // the renderer's own, in stage order
   FrameStats stats_;        // the last complete frame's (what passes of this frame, like the overlay, show)
   FrameStats frame_stats_;  // the frame being drawn
   // The heatmap's and the fragments view's newest averages (they arrive a
@@ -161,7 +161,7 @@ class MeshRenderer {
   double light_average_ = 0.0, fragment_average_ = 0.0;
   bool counted_lights_ = false, counted_fragments_ = false;
   gfx::PassTimer timer_;
-  render::FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
+  FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
   glm::vec2 planes_{0.05f, 200.0f};  // the last frame's near and far planes
 };
@@ -171,4 +171,4 @@ class MeshRenderer {
 // and a MeshRenderer (constructed with a current GL context).
 void register_mesh_renderer(ecs::Scheduler& scheduler);
 
-}  // namespace atrium
+}  // namespace atrium::render

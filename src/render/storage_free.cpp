@@ -18,10 +18,10 @@ void storage_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDe
   if (inputs.settings.technique_options.compute_free) defines.push_back({"NO_STORAGE_BUFFERS"});
 }
 
-std::vector<glm::vec4> instance_texels(std::span<const lighting::InstanceData> instances) {
+std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances) {
   std::vector<glm::vec4> texels;
   texels.reserve(instances.size() * kInstanceTexels);
-  for (const lighting::InstanceData& instance : instances) {
+  for (const InstanceData& instance : instances) {
     for (int c = 0; c < 4; ++c) texels.push_back(instance.model[c]);
     for (int c = 0; c < 4; ++c) texels.push_back(instance.normal_matrix[c]);
     texels.emplace_back(glm::vec4(instance.material));
@@ -29,10 +29,10 @@ std::vector<glm::vec4> instance_texels(std::span<const lighting::InstanceData> i
   return texels;
 }
 
-std::vector<glm::vec4> material_texels(std::span<const lighting::MaterialData> materials) {
+std::vector<glm::vec4> material_texels(std::span<const MaterialData> materials) {
   std::vector<glm::vec4> texels;
   texels.reserve(materials.size() * kMaterialTexels);
-  for (const lighting::MaterialData& m : materials) {
+  for (const MaterialData& m : materials) {
     texels.push_back(m.base_color_factor);
     texels.push_back(m.emissive);
     texels.emplace_back(m.metallic_factor, m.roughness_factor, m.occlusion_strength, m.alpha_cutoff);
@@ -76,7 +76,7 @@ void ListTextures::bind() const {
   indices_.bind(kLightIndexTextureUnit);
 }
 
-void StorageFreeRecords::upload(std::span<const GpuLight> lights, const lighting::DrawList& draws) {
+void StorageFreeRecords::upload(std::span<const GpuLight> lights, const DrawList& draws) {
   lights_.upload(std::span<const glm::vec4>(reinterpret_cast<const glm::vec4*>(lights.data()), lights.size() * kLightTexels));
   instances_.upload(instance_texels(draws.instances));
   materials_.upload(material_texels(draws.materials));

@@ -36,12 +36,12 @@ inline constexpr std::uint32_t kInstanceTexels = 9, kInstancesPerRow = 227;
 inline constexpr std::uint32_t kMaterialTexels = 14, kMaterialsPerRow = 146;
 inline constexpr std::uint32_t kShadowViewTexels = 6, kShadowViewsPerRow = 341;  // common/shadows.glsl
 static_assert(sizeof(GpuLight) == kLightTexels * sizeof(glm::vec4), "a light is 4 texels (common/lights.glsl)");
-static_assert(sizeof(lighting::InstanceData) == kInstanceTexels * sizeof(glm::vec4), "an instance is 9 texels (common/mesh.vert)");
-static_assert(sizeof(lighting::MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a material is 14 texels (common/material_table.glsl)");
+static_assert(sizeof(InstanceData) == kInstanceTexels * sizeof(glm::vec4), "an instance is 9 texels (common/mesh.vert)");
+static_assert(sizeof(MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a material is 14 texels (common/material_table.glsl)");
 
 // The texels of each record, in the shaders' order.
-[[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const lighting::InstanceData> instances);
-[[nodiscard]] std::vector<glm::vec4> material_texels(std::span<const lighting::MaterialData> materials);
+[[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances);
+[[nodiscard]] std::vector<glm::vec4> material_texels(std::span<const MaterialData> materials);
 
 // Texels in a record-texture format: the shaders' float records (RGBA32F)
 // and the light lists' ranges (RG32UI) and indices (R32UI).
@@ -94,7 +94,7 @@ class ListTextures {
 // The frame's records as textures, bound for every pass of the frame.
 class StorageFreeRecords {
  public:
-  void upload(std::span<const GpuLight> lights, const lighting::DrawList& draws);
+  void upload(std::span<const GpuLight> lights, const DrawList& draws);
   void bind() const;
 
  private:

@@ -71,7 +71,7 @@ class Overlay {
  private:
   void statistics(ecs::Registry& registry);
   void controls(ecs::Registry& registry);
-  void thumbnails(const MeshRenderer& renderer);
+  void thumbnails(const render::MeshRenderer& renderer);
 
   double fps_ = 0.0, frame_ms_ = 0.0, window_seconds_ = 0.0;
   int window_frames_ = 0;
@@ -123,8 +123,8 @@ void Overlay::statistics(ecs::Registry& registry) {
     memory_bytes_ = gfx::estimated_gpu_memory_bytes();
     memory_age_ = 0.0;
   }
-  const MeshRenderer& renderer = registry.resource<MeshRenderer>();
-  const FrameStats& stats = renderer.stats();
+  const render::MeshRenderer& renderer = registry.resource<render::MeshRenderer>();
+  const render::FrameStats& stats = renderer.stats();
   const RendererSettings& settings = registry.resource<RendererSettings>();
   ImGui::Text("%.1f fps, %.2f ms per frame", fps_, frame_ms_);
   ImGui::Text("mode %s, shading %s", settings.mode.c_str(), settings.shading.c_str());
@@ -135,10 +135,10 @@ void Overlay::statistics(ecs::Registry& registry) {
     ImGui::Text("%zu triangles in view hidden by depth, not drawn (tested on the %s)", stats.triangles_occluded,
                 stats.culled_on_gpu ? "GPU" : "CPU");
   }
-  ImGui::Text("full-screen passes in the %s stage", std::string(lighting::kLightingStageNames[static_cast<std::size_t>(stats.lighting_stage)]).c_str());
+  ImGui::Text("full-screen passes in the %s stage", std::string(kLightingStageNames[static_cast<std::size_t>(stats.lighting_stage)]).c_str());
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries (%s, density %.4f), %u overflowed frames", stats.light_list_entries,
-                std::string(lighting::light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density,
+                std::string(light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density,
                 stats.light_list_overflows);
   }
   if (stats.shadows.atlas_size > 0) {
@@ -182,10 +182,10 @@ void Overlay::statistics(ecs::Registry& registry) {
 void Overlay::controls(ecs::Registry& registry) {
   auto& settings = registry.resource<RendererSettings>();
   auto& requests = registry.resource<DemoRequests>();
-  const std::vector<std::string> modes = lighting::mode_names();
+  const std::vector<std::string> modes = techniques::mode_names();
   std::vector<std::string> models, views{"(none)"};
   for (const auto name : lighting::kShadingModels) models.emplace_back(name);
-  for (const lighting::OfferedView& view : registry.resource<MeshRenderer>().offered_views()) views.push_back(view.name);
+  for (const render::OfferedView& view : registry.resource<render::MeshRenderer>().offered_views()) views.push_back(view.name);
   ImGui::PushItemWidth(220);
   std::string chosen;
   if (combo("mode", settings.mode, modes, chosen)) requests.mode = chosen;
@@ -193,11 +193,11 @@ void Overlay::controls(ecs::Registry& registry) {
   if (combo("debug view", settings.debug_view.empty() ? views[0] : settings.debug_view, views, chosen)) {
     settings.debug_view = chosen == views[0] ? "" : chosen;
   }
-  enum_combo("z slicing", lighting::kZSlicingNames, settings.technique_options.z_slicing);
+  enum_combo("z slicing", kZSlicingNames, settings.technique_options.z_slicing);
   // Where the full-screen passes run, and how light lists are built: the same
   // pictures either way; the pass table shows what each costs.
-  enum_combo("lighting stage", lighting::kLightingStageNames, settings.technique_options.lighting_stage);
-  enum_combo("light assignment", lighting::kLightAssignmentNames, settings.technique_options.light_assignment);
+  enum_combo("lighting stage", kLightingStageNames, settings.technique_options.lighting_stage);
+  enum_combo("light assignment", kLightAssignmentNames, settings.technique_options.light_assignment);
   std::vector<std::string> sample_counts{"off"};
   for (int samples = 2; samples <= max_msaa_samples_; samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
   int& msaa = settings.technique_options.msaa;
@@ -222,7 +222,7 @@ void Overlay::controls(ecs::Registry& registry) {
   }
   // K of --shadows: the lights that matter most get maps; 0 turns shadows off.
   ImGui::SliderInt("shadowed lights", &settings.shadows, 0, 256, "%d", ImGuiSliderFlags_Logarithmic);
-  int lights = static_cast<int>(registry.resource<MeshRenderer>().stats().lights);
+  int lights = static_cast<int>(registry.resource<render::MeshRenderer>().stats().lights);
   if (ImGui::InputInt("lights", &lights, 16, 256, ImGuiInputTextFlags_EnterReturnsTrue)) {
     requests.light_count = static_cast<std::uint32_t>(std::clamp(lights, 0, static_cast<int>(kMaxLights)));
   }
@@ -252,13 +252,13 @@ void Overlay::controls(ecs::Registry& registry) {
   ImGui::PopItemWidth();
 }
 
-void Overlay::thumbnails(const MeshRenderer& renderer) {
+void Overlay::thumbnails(const render::MeshRenderer& renderer) {
   const GLuint texture = renderer.gbuffer_thumbnails();
   if (texture == 0) {
     ImGui::TextUnformatted("(this mode has no G-buffer)");
     return;
   }
-  using lighting::DebugViews;
+  using render::DebugViews;
   const glm::ivec2 cell = renderer.thumbnail_size();
   constexpr int kRows = DebugViews::kThumbnailCount / DebugViews::kThumbnailColumns;
   // The cells share the panel's width, however many columns there are.
@@ -296,7 +296,7 @@ void Overlay::draw(ecs::Registry& registry) {
   if (ImGui::Begin("Atrium (F1 hides, h for keys)")) {
     statistics(registry);
     if (ImGui::CollapsingHeader("controls", ImGuiTreeNodeFlags_DefaultOpen)) controls(registry);
-    if (ImGui::CollapsingHeader("G-buffer", ImGuiTreeNodeFlags_DefaultOpen)) thumbnails(registry.resource<MeshRenderer>());
+    if (ImGui::CollapsingHeader("G-buffer", ImGuiTreeNodeFlags_DefaultOpen)) thumbnails(registry.resource<render::MeshRenderer>());
     if (!state.message.empty() && ImGui::CollapsingHeader("messages", ImGuiTreeNodeFlags_DefaultOpen)) {
       ImGui::TextUnformatted(state.message.c_str());
     }

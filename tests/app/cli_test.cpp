@@ -45,7 +45,7 @@ TEST(Cli, ParsesRenderWithEveryOption) {
 
 TEST(Cli, HelpWinsAndListsEveryMode) {
   EXPECT_EQ(parse({"--lights", "3", "--help"}).command, Command::Help);
-  for (const auto& info : lighting::technique_table()) {
+  for (const auto& info : techniques::technique_table()) {
     EXPECT_NE(help_text().find("  " + std::string(info.name) + " "), std::string::npos) << info.name;
   }
 }
@@ -77,7 +77,6 @@ TEST(Cli, TakesTheGnuFormAndTheLastOfARepeatedOption) {
 // --cluster-grid: tiles in pixels (NpxxZ, Npx) or clusters per axis (XxYxZ);
 // a pixel grid follows the frame's size, with at least 16x9 tiles and at most 2^18 clusters.
 TEST(Cli, ClusterGridsInPixelsOrPerAxis) {
-  using lighting::ClusterGridSize;
   EXPECT_EQ(parse({"render", "--out", "x.png"}).technique_options.cluster_grid, ClusterGridSize::pixels(24, 32));
   EXPECT_EQ(parse({"render", "--out", "x.png", "--cluster-grid", "40pxx12"}).technique_options.cluster_grid, ClusterGridSize::pixels(40, 12));
   EXPECT_EQ(parse({"render", "--out", "x.png", "--cluster-grid", "16px"}).technique_options.cluster_grid, ClusterGridSize::pixels(16, 32));

@@ -36,7 +36,7 @@ WorldOptions tier_options(const std::string& scene, bool compute_free) {
 // What `world` compiled for the tier: no storage blocks, no compute stage.
 void expect_storage_free_programs(World& world) {
   std::size_t tier_programs = 0;
-  world.registry().resource<assets::GpuAssets>().shaders().for_each(
+  world.registry().resource<render::GpuAssets>().shaders().for_each(
       [&](const std::vector<std::string>& files, const std::vector<gfx::ShaderDefine>& defines, const gfx::ShaderProgram& program) {
         if (std::find_if(defines.begin(), defines.end(), [](const gfx::ShaderDefine& d) { return d.name == "NO_STORAGE_BUFFERS"; }) ==
             defines.end()) {
@@ -60,7 +60,7 @@ void expect_tier_matches_full(const std::string& scene, int samples = 1, int sha
   World full(full_options);
   World free(free_options);
   std::size_t compared = 0;
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
     full.set_mode(std::string(info.name));
     free.set_mode(std::string(info.name));
     const int view_count = views > 0 ? views : static_cast<int>(full.scene().views.size());
@@ -74,7 +74,7 @@ void expect_tier_matches_full(const std::string& scene, int samples = 1, int sha
       ++compared;
     }
   }
-  EXPECT_EQ(compared, lighting::technique_table().size() * static_cast<std::size_t>(views > 0 ? views : static_cast<int>(full.scene().views.size())));
+  EXPECT_EQ(compared, techniques::technique_table().size() * static_cast<std::size_t>(views > 0 ? views : static_cast<int>(full.scene().views.size())));
   expect_storage_free_programs(free);
 }
 
@@ -114,7 +114,7 @@ TEST_F(ComputeFreeTier, CountingViewsSayTheyNeedImageAtomicsInOneLineAndAreNotOf
   }
   world.registry().resource<RendererSettings>().debug_view = "";
   world.frame(0.0);
-  for (const lighting::OfferedView& view : world.renderer().offered_views()) {
+  for (const render::OfferedView& view : world.renderer().offered_views()) {
     EXPECT_NE(view.name, "heatmap") << "a view the tier refuses is not offered";
     EXPECT_NE(view.name, "fragments") << "a view the tier refuses is not offered";
   }

@@ -61,7 +61,7 @@ fs::path reference_path(const Case& c, std::string_view mode, int view) {
 template <typename Draw>
 void each_picture(const Case& c, Draw draw) {
   World world(options_for(c));
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
     world.set_mode(std::string(info.name));
     for (int view = 1; view <= static_cast<int>(world.scene().views.size()); ++view) {
       world.set_view(view);
@@ -109,7 +109,7 @@ class ContextTier : public testing::GlTest {
           << mode << ", view " << view << " on " << gfx::gl_features().api_name();
       ++compared;
     });
-    EXPECT_GE(compared, lighting::technique_table().size());
+    EXPECT_GE(compared, techniques::technique_table().size());
   }
 };
 

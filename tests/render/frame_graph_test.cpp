@@ -82,6 +82,15 @@ TEST_F(FrameGraphTest, TargetsThatNeverLiveTogetherShareOneObject) {
   EXPECT_EQ(graph.memory().transient_bytes, 3 * one);
   EXPECT_EQ(graph.memory().aliased_bytes, 2 * one);
   EXPECT_EQ(graph.memory().imported_bytes, one);
+  // The listing names each of them (info --memory), in the order declared.
+  const std::vector<ResourceUse> used = graph.used_resources();
+  ASSERT_EQ(used.size(), 4u);
+  EXPECT_EQ(used[0].name, "output");
+  EXPECT_TRUE(used[0].imported);
+  EXPECT_EQ(used[1].name, "a");
+  EXPECT_FALSE(used[1].imported);
+  EXPECT_EQ(used[1].bytes, one);
+  EXPECT_EQ(used[1].description, "RGBA8 64x32");
 }
 
 TEST_F(FrameGraphTest, ObjectsArePooledFromFrameToFrame) {

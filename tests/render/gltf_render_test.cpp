@@ -117,7 +117,7 @@ TEST_F(GltfRender, UnlitSurfacesDrawTheirBaseColourTimesVertexColourInEveryModeA
   std::uint8_t expected[3];
   for (int c = 0; c < 3; ++c) expected[c] = static_cast<std::uint8_t>(std::lround(testing::reference_tonemap_to_srgb(centre_colour[c]) * 255.0));
   for (const std::string& shading : {"pbr", "blinn-phong", "phong"}) {
-    for (const std::string& mode : lighting::mode_names()) {
+    for (const std::string& mode : techniques::mode_names()) {
       for (const auto layout : testing::gbuffer_layouts()) {
         assets::AssetManager manager;
         assets::SceneDescription scene = coloured_quad(manager, true, base);
@@ -175,7 +175,7 @@ TEST_F(GltfRender, AModelFromOneCentimetreToTenKilometresDrawsTheSamePictureInEv
     EXPECT_GT(covered, kSize.x * kSize.y / 10) << "view " << v + 1 << " shows the knot";
   }
   for (const double scale : {0.0002, 0.01, 200.0, 1000.0}) {
-    for (const std::string& mode : lighting::mode_names()) {
+    for (const std::string& mode : techniques::mode_names()) {
       const auto images = scaled_knot(scale, mode);
       for (std::size_t v = 0; v < images.size(); ++v) {
         assets::write_png("gltf_scaled_knot_" + std::to_string(scale) + "_" + mode + "_view" + std::to_string(v + 1) + ".png", images[v]);

@@ -23,7 +23,7 @@ WorldOptions options(const std::string& scene, int max_texture_size = 0) {
 }
 
 glm::ivec2 uploaded_size(World& world) {
-  const GLuint texture = world.registry().resource<assets::GpuAssets>().texture(assets::TextureHandle{0});
+  const GLuint texture = world.registry().resource<render::GpuAssets>().texture(assets::TextureHandle{0});
   glm::ivec2 size{0};
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &size.x);
   glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &size.y);

@@ -44,7 +44,7 @@ std::uint32_t waits_after_warm_up(World& world) {
 }
 
 TEST_F(GpuWaits, NoSteadyFrameWaitsInAnyMode) {
-  for (const std::string& mode : lighting::mode_names()) {
+  for (const std::string& mode : techniques::mode_names()) {
     World world(steady_options(mode));
     EXPECT_EQ(waits_after_warm_up(world), 0u) << mode;
     world.registry().resource<RendererSettings>().shadows = 4;
@@ -53,7 +53,7 @@ TEST_F(GpuWaits, NoSteadyFrameWaitsInAnyMode) {
 }
 
 TEST_F(GpuWaits, NoSteadyFrameWaitsWithMsaa) {
-  for (const std::string& mode : lighting::mode_names()) {
+  for (const std::string& mode : techniques::mode_names()) {
     WorldOptions options = steady_options(mode);
     options.technique_options.msaa = 4;
     World world(options);
@@ -67,7 +67,7 @@ TEST_F(GpuWaits, NoSteadyFrameWaitsUnderAnyDebugView) {
     WorldOptions options = steady_options(mode);
     options.shadows = 2;
     World world(options);
-    for (const lighting::DebugView& row : lighting::debug_view_table()) {
+    for (const render::DebugView& row : render::debug_view_table()) {
       const std::string_view view = row.name;
       world.registry().resource<RendererSettings>().debug_view = std::string(view);
       EXPECT_EQ(waits_after_warm_up(world), 0u) << mode << ", debug view " << view;

@@ -28,7 +28,7 @@ TEST_F(Leaks, AThousandModeSwitchesAndAHundredResizesLeaveNothingBehind) {
   World world({.scene = kTeapot, .lights = 48u, .mode = "forward", .size = {48, 27}});
   auto& settings = world.registry().resource<RendererSettings>();
   settings.gbuffer_thumbnails = true;
-  const auto modes = lighting::technique_table();
+  const auto modes = techniques::technique_table();
   // One round first: programs (the light-lists view's included) compile and
   // stay cached, as they should.
   for (const auto& info : modes) {
@@ -81,7 +81,7 @@ TEST_F(Leaks, AThousandModeSwitchesAndAHundredResizesLeaveNothingBehind) {
 TEST_F(Leaks, AThousandModeSwitchesAndShadowCountChangesLeaveTheAtlasAsItWas) {
   World world({.scene = kTeapot, .lights = 24u, .mode = "forward", .size = {48, 27}});
   auto& settings = world.registry().resource<RendererSettings>();
-  const auto modes = lighting::technique_table();
+  const auto modes = techniques::technique_table();
   const int counts[] = {4, 0, 16, 1, 8};
   for (const int count : counts) {
     settings.shadows = count;

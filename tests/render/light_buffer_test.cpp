@@ -19,16 +19,16 @@ ecs::Entity add_light(ecs::Registry& registry, glm::vec3 position, glm::vec3 col
   return e;
 }
 
-std::vector<GpuLight> read_back(const LightBuffer& buffer) {
-  std::vector<GpuLight> lights(buffer.count);
-  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(GpuLight)), lights.data());
+std::vector<render::GpuLight> read_back(const render::LightBuffer& buffer) {
+  std::vector<render::GpuLight> lights(buffer.count);
+  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(render::GpuLight)), lights.data());
   return lights;
 }
 
 TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   const ecs::Entity a = add_light(registry, {1, 2, 3}, {1.0f, 0.5f, 0.25f}, 2.0f);
   const ecs::Entity b = add_light(registry, {-4, 5, 6}, {0.2f, 0.4f, 0.8f}, 1.0f);
   registry.add<LightRadius>(b, 2.5f);
@@ -36,19 +36,19 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   registry.add<Transform>(not_a_light);
   scheduler.run_frame(registry, 0.0);
 
-  const auto lights = read_back(registry.resource<LightBuffer>());
+  const auto lights = read_back(registry.resource<render::LightBuffer>());
   ASSERT_EQ(lights.size(), 2u);
   EXPECT_EQ(glm::vec3(lights[0].position_radius), glm::vec3(1, 2, 3));
   EXPECT_FLOAT_EQ(lights[0].position_radius.w, lighting::light_radius_from_intensity({1.0f, 0.5f, 0.25f}, 2.0f));
   EXPECT_EQ(glm::vec3(lights[0].color_kind), glm::vec3(2.0f, 1.0f, 0.5f));
-  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(GpuLightKind::Point));
+  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(render::GpuLightKind::Point));
   EXPECT_FLOAT_EQ(lights[1].position_radius.w, 2.5f);
 
   // Changes to the entities show up in the next frame.
   registry.get<Transform>(a).position = {7, 8, 9};
   registry.destroy(b);
   scheduler.run_frame(registry, 0.0);
-  const auto after = read_back(registry.resource<LightBuffer>());
+  const auto after = read_back(registry.resource<render::LightBuffer>());
   ASSERT_EQ(after.size(), 1u);
   EXPECT_EQ(glm::vec3(after[0].position_radius), glm::vec3(7, 8, 9));
 }
@@ -59,11 +59,11 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
 TEST_F(LightBufferSystem, SendsOnlyTheLightsThatChanged) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   std::vector<ecs::Entity> lights;
   for (int i = 0; i < 1000; ++i) lights.push_back(add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f));
   scheduler.run_frame(registry, 0.0);
-  const LightBuffer& buffer = registry.resource<LightBuffer>();
+  const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
   EXPECT_EQ(buffer.uploaded, 1000u);
   scheduler.run_frame(registry, 0.0);
   EXPECT_EQ(buffer.uploaded, 0u) << "lights that hold still are not sent again";
@@ -85,12 +85,12 @@ TEST_F(LightBufferSystem, SendsOnlyTheLightsThatChanged) {
 TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   add_light(registry, {0, 0, 0}, {1, 1, 1}, 1.0f);
   scheduler.run_frame(registry, 0.0);
   for (int i = 1; i < 100'000; ++i) add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f);
   scheduler.run_frame(registry, 0.0);
-  const LightBuffer& buffer = registry.resource<LightBuffer>();
+  const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
   EXPECT_EQ(buffer.count, 100'000u);
   EXPECT_GE(buffer.capacity, 100'000u);
   const auto lights = read_back(buffer);
@@ -104,28 +104,28 @@ TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
 TEST_F(LightBufferSystem, SpotAndDirectionalLightsCarryTheirKindDirectionAndCone) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   const ecs::Entity spot = add_light(registry, {0, 5, 0}, {1, 1, 1}, 4.0f);
   registry.get<Transform>(spot).rotation = glm::angleAxis(glm::radians(-90.0f), glm::vec3(1, 0, 0));  // -Z turned to -Y
   registry.add<SpotCone>(spot, 0.2f, 0.5f);
   const ecs::Entity sun = add_light(registry, {0, 0, 0}, {1, 0.9f, 0.8f}, 3.0f);
   registry.add<DirectionalLight>(sun);
   scheduler.run_frame(registry, 0.0);
-  const auto lights = read_back(registry.resource<LightBuffer>());
+  const auto lights = read_back(registry.resource<render::LightBuffer>());
   ASSERT_EQ(lights.size(), 2u);
-  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(GpuLightKind::Spot));
+  EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(render::GpuLightKind::Spot));
   EXPECT_NEAR(lights[0].direction.y, -1.0f, 1e-6f);
   const float scale = 1.0f / (std::cos(0.2f) - std::cos(0.5f));
   EXPECT_NEAR(lights[0].spot.x, scale, 1e-3f);
   EXPECT_NEAR(lights[0].spot.y, -std::cos(0.5f) * scale, 1e-3f);
-  EXPECT_EQ(lights[1].color_kind.w, static_cast<float>(GpuLightKind::Directional));
+  EXPECT_EQ(lights[1].color_kind.w, static_cast<float>(render::GpuLightKind::Directional));
   EXPECT_EQ(lights[1].position_radius.w, 0.0f);
 }
 
 TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   constexpr float kNan = std::numeric_limits<float>::quiet_NaN(), kInf = std::numeric_limits<float>::infinity();
   add_light(registry, {0, 1, 0}, {1, 1, 1}, 1.0f);
   const ecs::Entity nan_position = add_light(registry, {kNan, 0, 0}, {1, 1, 1}, 1.0f);
@@ -137,7 +137,7 @@ TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) 
   const ecs::Entity sun = add_light(registry, {kInf, 0, 0}, {1, 1, 1}, 1.0f);
   registry.add<DirectionalLight>(sun);  // a direction has no position to break
 
-  const GatheredLights gathered = gather_lights(registry);
+  const render::GatheredLights gathered = render::gather_lights(registry);
   EXPECT_EQ(gathered.lights.size(), 2u);
   ASSERT_EQ(gathered.rejected.size(), 6u);
   EXPECT_EQ(gathered.rejected[0].entity, nan_position);
@@ -152,8 +152,8 @@ TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) 
   scheduler.run_frame(registry, 0.0);
   scheduler.run_frame(registry, 0.0);
   const std::string warnings = ::testing::internal::GetCapturedStderr();
-  EXPECT_EQ(registry.resource<LightBuffer>().count, 2u);
-  EXPECT_EQ(registry.resource<LightBuffer>().rejected, 6u);
+  EXPECT_EQ(registry.resource<render::LightBuffer>().count, 2u);
+  EXPECT_EQ(registry.resource<render::LightBuffer>().rejected, 6u);
   EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 6) << "one warning per light, not per frame:\n" << warnings;
   EXPECT_THAT(warnings, ::testing::HasSubstr("warning: light entity " + std::to_string(nan_position.index) + " left out: position"));
 }
@@ -161,10 +161,10 @@ TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) 
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
-  register_light_buffer(scheduler);
+  render::register_light_buffer(scheduler);
   scheduler.run_frame(registry, 0.0);
-  EXPECT_EQ(registry.resource<LightBuffer>().count, 0u);
-  EXPECT_NE(registry.resource<LightBuffer>().buffer.id(), 0u);
+  EXPECT_EQ(registry.resource<render::LightBuffer>().count, 0u);
+  EXPECT_NE(registry.resource<render::LightBuffer>().buffer.id(), 0u);
 }
 
 }  // namespace

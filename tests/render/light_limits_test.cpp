@@ -67,7 +67,7 @@ TEST_F(LightLimits, AMillionLightsWhoseListsCannotFitAreRefusedNamingTheMemory) 
   // With their own radii (metres each) the lists would need hundreds of MiB.
   World world({.scene = "atrium", .lights = kMillion, .mode = "clustered-deferred", .size = {64, 36}});
   // The whole frustum slice per cluster (pixel bounds keep these lists small enough).
-  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = ClusterBounds::Grid;
   const std::string message = refusal(world);
   EXPECT_THAT(message, HasSubstr("clustered-deferred with 1000000 lights at 64x36: the light lists need "));
   EXPECT_THAT(message, ::testing::MatchesRegex(".*need [0-9,]+ entries \\([0-9.]+ (MiB|GiB)\\), more than one storage buffer may "

@@ -65,7 +65,7 @@ TEST_F(MirroredRender, EveryModeDrawsAMirroredModelAsItsImageMirrored) {
   // Each format against its own unmirrored export: materials map per format.
   for (const char* format : {".glb", ".fbx", ".obj"}) {
     for (const int shadows : {0, 2}) {
-      for (const std::string& mode : lighting::mode_names()) {
+      for (const std::string& mode : techniques::mode_names()) {
         const std::string tag = std::string(format + 1) + "_" + mode + (shadows ? "_shadows" : "");
         const assets::Image plain = render(kFixtures / ("mirror-f.plain" + std::string(format)), mode, shadows);
         const assets::Image expected = mirrored_in_image_space(plain);

@@ -52,7 +52,7 @@ std::vector<Frame> render(const fs::path& model, const std::string& mode, const 
   options.mode = mode;
   options.size = kSize;
   World world(std::move(assets), std::move(scene), options);
-  if (texture_bytes) *texture_bytes = world.registry().resource<assets::GpuAssets>().texture_bytes();
+  if (texture_bytes) *texture_bytes = world.registry().resource<render::GpuAssets>().texture_bytes();
   std::vector<Frame> frames;
   for (int view = 1; view <= 4; ++view) {
     world.set_view(view);
@@ -83,7 +83,7 @@ TEST_F(ModelRender, ObjAndFbxCoverTheirGltfSourcesPixelsAtTheirDepthsInEveryMode
   for (const auto& [file, source_name] : pairs) {
     assets::SceneDescription source;
     const std::vector<Frame> expected = render(kTestdata / "gltf/blender-exports" / (source_name + ".gltf"), "forward", nullptr, &source);
-    for (const std::string& mode : lighting::mode_names()) {
+    for (const std::string& mode : techniques::mode_names()) {
       const std::vector<Frame> actual = render(kFixtures / file, mode, &source);
       for (std::size_t v = 0; v < actual.size(); ++v) {
         if (mode == "forward") assets::write_png("model_" + file + "_view" + std::to_string(v + 1) + ".png", actual[v].image);

@@ -22,14 +22,14 @@ namespace {
 using testing::kSize;
 constexpr int kSamples = 4;  // llvmpipe's most
 
-lighting::TechniqueOptions with_msaa(int samples, lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
-  lighting::TechniqueOptions options = testing::with_layout(layout);
+TechniqueOptions with_msaa(int samples, GBufferLayout layout = GBufferLayout::Full) {
+  TechniqueOptions options = testing::with_layout(layout);
   options.msaa = samples;
   return options;
 }
 
 class MsaaMatchesForward : public testing::GlTest,
-                           public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
+                           public ::testing::WithParamInterface<std::tuple<std::string, GBufferLayout>> {};
 
 TEST_P(MsaaMatchesForward, FromEveryView) {
   const auto& [mode, layout] = GetParam();
@@ -75,7 +75,7 @@ TEST_F(Msaa, BringsEveryModeCloserToASupersampledPicture) {
     World big({.scene = "atrium", .mode = "forward", .view = view, .size = kSize * 4});
     big.frame(0.0);
     const assets::Image supersampled = testing::box_downsample(big.renderer().read_output(), 4, true);
-    for (const auto& info : lighting::technique_table()) {
+    for (const auto& info : techniques::technique_table()) {
       const std::string mode(info.name);
       World plain({.scene = "atrium", .mode = mode, .view = view, .size = kSize});
       plain.frame(0.0);

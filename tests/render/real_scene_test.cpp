@@ -118,18 +118,18 @@ TEST_F(SponzaScene, TheComputeStageDrawsTheFragmentStagesPicture) {
   for (int view = 1; view <= 5; ++view) {
     world.set_view(view);
     world.set_mode("forward");
-    stage = lighting::LightingStage::Fragment;
+    stage = LightingStage::Fragment;
     world.frame(0.0);
     const assets::Image reference = world.renderer().read_output();
     for (const char* mode : {"deferred-radius", "tiled-deferred", "clustered-deferred"}) {
       world.set_mode(mode);
-      stage = lighting::LightingStage::Fragment;
+      stage = LightingStage::Fragment;
       world.frame(0.0);
       const assets::Image fragment = world.renderer().read_output();
-      stage = lighting::LightingStage::Compute;
+      stage = LightingStage::Compute;
       world.frame(0.0);
       const assets::Image compute = world.renderer().read_output();
-      EXPECT_EQ(world.renderer().stats().lighting_stage, lighting::LightingStage::Compute);
+      EXPECT_EQ(world.renderer().stats().lighting_stage, LightingStage::Compute);
       EXPECT_GE(assets::psnr(fragment, compute), 50.0) << mode << " view " << view;
       EXPECT_GE(assets::psnr(reference, compute), kMinimumPsnr) << mode << " view " << view;
     }
@@ -176,7 +176,7 @@ TEST_F(SponzaScene, SoftwareRenderersSampleTrilinearly) {
   World world(options());
   if (!gfx::is_software_renderer()) GTEST_SKIP() << "a hardware renderer filters anisotropically";
   GLfloat anisotropy = 0.0f;
-  glGetSamplerParameterfv(world.registry().resource<assets::GpuAssets>().sampler(assets::SamplerDesc{}), GL_TEXTURE_MAX_ANISOTROPY,
+  glGetSamplerParameterfv(world.registry().resource<render::GpuAssets>().sampler(assets::SamplerDesc{}), GL_TEXTURE_MAX_ANISOTROPY,
                           &anisotropy);
   EXPECT_EQ(anisotropy, 1.0f);
 }

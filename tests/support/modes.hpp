@@ -12,40 +12,40 @@
 namespace atrium::testing {
 
 inline std::vector<std::string> non_forward_modes() {
-  std::vector<std::string> modes = lighting::mode_names();
+  std::vector<std::string> modes = techniques::mode_names();
   std::erase(modes, "forward");
   return modes;
 }
 
-inline std::vector<lighting::GBufferLayout> gbuffer_layouts() {
-  return {lighting::GBufferLayout::Full, lighting::GBufferLayout::Compact};
+inline std::vector<GBufferLayout> gbuffer_layouts() {
+  return {GBufferLayout::Full, GBufferLayout::Compact};
 }
 
 // Each non-forward mode with every --gbuffer layout where the layout changes
 // its G-buffer (GBufferUse::Chosen), and once elsewhere: a second run of a mode
 // the layout does not touch would only repeat the first.
-inline std::vector<std::tuple<std::string, lighting::GBufferLayout>> mode_layouts() {
-  std::vector<std::tuple<std::string, lighting::GBufferLayout>> pairs;
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+inline std::vector<std::tuple<std::string, GBufferLayout>> mode_layouts() {
+  std::vector<std::tuple<std::string, GBufferLayout>> pairs;
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
     if (info.name == "forward") continue;
-    if (info.gbuffer != lighting::GBufferUse::Chosen) {
-      pairs.emplace_back(std::string(info.name), lighting::GBufferLayout::Full);
+    if (info.gbuffer != techniques::GBufferUse::Chosen) {
+      pairs.emplace_back(std::string(info.name), GBufferLayout::Full);
       continue;
     }
-    for (const lighting::GBufferLayout layout : gbuffer_layouts()) pairs.emplace_back(std::string(info.name), layout);
+    for (const GBufferLayout layout : gbuffer_layouts()) pairs.emplace_back(std::string(info.name), layout);
   }
   return pairs;
 }
 
-inline lighting::TechniqueOptions with_layout(lighting::GBufferLayout layout) {
-  lighting::TechniqueOptions options;
+inline TechniqueOptions with_layout(GBufferLayout layout) {
+  TechniqueOptions options;
   options.gbuffer_layout = layout;
   return options;
 }
 
 // A gtest-safe name: "clustered-deferred", Compact -> "clustered_deferred_compact".
-inline std::string test_name(std::string mode, lighting::GBufferLayout layout) {
-  mode += "_" + std::string(lighting::kGBufferLayoutNames[static_cast<std::size_t>(layout)]);
+inline std::string test_name(std::string mode, GBufferLayout layout) {
+  mode += "_" + std::string(kGBufferLayoutNames[static_cast<std::size_t>(layout)]);
   for (char& c : mode) if (c == '-') c = '_';
   return mode;
 }

@@ -70,8 +70,8 @@ TEST_F(FrustumCulling, ChangesNoPixelOfAnyViewOrModeAndDropsWhatIsOutOfView) {
       EXPECT_LE(assets::max_channel_difference(culled.renderer().read_output(), whole.renderer().read_output()), 1)
           << mode << " view " << view;
     }
-    const FrameStats& with = culled.renderer().stats();
-    const FrameStats& without = whole.renderer().stats();
+    const render::FrameStats& with = culled.renderer().stats();
+    const render::FrameStats& without = whole.renderer().stats();
     EXPECT_EQ(without.triangles_drawn, without.triangles) << "view " << view;
     EXPECT_EQ(with.triangles, without.triangles);
     // Every stored view looks into the courtyard: some of it is behind or beside
@@ -133,7 +133,7 @@ TEST_F(FrustumCulling, ACameraLookingAwayFromTheSceneDrawsNothingButTheBackgroun
   options.camera = assets::NamedView{"away", glm::vec3(0.0f, 5.0f, 60.0f), 180.0f, 0.0f};  // yaw 180 looks along +Z
   World world(options);
   world.frame(0.0);
-  const FrameStats& stats = world.renderer().stats();
+  const render::FrameStats& stats = world.renderer().stats();
   EXPECT_EQ(stats.triangles_drawn, 0u);
   EXPECT_EQ(stats.draw_calls, 0u);
   EXPECT_EQ(stats.objects_drawn, 0u);
@@ -174,7 +174,7 @@ TEST_F(FrustumCulling, TheGridSceneIsBistroScaleAndDrawsWithTheDrawCallsOfOneCou
   single.frame(0.0);
   World grid({.scene = kGrid, .mode = "deferred", .size = kSize});
   grid.frame(0.0);
-  const FrameStats& stats = grid.renderer().stats();
+  const render::FrameStats& stats = grid.renderer().stats();
   EXPECT_GE(stats.triangles, 2'500'000u);
   EXPECT_GE(stats.objects, 1500u);
   EXPECT_EQ(stats.lights, 4096u);

@@ -7,14 +7,13 @@
 #include "gfx/gl_features.hpp"
 #include "render/culling/occlusion_culling.hpp"
 
-namespace atrium {
+namespace atrium::render {
 namespace {
 
 // The bindings of culling/depth_pyramid.comp, occlusion_cull.comp and compact_commands.comp.
-constexpr GLuint kPyramidBinding = render::kDepthTilesBinding;
-constexpr GLuint kTemplateBinding = render::kCommandTemplateBinding, kOutBinding = render::kCullOutBinding, kShownBinding = render::kCullShownBinding,
-                 kRecordsBinding = render::kCullRecordsBinding, kLastShownBinding = render::kLastShownBinding,
-                 kCountersBinding = render::kCullCountersBinding;
+constexpr GLuint kPyramidBinding = kDepthTilesBinding;
+constexpr GLuint kTemplateBinding = kCommandTemplateBinding, kOutBinding = kCullOutBinding, kShownBinding = kCullShownBinding,
+                 kRecordsBinding = kCullRecordsBinding, kCountersBinding = kCullCountersBinding;
 constexpr int kMaxLevels = 16;  // occlusion_cull.comp's u_levels: 12 cover the largest render size (16384 pixels)
 constexpr GLuint kCullGroup = 64;
 
@@ -41,22 +40,22 @@ GpuOcclusionCulling::GpuOcclusionCulling(gfx::ShaderLibrary& shaders)
   glNamedBufferStorage(counters_.id(), 2 * sizeof(std::uint32_t), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-void GpuOcclusionCulling::begin(const lighting::DrawList& list, GLuint commands) {
+void GpuOcclusionCulling::begin(const DrawList& list, GLuint commands) {
   commands_ = commands;
   command_count_ = static_cast<std::uint32_t>(list.commands.size());
   opaque_count_ = static_cast<std::uint32_t>(list.cull_records.size());
   blended_triangles_ = 0;
   for (std::size_t c = opaque_count_; c < list.commands.size(); ++c) blended_triangles_ += list.commands[c].count / 3;
-  const std::size_t command_bytes = std::max<std::size_t>(command_count_, 1) * sizeof(lighting::DrawCommand);
+  const std::size_t command_bytes = std::max<std::size_t>(command_count_, 1) * sizeof(DrawCommand);
   first_.reserve(command_bytes);
   revealed_.reserve(command_bytes);
   shown_.reserve(command_bytes);
-  records_.upload(list.cull_records.data(), list.cull_records.size() * sizeof(lighting::CullRecord));
+  records_.upload(list.cull_records.data(), list.cull_records.size() * sizeof(CullRecord));
   if (packs_) {
     // Every batch, by its count slot: opaque, then blended (draw_list.cpp).
     std::vector<glm::uvec2> batches;
     for (const auto* group : {&list.opaque, &list.blended}) {
-      for (const lighting::DrawBatch& batch : *group) batches.emplace_back(batch.first_command, batch.command_count);
+      for (const DrawBatch& batch : *group) batches.emplace_back(batch.first_command, batch.command_count);
     }
     batch_count_ = static_cast<std::uint32_t>(batches.size());
     batches_.upload(batches.data(), batches.size() * sizeof(glm::uvec2));
@@ -177,4 +176,4 @@ std::optional<GpuCullingCounts> GpuOcclusionCulling::take_counts() {
   return counts_;
 }
 
-}  // namespace atrium
+}  // namespace atrium::render

@@ -25,7 +25,7 @@
 #include "gfx/stream_buffer.hpp"
 #include "render/frame/draw_list.hpp"
 
-namespace atrium {
+namespace atrium::render {
 
 struct GpuCullingCounts {
   std::size_t triangles_drawn = 0;   // by the passes after the first (opaque shown and blended)
@@ -45,7 +45,7 @@ class GpuOcclusionCulling {
   // Uploads the boxes of `list` (a DrawSelection::EachInView list whose
   // commands are in `commands`) and writes first_commands(): what the last
   // frame showed. The frame uniforms must be bound.
-  void begin(const lighting::DrawList& list, GLuint commands);
+  void begin(const DrawList& list, GLuint commands);
   // After the first phase drew into `depth`: writes revealed_commands() (what
   // that depth does not hide and was not drawn) and shown_commands() (both).
   void reveal(GLuint depth, glm::ivec2 size);
@@ -86,4 +86,4 @@ class GpuOcclusionCulling {
   std::optional<GpuCullingCounts> counts_;
 };
 
-}  // namespace atrium
+}  // namespace atrium::render

@@ -10,12 +10,11 @@
 #include "components/visibility.hpp"
 #include "gfx/gpu_waits.hpp"
 
-namespace atrium {
+namespace atrium::render {
 namespace {
 
 // culling/depth_tiles.comp's bindings.
-constexpr GLuint kDepthTextureUnit = render::kDepthTextureUnit;
-constexpr GLuint kTileStorageBinding = render::kDepthTilesBinding;
+constexpr GLuint kTileStorageBinding = kDepthTilesBinding;
 
 }  // namespace
 
@@ -177,4 +176,4 @@ DepthPyramid DepthReader::read(GLuint depth, glm::ivec2 size) {
   return DepthPyramid(std::move(farthest), tiles, size);
 }
 
-}  // namespace atrium
+}  // namespace atrium::render

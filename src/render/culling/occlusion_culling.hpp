@@ -21,7 +21,7 @@
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_library.hpp"
 
-namespace atrium {
+namespace atrium::render {
 
 // The depth buffer's farthest view depth per kTileSize-pixel tile, and coarser
 // levels above it (each texel the farthest of the four below): what a box
@@ -87,4 +87,4 @@ class DepthReader {
   std::size_t capacity_ = 0;  // floats
 };
 
-}  // namespace atrium
+}  // namespace atrium::render

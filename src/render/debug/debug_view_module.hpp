@@ -14,14 +14,14 @@
 #include "render/debug/debug_views.hpp"
 #include "render/frame/frame_modules.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
 class DebugViewModule {
  public:
-  explicit DebugViewModule(assets::GpuAssets& gpu) : gpu_(gpu) {}
+  explicit DebugViewModule(GpuAssets& gpu) : gpu_(gpu) {}
 
-  [[nodiscard]] render::FrameModule counters_module();
-  [[nodiscard]] render::FrameModule view_module();
+  [[nodiscard]] FrameModule counters_module();
+  [[nodiscard]] FrameModule view_module();
 
   // What the shown view (RendererSettings::debug_view) asks of the frame
   // before its programs are compiled; nothing for a view of a resource by name.
@@ -38,9 +38,9 @@ class DebugViewModule {
   void invalidate() { views_.reset(); }
 
  private:
-  DebugViews& views(const render::FrameBuild& build);
+  DebugViews& views(const FrameBuild& build);
 
-  assets::GpuAssets& gpu_;
+  GpuAssets& gpu_;
   std::unique_ptr<DebugViews> views_;  // made on first use, with the frame's options and targets
   std::vector<OfferedView> offered_;
   bool thumbnails_drawn_ = false;
@@ -48,4 +48,4 @@ class DebugViewModule {
   std::optional<SelectedView> selected_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

@@ -8,70 +8,69 @@
 
 #include "render/frame/scene_passes.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
 namespace {
 
-using render::kBlockSumsBinding;  // shaders/debug/sum_counts.comp
 
 // A resource's visualiser, picked by its ViewKind: what a view of any
 // resource of that kind shows, and how it draws it.
 struct Visualiser {
-  render::ViewKind kind;
+  ViewKind kind;
   std::string_view shows;
-  void (*draw)(DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res,
+  void (*draw)(DebugViews& views, ResourceId resource, const DebugViewFrame& frame, const PassResources& res,
                glm::vec2 origin, glm::vec2 scale);
 };
 
 constexpr Visualiser kVisualisers[] = {
-    {render::ViewKind::Color, "colour or light, exposed and tone-mapped",
-     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame&, const render::PassResources& res, glm::vec2 origin,
+    {ViewKind::Color, "colour or light, exposed and tone-mapped",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame&, const PassResources& res, glm::vec2 origin,
         glm::vec2 scale) { views.show_light_sum(resource, res, origin, scale); }},
-    {render::ViewKind::Depth, "view depth on a log scale, near white",
-     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+    {ViewKind::Depth, "view depth on a log scale, near white",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
         glm::vec2 scale) { views.show_depth(resource, frame, res, origin, scale); }},
-    {render::ViewKind::Counts, "per-pixel counts as a heatmap",
-     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2,
+    {ViewKind::Counts, "per-pixel counts as a heatmap",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame& frame, const PassResources& res, glm::vec2,
         glm::vec2) { views.show_counts(resource, frame, res); }},
-    {render::ViewKind::LightBins, "lights in each pixel's bin (magenta: a bin that did not fit this frame)",
-     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2,
+    {ViewKind::LightBins, "lights in each pixel's bin (magenta: a bin that did not fit this frame)",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame& frame, const PassResources& res, glm::vec2,
         glm::vec2) { views.show_light_bins(resource, frame, res); }},
-    {render::ViewKind::ShadowAtlas, "shadow-map depths",
-     [](DebugViews& views, render::ResourceId resource, const DebugViewFrame&, const render::PassResources& res, glm::vec2, glm::vec2) {
+    {ViewKind::ShadowAtlas, "shadow-map depths",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame&, const PassResources& res, glm::vec2, glm::vec2) {
        views.show_shadow_atlas(resource, res);
      }},
 };
 
-const Visualiser* visualiser_for(render::ViewKind kind) {
+const Visualiser* visualiser_for(ViewKind kind) {
   const auto it = std::find_if(std::begin(kVisualisers), std::end(kVisualisers), [&](const Visualiser& v) { return v.kind == kind; });
   return it == std::end(kVisualisers) ? nullptr : &*it;
 }
 
 // The resource a row shows: by name, or the first of the row's kind; invalid
 // when the frame has none or the row names none.
-render::ResourceId resource_of(const DebugView& row, const render::FrameGraph& graph) {
+ResourceId resource_of(const DebugView& row, const FrameGraph& graph) {
   if (!row.resource.empty()) return graph.find(std::string(row.resource));
-  return row.kind == render::ViewKind::None ? render::ResourceId{} : graph.first_of(row.kind);
+  return row.kind == ViewKind::None ? ResourceId{} : graph.first_of(row.kind);
 }
 
-bool always(const render::FrameGraph&, const TechniqueOptions&) { return true; }
-bool has_gbuffer(const render::FrameGraph& graph, const TechniqueOptions&) { return GBuffer::find(graph).has_value(); }
+bool always(const FrameGraph&, const TechniqueOptions&) { return true; }
+bool has_gbuffer(const FrameGraph& graph, const TechniqueOptions&) { return lighting::GBuffer::find(graph).has_value(); }
 template <const char* kName>
-bool has_resource(const render::FrameGraph& graph, const TechniqueOptions&) {
+bool has_resource(const FrameGraph& graph, const TechniqueOptions&) {
   return graph.find(kName).valid();
 }
-bool has_light_bins(const render::FrameGraph& graph, const TechniqueOptions&) { return graph.first_of(render::ViewKind::LightBins).valid(); }
+bool has_light_bins(const FrameGraph& graph, const TechniqueOptions&) { return graph.first_of(ViewKind::LightBins).valid(); }
 
 template <const char* kTarget>
-void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
   views.show_gbuffer(kTarget, frame, res, origin, scale);
 }
 // Only a deferred mode's lighting passes write the sums apart: a forward
 // mode's sums stay grey.
 template <const char* kName>
-void split_sum(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
-  const render::ResourceId sum = frame.graph.find(kName);
-  if (sum.valid() && GBuffer::find(frame.graph)) views.show_light_sum(sum, res, origin, scale);
+void split_sum(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+  const ResourceId sum = frame.graph.find(kName);
+  if (sum.valid() && lighting::GBuffer::find(frame.graph)) views.show_light_sum(sum, res, origin, scale);
   else views.show_nothing();
 }
 constexpr char kPosition[] = "POSITION", kNormal[] = "NORMAL", kAlbedo[] = "ALBEDO", kMetallicRoughness[] = "METALLIC_ROUGHNESS",
@@ -90,14 +89,14 @@ const std::array kViews{
     DebugView{"emissive", "emitted light, tone-mapped", kGBuffer, {}, {}, always, gbuffer_target<kEmissive>},
     DebugView{"depth", "view depth on a log scale, near white", {}, "depth", {}, always},
     DebugView{"light-volumes", "outlines of the light spheres over the lit image", kGBuffer, {}, {}, always,
-              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+              [](DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2, glm::vec2) {
                 views.show_over_gbuffer("debug/outlines.frag", frame, res, false);
               }},
     DebugView{"heatmap", "lights evaluated per pixel by the mode", {.count_lights = true}, "light-counts", {}, always},
     DebugView{"light-lists", "lights in each pixel's tile or cluster list (magenta: a bin that did not fit this frame)", {}, {},
-              render::ViewKind::LightBins, has_light_bins},
+              ViewKind::LightBins, has_light_bins},
     DebugView{"depth-slices", "the cluster depth slices (--cluster-grid, --z-slicing)", {}, {}, {}, always,
-              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+              [](DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2, glm::vec2) {
                 views.show_depth_slices(frame, res);
               }},
     DebugView{"fragments", "fragments the geometry passes rasterise per pixel (overdraw)", {.count_fragments = true}, "fragment-counts",
@@ -108,8 +107,8 @@ const std::array kViews{
               has_gbuffer, split_sum<kSpecularLight>},
     DebugView{"light-buffer", "light summed before materials (light-prepass)", {}, kLightBuffer, {}, has_resource<kLightBuffer>},
     DebugView{"msaa-edges", "the pixels the deferred modes shade per sample, in red (with --msaa)", kGBuffer, {}, {},
-              [](const render::FrameGraph& graph, const TechniqueOptions& options) { return options.msaa > 1 && has_gbuffer(graph, options); },
-              [](DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2, glm::vec2) {
+              [](const FrameGraph& graph, const TechniqueOptions& options) { return options.msaa > 1 && has_gbuffer(graph, options); },
+              [](DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2, glm::vec2) {
                 views.show_over_gbuffer("debug/msaa_edges.frag", frame, res, true);
               }},
     DebugView{"shadow-atlas", "the shadow maps' depths (with --shadows)", {}, kShadowAtlas, {}, has_resource<kShadowAtlas>},
@@ -132,14 +131,14 @@ std::string debug_view_names() {
   return names;
 }
 
-std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const TechniqueOptions& options) {
+std::vector<OfferedView> offered_views(const FrameGraph& graph, const TechniqueOptions& options) {
   std::vector<OfferedView> views;
   for (const DebugView& row : kViews) {
     // Counting writes image atomics, which the compute-free tier lacks.
     if (options.compute_free && (row.needs.count_lights || row.needs.count_fragments)) continue;
     if (row.offered(graph, options)) views.push_back({std::string(row.name), std::string(row.help)});
   }
-  for (const render::ViewableResource& resource : graph.viewable()) {
+  for (const ViewableResource& resource : graph.viewable()) {
     const Visualiser* visualiser = visualiser_for(resource.kind);
     if (!visualiser || find_debug_view(resource.name)) continue;
     views.push_back({resource.name, std::string(visualiser->shows) +
@@ -148,14 +147,14 @@ std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const Te
   return views;
 }
 
-std::optional<SelectedView> select_view(std::string_view name, const render::FrameGraph& graph) {
+std::optional<SelectedView> select_view(std::string_view name, const FrameGraph& graph) {
   if (const DebugView* row = find_debug_view(name)) return SelectedView{row, resource_of(*row, graph)};
-  const render::ResourceId id = graph.find(std::string(name));
+  const ResourceId id = graph.find(std::string(name));
   if (visualiser_for(graph.view_kind(id))) return SelectedView{nullptr, id};
   return std::nullopt;
 }
 
-DebugViews::DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options)
+DebugViews::DebugViews(GpuAssets& gpu, const TechniqueOptions& options)
     : gpu_(gpu),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa),
       cluster_grid_(options.cluster_grid),
@@ -183,39 +182,39 @@ void DebugViews::resize(const FrameTargets& targets) {
   glNamedFramebufferTexture(thumbnail_framebuffer_.id(), GL_COLOR_ATTACHMENT0, thumbnails_.id(), 0);
 }
 
-void DebugViews::add_gbuffer_pass(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+void DebugViews::add_gbuffer_pass(FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
   add_geometry_pass(graph, gbuffer_, gpu_.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}), frame, targets);
 }
 
-void DebugViews::add_counting_pass(render::FrameGraph& graph, const DebugViewNeeds& needs) {
+void DebugViews::add_counting_pass(FrameGraph& graph, const DebugViewNeeds& needs) {
   // The counters outlive the frame (their sums go back through sums_), so
   // they are the views' own, imported.
-  const render::ResourceId counts = graph.import_texture(needs.count_fragments ? "fragment-counts" : "light-counts", counts_.id(),
-                                                         {GL_R32UI, size_, 1}, render::ViewKind::Counts);
-  graph.add_pass("clear counters", [&](render::PassBuilder& pass) { pass.write(counts, render::Access::Transfer); },
-                 [this, fragments = needs.count_fragments](const render::PassResources&) {
+  const ResourceId counts = graph.import_texture(needs.count_fragments ? "fragment-counts" : "light-counts", counts_.id(),
+                                                         {GL_R32UI, size_, 1}, ViewKind::Counts);
+  graph.add_pass("clear counters", [&](PassBuilder& pass) { pass.write(counts, Access::Transfer); },
+                 [this, fragments = needs.count_fragments](const PassResources&) {
                    const GLuint zero = 0;
                    glClearTexImage(counts_.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
                    glBindImageTexture(fragments ? 1 : 0, counts_.id(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
                  }, false);
 }
 
-void DebugViews::declare_reads(const SelectedView& view, render::PassBuilder& pass, const render::FrameGraph& graph,
+void DebugViews::declare_reads(const SelectedView& view, PassBuilder& pass, const FrameGraph& graph,
                                const FrameContext& frame) {
-  pass.read(frame.scene_depth, render::Access::Sampled);
+  pass.read(frame.scene_depth, Access::Sampled);
   if (view.row && view.row->needs.gbuffer) {
-    if (const std::optional<GBuffer::Found> found = GBuffer::find(graph)) {
-      for (std::size_t i = 0; i < found->count; ++i) pass.read(found->resources[i], render::Access::Sampled);
+    if (const std::optional<lighting::GBuffer::Found> found = lighting::GBuffer::find(graph)) {
+      for (std::size_t i = 0; i < found->count; ++i) pass.read(found->resources[i], Access::Sampled);
     }
   }
-  if (view.resource.valid()) pass.read(view.resource, render::Access::Sampled);
+  if (view.resource.valid()) pass.read(view.resource, Access::Sampled);
 }
 
-void DebugViews::declare_thumbnail_reads(render::PassBuilder& pass, const render::FrameGraph& graph, const FrameContext& frame) {
+void DebugViews::declare_thumbnail_reads(PassBuilder& pass, const FrameGraph& graph, const FrameContext& frame) {
   for (const std::string_view name : kThumbnailViews) declare_reads(*select_view(name, graph), pass, graph, frame);
 }
 
-void DebugViews::draw_into_viewport(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res,
+void DebugViews::draw_into_viewport(const SelectedView& view, const DebugViewFrame& frame, const PassResources& res,
                                     glm::vec2 origin, glm::vec2 scale) {
   if (view.row && view.row->draw) {
     view.row->draw(*this, frame, res, origin, scale);
@@ -226,7 +225,7 @@ void DebugViews::draw_into_viewport(const SelectedView& view, const DebugViewFra
   else show_nothing();  // the frame lacks what the view shows
 }
 
-void DebugViews::draw_thumbnails(const DebugViewFrame& frame, const render::PassResources& res) {
+void DebugViews::draw_thumbnails(const DebugViewFrame& frame, const PassResources& res) {
   glBindFramebuffer(GL_FRAMEBUFFER, thumbnail_framebuffer_.id());
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
@@ -241,7 +240,7 @@ void DebugViews::draw_thumbnails(const DebugViewFrame& frame, const render::Pass
   }
 }
 
-void DebugViews::draw(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res, GLuint output_framebuffer) {
+void DebugViews::draw(const SelectedView& view, const DebugViewFrame& frame, const PassResources& res, GLuint output_framebuffer) {
   // Every view is a full-screen pass into the output.
   glBindFramebuffer(GL_FRAMEBUFFER, output_framebuffer);
   glViewport(0, 0, size_.x, size_.y);
@@ -250,15 +249,15 @@ void DebugViews::draw(const SelectedView& view, const DebugViewFrame& frame, con
   draw_into_viewport(view, frame, res, glm::vec2(0.0f), glm::vec2(1.0f));
 }
 
-void DebugViews::show_gbuffer(std::string_view target, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+void DebugViews::show_gbuffer(std::string_view target, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                               glm::vec2 scale) {
-  const std::optional<GBuffer::Found> gbuffer = GBuffer::find(frame.graph);
+  const std::optional<lighting::GBuffer::Found> gbuffer = lighting::GBuffer::find(frame.graph);
   if (!gbuffer) {
     show_nothing();
     return;
   }
-  GBuffer::bind_textures(res, *gbuffer);
-  std::vector<gfx::ShaderDefine> defines = GBuffer::defines(gbuffer->layout);
+  lighting::GBuffer::bind_textures(res, *gbuffer);
+  std::vector<gfx::ShaderDefine> defines = lighting::GBuffer::defines(gbuffer->layout);
   defines.push_back({"SHOW_" + std::string(target)});
   draw_show(defines, frame, origin, scale);
 }
@@ -273,13 +272,13 @@ void DebugViews::draw_show(const std::vector<gfx::ShaderDefine>& defines, const 
   fullscreen_.draw();
 }
 
-void DebugViews::show_depth(render::ResourceId depth, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+void DebugViews::show_depth(ResourceId depth, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                             glm::vec2 scale) {
   glBindTextureUnit(5, res.texture(depth));
   draw_show({{"SHOW_DEPTH"}}, frame, origin, scale);
 }
 
-void DebugViews::show_counts(render::ResourceId counts, const DebugViewFrame& frame, const render::PassResources& res) {
+void DebugViews::show_counts(ResourceId counts, const DebugViewFrame& frame, const PassResources& res) {
   glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   const bool fragments = frame.graph.find("fragment-counts") == counts;
   const float scale_max = fragments ? 64.0f : 2.0f * static_cast<float>(std::max<std::size_t>(frame.frame.lights.size(), 1));
@@ -290,7 +289,7 @@ void DebugViews::show_counts(render::ResourceId counts, const DebugViewFrame& fr
   fullscreen_.draw();
 }
 
-void DebugViews::show_shadow_atlas(render::ResourceId atlas, const render::PassResources& res) {
+void DebugViews::show_shadow_atlas(ResourceId atlas, const PassResources& res) {
   glBindTextureUnit(0, res.texture(atlas));
   glBindSampler(0, depth_sampler_.id());
   gpu_.shaders().get({"post/fullscreen.vert", "debug/shadow_atlas.frag"}).use();
@@ -298,15 +297,15 @@ void DebugViews::show_shadow_atlas(render::ResourceId atlas, const render::PassR
   glBindSampler(0, 0);
 }
 
-void DebugViews::show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const render::PassResources& res, bool blend) {
-  const std::optional<GBuffer::Found> gbuffer = GBuffer::find(frame.graph);
+void DebugViews::show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const PassResources& res, bool blend) {
+  const std::optional<lighting::GBuffer::Found> gbuffer = lighting::GBuffer::find(frame.graph);
   if (!gbuffer) return;  // nothing to draw over
-  GBuffer::bind_textures(res, *gbuffer);
+  lighting::GBuffer::bind_textures(res, *gbuffer);
   if (blend) {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   }
-  gpu_.shaders().get({"post/fullscreen.vert", fragment_shader}, GBuffer::defines(gbuffer->layout)).use();
+  gpu_.shaders().get({"post/fullscreen.vert", fragment_shader}, lighting::GBuffer::defines(gbuffer->layout)).use();
   fullscreen_.draw();
   glDisable(GL_BLEND);
 }
@@ -322,10 +321,10 @@ void DebugViews::show_nothing() {
   glDisable(GL_SCISSOR_TEST);
 }
 
-void DebugViews::show_light_sum(render::ResourceId sum, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale) {
+void DebugViews::show_light_sum(ResourceId sum, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
   // An image of the frame's own size and samples, or one of the post-process
   // chains' (a single sample, a fraction of the size), stretched over the view.
-  const render::TextureDesc& desc = res.texture_desc(sum);
+  const TextureDesc& desc = res.texture_desc(sum);
   const bool single = desc.samples == 1 && samples_ > 1;
   gfx::ShaderProgram& program =
       gpu_.shaders().get({"post/fullscreen.vert", "debug/light_sum.frag"}, single ? std::vector<gfx::ShaderDefine>{{"SINGLE_SAMPLE"}} : std::vector<gfx::ShaderDefine>{});
@@ -362,9 +361,9 @@ std::vector<DebugViews::CountAverage> DebugViews::take_averages() {
   return averages;
 }
 
-void DebugViews::show_depth_slices(const DebugViewFrame& frame, const render::PassResources& res) {
+void DebugViews::show_depth_slices(const DebugViewFrame& frame, const PassResources& res) {
   const glm::uvec3 dims = cluster_grid_.at(frame.targets.size);
-  if (!slicing_ || slicing_->dims() != dims) slicing_ = std::make_unique<ClusterGrid>(dims, z_slicing_);
+  if (!slicing_ || slicing_->dims() != dims) slicing_ = std::make_unique<lighting::ClusterGrid>(dims, z_slicing_);
   slicing_->update(frame.frame.projection, frame.frame.near_plane, frame.frame.far_plane);
   slicing_->bind();
   gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"}, {{"DEPTH_SLICES"}});
@@ -373,16 +372,16 @@ void DebugViews::show_depth_slices(const DebugViewFrame& frame, const render::Pa
   fullscreen_.draw();
 }
 
-void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res) {
-  const LightBins* bins = frame.graph.published<LightBins>();
+void DebugViews::show_light_bins(ResourceId lists, const DebugViewFrame& frame, const PassResources& res) {
+  const lighting::LightBins* bins = frame.graph.published<lighting::LightBins>();
   if (!bins || bins->lists != lists) {
     show_nothing();  // lists whose technique did not say how pixels map to them
     return;
   }
   bins->list->bind();
-  if (bins->binning == LightBins::Binning::Clusters) glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, bins->grid_uniforms);
+  if (bins->binning == lighting::LightBins::Binning::Clusters) glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, bins->grid_uniforms);
   gfx::ShaderProgram& program = gpu_.shaders().get({"post/fullscreen.vert", "debug/light_bins.frag"},
-                                                   {{"LIGHT_BINS", bins->binning == LightBins::Binning::Tiles ? "1" : "2"}});
+                                                   {{"LIGHT_BINS", bins->binning == lighting::LightBins::Binning::Tiles ? "1" : "2"}});
   program.set("u_tiles", bins->tiles);
   program.set("u_tile_size", bins->tile_size);
   // A bin can hold every light: the map tops out there.
@@ -392,4 +391,4 @@ void DebugViews::show_light_bins(render::ResourceId lists, const DebugViewFrame&
   fullscreen_.draw();
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

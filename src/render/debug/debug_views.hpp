@@ -38,9 +38,9 @@
 #include "render/lighting/cluster_grid.hpp"
 #include "render/lighting/gbuffer.hpp"
 #include "render/lighting/light_index_list.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_context.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
 class DebugViews;
 
@@ -56,13 +56,13 @@ struct DebugViewNeeds {
 struct DebugViewFrame {
   const FrameContext& frame;
   const FrameTargets& targets;
-  const render::FrameGraph& graph;
+  const FrameGraph& graph;
   glm::vec3 bounds_min, bounds_max;  // the scene's, for the position view's colours
 };
 
 // Draws a view into the bound framebuffer's viewport (origin and scale map the
 // viewport to a thumbnail cell; (0, 0) and (1, 1) for the whole output).
-using DrawView = void (*)(DebugViews& views, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+using DrawView = void (*)(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                           glm::vec2 scale);
 
 // One named debug view (--debug-view, `g`, the overlay): what it shows, what
@@ -78,8 +78,8 @@ struct DebugView {
   std::string_view help;
   DebugViewNeeds needs;
   std::string_view resource;
-  render::ViewKind kind = render::ViewKind::None;
-  bool (*offered)(const render::FrameGraph& graph, const TechniqueOptions& options) = nullptr;
+  ViewKind kind = ViewKind::None;
+  bool (*offered)(const FrameGraph& graph, const TechniqueOptions& options) = nullptr;
   DrawView draw = nullptr;
 };
 
@@ -96,7 +96,7 @@ struct OfferedView {
 };
 // The named views `graph` offers, then each of its viewable resources under
 // its own name (G-buffer targets are shown through the named views).
-[[nodiscard]] std::vector<OfferedView> offered_views(const render::FrameGraph& graph, const TechniqueOptions& options);
+[[nodiscard]] std::vector<OfferedView> offered_views(const FrameGraph& graph, const TechniqueOptions& options);
 
 // A view name that is neither a row nor a viewable resource of the frame's
 // graph: bad input, which the CLI reports with exit 2.
@@ -109,35 +109,35 @@ class UnknownViewError : public std::invalid_argument {
 // resource of `graph`; nullopt when it names neither.
 struct SelectedView {
   const DebugView* row = nullptr;
-  render::ResourceId resource;  // the resource it shows (a row's by name or kind); invalid: none
+  ResourceId resource;  // the resource it shows (a row's by name or kind); invalid: none
 };
-[[nodiscard]] std::optional<SelectedView> select_view(std::string_view name, const render::FrameGraph& graph);
+[[nodiscard]] std::optional<SelectedView> select_view(std::string_view name, const FrameGraph& graph);
 
 class DebugViews {
  public:
-  DebugViews(assets::GpuAssets& gpu, const TechniqueOptions& options);
+  DebugViews(GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const FrameTargets& targets);
 
   // For a view that needs a G-buffer in a frame whose technique made none:
   // the views' own geometry pass, adding "gbuffer.*" to the graph.
-  void add_gbuffer_pass(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets);
+  void add_gbuffer_pass(FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets);
   // Heatmap and fragments views: a pass that zeroes the per-pixel counters
   // ("light-counts" or "fragment-counts", ViewKind::Counts) and binds them to
   // the image unit the technique's counting shaders write (0 for lights, 1
   // for fragments), before the technique's passes.
-  void add_counting_pass(render::FrameGraph& graph, const DebugViewNeeds& needs);
+  void add_counting_pass(FrameGraph& graph, const DebugViewNeeds& needs);
   // The COUNT_LIGHTS and COUNT_FRAGMENTS rows of the shader globals
   // (render/shader_globals.hpp): the heatmap and fragments views' counters.
-  static void counting_defines(const render::GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
+  static void counting_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
     if (inputs.count_lights) defines.push_back({"COUNT_LIGHTS"});
     if (inputs.count_fragments) defines.push_back({"COUNT_FRAGMENTS"});
   }
   // Declares the reads of what `view` shows (the G-buffer, its resource, the
   // scene depth) in the pass that draws it.
-  static void declare_reads(const SelectedView& view, render::PassBuilder& pass, const render::FrameGraph& graph, const FrameContext& frame);
+  static void declare_reads(const SelectedView& view, PassBuilder& pass, const FrameGraph& graph, const FrameContext& frame);
   // Draws `view` into `output_framebuffer` (already holding the tone-mapped
   // image) after the technique has drawn the frame.
-  void draw(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res, GLuint output_framebuffer);
+  void draw(const SelectedView& view, const DebugViewFrame& frame, const PassResources& res, GLuint output_framebuffer);
   // Heatmap and fragments views: sums this frame's counters per block and
   // sends the sums back (gfx::ReadbackRing) to be averaged a frame or more
   // later; nothing waits.
@@ -159,53 +159,53 @@ class DebugViews {
   // The debug view each thumbnail shows, in order.
   static constexpr std::array<std::string_view, kThumbnailCount> kThumbnailViews{
       "position", "normal", "albedo", "metallic-roughness", "emissive", "depth", "diffuse-light", "specular-light"};
-  void draw_thumbnails(const DebugViewFrame& frame, const render::PassResources& res);
+  void draw_thumbnails(const DebugViewFrame& frame, const PassResources& res);
   // Declares the reads of what the thumbnails show.
-  static void declare_thumbnail_reads(render::PassBuilder& pass, const render::FrameGraph& graph, const FrameContext& frame);
+  static void declare_thumbnail_reads(PassBuilder& pass, const FrameGraph& graph, const FrameContext& frame);
   [[nodiscard]] GLuint thumbnails() const { return thumbnails_.id(); }
   [[nodiscard]] glm::ivec2 thumbnail_size() const { return thumbnail_size_; }
 
   // What the rows and visualisers draw with, each into the bound
   // framebuffer's viewport. One G-buffer quantity (`target`: the show.frag
   // define SHOW_<TARGET>), decoded in the layout of the frame's G-buffer.
-  void show_gbuffer(std::string_view target, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+  void show_gbuffer(std::string_view target, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                     glm::vec2 scale);
   // A depth resource as view depth on a log scale, near white.
-  void show_depth(render::ResourceId depth, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+  void show_depth(ResourceId depth, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                   glm::vec2 scale);
   // A counts resource as a heatmap (lights: topping out at twice the light
   // count, forward's overdraw can exceed one pass over all lights; fragments: at 64).
-  void show_counts(render::ResourceId counts, const DebugViewFrame& frame, const render::PassResources& res);
+  void show_counts(ResourceId counts, const DebugViewFrame& frame, const PassResources& res);
   // Each pixel's tile or cluster list length, from the lists `bins` (the
   // frame's published LightBins); flat grey for lists nobody described.
-  void show_light_bins(render::ResourceId lists, const DebugViewFrame& frame, const render::PassResources& res);
+  void show_light_bins(ResourceId lists, const DebugViewFrame& frame, const PassResources& res);
   // Each pixel's cluster depth slice, in any mode.
-  void show_depth_slices(const DebugViewFrame& frame, const render::PassResources& res);
+  void show_depth_slices(const DebugViewFrame& frame, const PassResources& res);
   // A colour or light resource, exposed and tone-mapped (with the thumbnail mapping).
-  void show_light_sum(render::ResourceId sum, const render::PassResources& res, glm::vec2 origin, glm::vec2 scale);
+  void show_light_sum(ResourceId sum, const PassResources& res, glm::vec2 origin, glm::vec2 scale);
   // A shadow atlas's depths.
-  void show_shadow_atlas(render::ResourceId atlas, const render::PassResources& res);
+  void show_shadow_atlas(ResourceId atlas, const PassResources& res);
   // A full-screen debug shader over the frame's G-buffer (outlines, MSAA
   // edges), blended over the image when `blend`.
-  void show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const render::PassResources& res, bool blend);
+  void show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const PassResources& res, bool blend);
   // Flat grey in the viewport: what a view shows when its frame lacks it.
   void show_nothing();
 
  private:
   // Draws `view` into the bound framebuffer's viewport.
-  void draw_into_viewport(const SelectedView& view, const DebugViewFrame& frame, const render::PassResources& res, glm::vec2 origin,
+  void draw_into_viewport(const SelectedView& view, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin,
                           glm::vec2 scale);
   // shaders/debug/show.frag with `defines`, mapped to the viewport.
   void draw_show(const std::vector<gfx::ShaderDefine>& defines, const DebugViewFrame& frame, glm::vec2 origin, glm::vec2 scale);
 
-  assets::GpuAssets& gpu_;
-  GBuffer gbuffer_;
+  GpuAssets& gpu_;
+  lighting::GBuffer gbuffer_;
   // The slicing the clustered modes use with these options, for depth-slices
   // in any mode; made when that view is first shown.
   ClusterGridSize cluster_grid_;
   ZSlicing z_slicing_;
   int samples_ = 1;  // of the frame's targets (TechniqueOptions::msaa)
-  std::unique_ptr<ClusterGrid> slicing_;
+  std::unique_ptr<lighting::ClusterGrid> slicing_;
   FullscreenTriangle fullscreen_;
   gfx::Sampler depth_sampler_;  // the shadow atlas read as depth values, comparison off
   gfx::Texture counts_;
@@ -217,4 +217,4 @@ class DebugViews {
   glm::ivec2 size_{0};
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

@@ -12,11 +12,11 @@
 #include "gfx/depth.hpp"
 #include "assets/meshlets.hpp"
 #include "base/frustum.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_draws.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
-DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
+DrawBatch batch_state(const assets::Material& material, const GpuAssets& gpu, GLuint vertex_array, bool mirrored) {
   DrawBatch state;
   state.vertex_array = vertex_array;
   const auto slots = material.texture_slots();
@@ -55,7 +55,7 @@ struct PendingBlend {
 
 }  // namespace
 
-MaterialData material_data(const assets::Material& m, const assets::GpuAssets& gpu) {
+MaterialData material_data(const assets::Material& m, const GpuAssets& gpu) {
   MaterialData data;
   data.base_color_factor = m.base_color_factor;
   data.emissive = glm::vec4(m.emissive_factor * m.emissive_strength, m.normal_scale);
@@ -91,7 +91,7 @@ bool selected(std::uint8_t state, DrawSelection selection) {
   return false;
 }
 
-DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets, const assets::GpuAssets& gpu,
+DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets, const GpuAssets& gpu,
                          const glm::mat4& view, DrawSelection selection) {
   // An entity without culling state is in view and was shown.
   constexpr std::uint8_t kEverything = seen::kInView | seen::kLastFrame;
@@ -124,7 +124,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     for (const assets::Primitive& primitive : primitives) list.triangles += primitive.indices.size() / 3;
     if (visibility && !visibility->any) return;
 
-    const assets::GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
+    const GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
     InstanceData data;
     data.model = bounds ? bounds->model : to_matrix(transform);
     data.normal_matrix = glm::mat4(glm::transpose(glm::inverse(glm::mat3(data.model))));
@@ -135,7 +135,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       const std::uint8_t state = visibility && p < visibility->primitives.size() ? visibility->primitives[p] : kEverything;
       if (!(state & seen::kInView)) continue;
       const assets::Material& material = asset.materials.at(primitive.material);
-      const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
+      const GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
       data.material.x = index_of(material);
       const glm::vec3 centre = bounds && p < bounds->primitives.size()
                                    ? 0.5f * (bounds->primitives[p].min + bounds->primitives[p].max)
@@ -267,11 +267,11 @@ void draw_items(std::span<const DrawBatch> batches, const CommandSource& source)
       glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, first, static_cast<GLsizei>(batch.command_count), 0);
       continue;
     }
-    glDisableVertexAttribArray(assets::kInstanceIndexLocation);
+    glDisableVertexAttribArray(kInstanceIndexLocation);
     for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count && c < cpu_commands.size(); ++c) {
       const DrawCommand& command = cpu_commands[c];
       if (command.instance_count == 0) continue;
-      glVertexAttribI4ui(assets::kInstanceIndexLocation, command.base_instance, 0, 0, 0);
+      glVertexAttribI4ui(kInstanceIndexLocation, command.base_instance, 0, 0, 0);
       const auto* indices = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t));
       // Base vertex 0 throughout where the context has none (GpuAssets offsets the indices).
       if (command.base_vertex == 0) {
@@ -282,7 +282,7 @@ void draw_items(std::span<const DrawBatch> batches, const CommandSource& source)
                                           static_cast<GLsizei>(command.instance_count), command.base_vertex);
       }
     }
-    glEnableVertexAttribArray(assets::kInstanceIndexLocation);
+    glEnableVertexAttribArray(kInstanceIndexLocation);
   }
   glEnable(GL_CULL_FACE);
   glFrontFace(GL_CCW);
@@ -302,9 +302,9 @@ void draw_depth(std::span<const DrawBatch> batches, const CommandSource& source,
   draw_items(batches.subspan(split), source);
 }
 
-void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
+void draw_transparent(const PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
                       const FrameTargets& targets) {
-  if (frame.draws.blended.empty()) return;
+  if (frame.draws.list().blended.empty()) return;
   glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   glEnable(GL_DEPTH_TEST);
@@ -313,12 +313,12 @@ void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forw
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
   forward_program.use();
-  draw_items(frame.draws.blended, frame.commands);
+  draw_items(frame.draws.list().blended, frame.draws.commands());
   glDepthMask(GL_TRUE);
   glDisable(GL_BLEND);
 }
 
-void begin_scene_pass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+void begin_scene_pass(const PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
   const GLuint framebuffer = scene_framebuffer(res, frame);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
@@ -337,4 +337,4 @@ void FullscreenTriangle::draw() const {
   glBindVertexArray(0);
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

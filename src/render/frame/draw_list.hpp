@@ -22,14 +22,10 @@
 #include "gfx/shader_program.hpp"
 #include "render/frame_graph.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
 // Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
 inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlots;
-
-// Where mesh.vert finds the instance records and material.glsl the materials
-// (storage buffer bindings).
-using render::kInstanceStorageBinding, render::kMaterialStorageBinding;
 
 // std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
 struct InstanceData {
@@ -63,7 +59,7 @@ struct MaterialData {
 };
 static_assert(sizeof(MaterialData) == 224, "must match Material in shaders/common/material_data.glsl");
 
-[[nodiscard]] MaterialData material_data(const assets::Material& material, const assets::GpuAssets& gpu);
+[[nodiscard]] MaterialData material_data(const assets::Material& material, const GpuAssets& gpu);
 
 // GL's DrawElementsIndirectCommand.
 struct DrawCommand {
@@ -109,7 +105,7 @@ struct DrawBatch {
 };
 
 // The state a batch of `material`'s primitives draws with (no commands yet).
-[[nodiscard]] DrawBatch batch_state(const assets::Material& material, const assets::GpuAssets& gpu, GLuint vertex_array, bool mirrored);
+[[nodiscard]] DrawBatch batch_state(const assets::Material& material, const GpuAssets& gpu, GLuint vertex_array, bool mirrored);
 
 struct DrawList {
   // Opaque and alpha-masked geometry: ordered by state (masked last, then
@@ -150,7 +146,7 @@ enum class DrawSelection {
 // Blended surfaces in view are in every selection but Revealed: they are not
 // occlusion-culled.
 [[nodiscard]] DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& assets,
-                                       const assets::GpuAssets& gpu, const glm::mat4& view,
+                                       const GpuAssets& gpu, const glm::mat4& view,
                                        DrawSelection selection = DrawSelection::InView);
 
 // Where draw_items takes a list's commands, kept with the buffers that hold
@@ -188,13 +184,13 @@ struct FrameTargets;
 // Draws the frame's blended items over the lit image, back to front, shaded by
 // every light with `forward_program`, depth-tested against the opaque depth
 // (the body of the "transparency" pass, frame/scene_passes.hpp).
-void draw_transparent(const render::PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
+void draw_transparent(const PassResources& res, gfx::ShaderProgram& forward_program, const FrameContext& frame,
                       const FrameTargets& targets);
 
 // Binds the HDR target, clears it to the background and depth to the far
 // plane (gfx::kDepthFar, reversed depth), and sets
 // the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
-void begin_scene_pass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+void begin_scene_pass(const PassResources& res, const FrameContext& frame, const FrameTargets& targets);
 
 // A triangle that covers the viewport, for full-screen passes.
 class FullscreenTriangle {
@@ -206,4 +202,4 @@ class FullscreenTriangle {
   gfx::VertexArray vertex_array_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

@@ -5,7 +5,7 @@
 
 namespace atrium::render {
 
-FrameDraws::FrameDraws(assets::GpuAssets& gpu, gfx::ShaderLibrary& shaders) : gpu_(gpu), depth_reader_(shaders), gpu_culling_(shaders) {}
+FrameDraws::FrameDraws(GpuAssets& gpu, gfx::ShaderLibrary& shaders) : gpu_(gpu), depth_reader_(shaders), gpu_culling_(shaders) {}
 
 void FrameDraws::begin_frame(ecs::Registry& registry, CullingChoice culling, bool compute_free, std::span<const GpuLight> lights) {
   culling_ = culling;
@@ -13,21 +13,21 @@ void FrameDraws::begin_frame(ecs::Registry& registry, CullingChoice culling, boo
   occlusion_pending_ = culling.occlusion;
   triangles_occluded_ = 0;
   const auto& view = registry.resource<ViewState>();
-  list_ = lighting::build_draw_list(registry, registry.resource<assets::AssetManager>(), gpu_, view.view,
-                                    culling.on_gpu      ? lighting::DrawSelection::EachInView
-                                    : culling.occlusion ? lighting::DrawSelection::ShownLastFrame
-                                                        : lighting::DrawSelection::InView);
+  list_ = build_draw_list(registry, registry.resource<assets::AssetManager>(), gpu_, view.view,
+                                    culling.on_gpu      ? DrawSelection::EachInView
+                                    : culling.occlusion ? DrawSelection::ShownLastFrame
+                                                        : DrawSelection::InView);
   if (compute_free) storage_free_.upload(lights, list_);
   upload(list_);
 }
 
-void FrameDraws::upload(const lighting::DrawList& list) {
+void FrameDraws::upload(const DrawList& list) {
   gpu_.reserve_instances(list.instances.size());
   // The compute-free tier's records went to textures (StorageFreeRecords) and its commands stay on the CPU.
   if (!compute_free_) {
-    instances_.upload(list.instances.data(), list.instances.size() * sizeof(lighting::InstanceData));
-    materials_.upload(list.materials.data(), list.materials.size() * sizeof(lighting::MaterialData));
-    commands_.upload(list.commands.data(), list.commands.size() * sizeof(lighting::DrawCommand));
+    instances_.upload(list.instances.data(), list.instances.size() * sizeof(InstanceData));
+    materials_.upload(list.materials.data(), list.materials.size() * sizeof(MaterialData));
+    commands_.upload(list.commands.data(), list.commands.size() * sizeof(DrawCommand));
   }
   active_phase_.reset();
   bind();
@@ -40,8 +40,8 @@ void FrameDraws::bind() {
     source_ = {list_.commands, -1};
     return;
   }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceStorageBinding, instances_.buffer.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialStorageBinding, materials_.buffer.id());
   if (active_phase_) {
     source_ = {{}, gpu_culling_.bind(*active_phase_)};
   } else {
@@ -50,7 +50,16 @@ void FrameDraws::bind() {
   }
 }
 
-void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchDrawer& draw, GLuint depth, glm::ivec2 size) {
+DrawResources FrameDraws::import_into(FrameGraph& graph) const {
+  if (compute_free_) return {};
+  // As allocated: with occlusion culling on the CPU the first pass uploads
+  // more into them (what it reveals), within what earlier frames needed.
+  return {graph.import_buffer("draw-instances", instances_.buffer.id(), {instances_.capacity}),
+          graph.import_buffer("draw-materials", materials_.buffer.id(), {materials_.capacity}),
+          graph.import_buffer("draw-commands", commands_.buffer.id(), {commands_.capacity})};
+}
+
+void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& draw, GLuint depth, glm::ivec2 size) {
   draw(list_.opaque, source_);
   // Once a frame: a debug view's own geometry pass draws the list as it stands.
   if (!occlusion_pending_) return;
@@ -70,10 +79,10 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const lighting::BatchD
   const OcclusionCounts late = reveal_unhidden(registry, pyramid, view);
   if (late.tested > late.hidden) {
     const auto& assets = registry.resource<assets::AssetManager>();
-    const lighting::DrawList revealed = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Revealed);
+    const DrawList revealed = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Revealed);
     upload(revealed);
     draw(revealed.opaque, source_);
-    list_ = lighting::build_draw_list(registry, assets, gpu_, view.view, lighting::DrawSelection::Shown);
+    list_ = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Shown);
     upload(list_);
     pyramid = depth_reader_.read(depth, size);
   }
@@ -84,7 +93,11 @@ FrameModule FrameDraws::occlusion_module() {
   return {FrameStage::BeforeLighting, "occlusion culling", [this](FrameBuild& build) {
             if (!culling_.on_gpu) return;
             // Before anything draws the list: what the last frame showed.
-            build.graph.add_pass("occlusion culling", [](PassBuilder& pass) { pass.keep(); }, [this](const PassResources&) {
+            // It writes the commands the passes after it draw (GpuOcclusionCulling's
+            // phases, bound by bind()) from the uploaded ones.
+            const ResourceId commands = build.frame.draw_buffers.commands;
+            build.graph.add_pass("occlusion culling", [commands](PassBuilder& pass) { pass.write(commands, Access::Storage); },
+                                 [this](const PassResources&) {
               gpu_culling_.begin(list_, commands_.buffer.id());
               active_phase_ = GpuOcclusionCulling::Phase::First;
               bind();

@@ -31,16 +31,19 @@ struct CullingChoice {
 
 class FrameDraws {
  public:
-  FrameDraws(assets::GpuAssets& gpu, gfx::ShaderLibrary& shaders);
+  FrameDraws(GpuAssets& gpu, gfx::ShaderLibrary& shaders);
 
   // Builds the frame's list from the registry (with occlusion culling: what
   // the last frame showed, or on the GPU every command in view), uploads it
   // with the lights of the compute-free tier (`compute_free`), and binds it.
   void begin_frame(ecs::Registry& registry, CullingChoice culling, bool compute_free, std::span<const GpuLight> lights);
-  [[nodiscard]] const lighting::DrawList& list() const { return list_; }
+  [[nodiscard]] const DrawList& list() const { return list_; }
   // Where the list's commands are drawn from now (FrameContext::commands).
-  [[nodiscard]] const lighting::CommandSource& commands() const { return source_; }
+  [[nodiscard]] const CommandSource& commands() const { return source_; }
   [[nodiscard]] bool culled_on_gpu() const { return culling_.on_gpu; }
+  // The list's buffers in this frame's graph (FrameContext::draw_buffers),
+  // made by begin_frame; none on the compute-free tier.
+  [[nodiscard]] DrawResources import_into(FrameGraph& graph) const;
 
   // Binds the list's buffers (or the tier's textures) again, after a pass that
   // bound its own (the shadow maps), and sets commands() to match.
@@ -49,19 +52,20 @@ class FrameDraws {
   // once a frame with occlusion culling, what the depth it wrote (`depth`, the
   // scene's depth-stencil texture) does not hide; list() then holds both.
   // Returns the triangles found hidden on the CPU (GPU counts arrive later: take_gpu_counts).
-  void draw_first_pass(ecs::Registry& registry, const lighting::BatchDrawer& draw, GLuint depth, glm::ivec2 size);
+  void draw_first_pass(ecs::Registry& registry, const BatchDrawer& draw, GLuint depth, glm::ivec2 size);
   [[nodiscard]] std::size_t triangles_occluded() const { return triangles_occluded_; }
   [[nodiscard]] std::optional<GpuCullingCounts> take_gpu_counts() { return gpu_culling_.take_counts(); }
 
   // The "occlusion culling" module (before lighting): with GPU culling, the
-  // pass that tests the list's commands before anything draws them.
+  // pass that tests the list's commands before anything draws them (it
+  // writes FrameContext::draw_buffers.commands, which every drawing pass reads).
   [[nodiscard]] FrameModule occlusion_module();
 
  private:
-  void upload(const lighting::DrawList& list);
+  void upload(const DrawList& list);
 
-  assets::GpuAssets& gpu_;
-  lighting::DrawList list_;
+  GpuAssets& gpu_;
+  DrawList list_;
   CullingChoice culling_;
   bool compute_free_ = false;
   bool occlusion_pending_ = false;  // list_ holds only what the last frame showed; draw_first_pass tests the rest
@@ -72,7 +76,7 @@ class FrameDraws {
   GpuOcclusionCulling gpu_culling_;
   // The GPU culling phase whose commands passes draw list_ from; none: the uploaded commands.
   std::optional<GpuOcclusionCulling::Phase> active_phase_;
-  lighting::CommandSource source_;  // what bind() bound
+  CommandSource source_;  // what bind() bound
 };
 
 }  // namespace atrium::render

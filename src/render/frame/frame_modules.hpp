@@ -18,7 +18,7 @@
 
 #include "ecs/registry.hpp"
 #include "render/frame_graph.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_context.hpp"
 
 namespace atrium::render {
 
@@ -37,8 +37,8 @@ inline constexpr std::array<std::string_view, 6> kFrameStageNames{"before lighti
 struct FrameBuild {
   FrameGraph& graph;
   ecs::Registry& registry;
-  const lighting::FrameContext& frame;
-  const lighting::FrameTargets& targets;
+  const FrameContext& frame;
+  const FrameTargets& targets;
   // The frame's colour image: the lit HDR image (frame.scene_color) until a
   // post-process pass sets the image it wrote in its place; the output stage
   // tone-maps what is here at its start.

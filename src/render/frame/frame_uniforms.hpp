@@ -5,9 +5,8 @@
 
 #include <glm/glm.hpp>
 
-namespace atrium::lighting {
+namespace atrium::render {
 
-using render::kFrameUniformBinding, render::kLightStorageBinding;
 
 struct FrameUniforms {
   glm::mat4 view;
@@ -26,4 +25,4 @@ struct FrameUniforms {
 };
 static_assert(sizeof(FrameUniforms) == 336, "must match FrameBlock in shaders/common/frame.glsl");
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

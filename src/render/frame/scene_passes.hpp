@@ -9,20 +9,21 @@
 
 #include "render/frame_graph.hpp"
 #include "render/lighting/gbuffer.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_context.hpp"
+#include "render/frame/frame_draws.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 
 // Adds the "geometry" pass, which makes `gbuffer`'s targets for this frame
 // (GBuffer::create_targets) and fills them and the scene depth; passes that
 // shade from them declare GBuffer::read_targets.
-void add_geometry_pass(render::FrameGraph& graph, GBuffer& gbuffer, gfx::ShaderProgram& program, const FrameContext& frame,
+void add_geometry_pass(FrameGraph& graph, lighting::GBuffer& gbuffer, gfx::ShaderProgram& program, const FrameContext& frame,
                        const FrameTargets& targets);
 
 // The "transparency" pass, when the frame has blended items: `prepare` runs
 // first (binding the light lists the program reads, say); `reads` declares
 // what it reads beyond the scene's depth, colour and lights.
-void add_transparency_pass(render::FrameGraph& graph, gfx::ShaderProgram& program, const FrameContext& frame, const FrameTargets& targets,
-                           const std::function<void(render::PassBuilder&)>& reads = {}, std::function<void()> prepare = {});
+void add_transparency_pass(FrameGraph& graph, gfx::ShaderProgram& program, const FrameContext& frame, const FrameTargets& targets,
+                           const std::function<void(PassBuilder&)>& reads = {}, std::function<void()> prepare = {});
 
-}  // namespace atrium::lighting
+}  // namespace atrium::render

@@ -122,22 +122,22 @@ std::uint32_t ClusterGrid::slice_of(float view_depth) const {
 
 void ClusterGrid::assign(const LightAssignmentPrograms& programs, std::uint32_t light_count, GLuint per_cluster) {
   list_.assign(light_count, programs, [&] {
-    glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, render::kClusterUniformBinding, uniform_buffer_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBoundsBinding, bounds_.id());
-    if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, per_cluster);
+    if (per_cluster) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kPerClusterBinding, per_cluster);
   });
 }
 
 void ClusterGrid::bind() const {
-  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, uniform_buffer_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, render::kClusterUniformBinding, uniform_buffer_.id());
   list_.bind();
 }
 
-std::vector<std::vector<std::uint32_t>> ClusterGrid::assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const {
+std::vector<std::vector<std::uint32_t>> ClusterGrid::assign_on_cpu(std::span<const render::GpuLight> lights, const glm::mat4& view) const {
   std::vector<std::vector<std::uint32_t>> lists(cluster_count());
   for (std::uint32_t l = 0; l < lights.size(); ++l) {
-    const GpuLight& light = lights[l];
-    const bool everywhere = light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+    const render::GpuLight& light = lights[l];
+    const bool everywhere = light.color_kind.w == static_cast<float>(render::GpuLightKind::Directional);
     const glm::vec3 centre(view * glm::vec4(glm::vec3(light.position_radius), 1.0f));
     const float radius = light.position_radius.w;
     for (std::uint32_t c = 0; c < cluster_count(); ++c) {

@@ -78,7 +78,7 @@ class ClusterGrid {
 
   // The assignment done on the CPU with the same boxes and test, and the GPU's
   // lists read back: both as light indices per cluster, in light order (for tests).
-  [[nodiscard]] std::vector<std::vector<std::uint32_t>> assign_on_cpu(std::span<const GpuLight> lights, const glm::mat4& view) const;
+  [[nodiscard]] std::vector<std::vector<std::uint32_t>> assign_on_cpu(std::span<const render::GpuLight> lights, const glm::mat4& view) const;
   [[nodiscard]] std::vector<std::vector<std::uint32_t>> read_lists() const { return list_.read(); }
 
  private:

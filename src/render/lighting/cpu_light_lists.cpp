@@ -63,15 +63,15 @@ struct ClusterWalk {
 };
 
 // GLSL twin: view_sphere in common/light_scatter.glsl.
-glm::vec4 view_sphere(const GpuLight& light, const glm::mat4& view) {
-  const bool everywhere = light.color_kind.w == static_cast<float>(GpuLightKind::Directional);
+glm::vec4 view_sphere(const render::GpuLight& light, const glm::mat4& view) {
+  const bool everywhere = light.color_kind.w == static_cast<float>(render::GpuLightKind::Directional);
   return glm::vec4(glm::vec3(view * glm::vec4(glm::vec3(light.position_radius), 1.0f)), everywhere ? -1.0f : light.position_radius.w);
 }
 
 // The lists of `bins` bins, each light listed in the bins each_touched(sphere,
 // visit) visits, split over threads by runs of lights.
 template <typename EachTouched>
-CpuLightLists bin_lights(std::span<const GpuLight> lights, const glm::mat4& view, std::size_t bins, unsigned threads,
+CpuLightLists bin_lights(std::span<const render::GpuLight> lights, const glm::mat4& view, std::size_t bins, unsigned threads,
                          const EachTouched& each_touched) {
   if (threads == 0) threads = hardware_threads();
   const std::size_t shares = std::clamp<std::size_t>(lights.size() / kLightsPerBinningThread, 1, threads);
@@ -183,13 +183,13 @@ struct TileWalk {
 
 }  // namespace
 
-CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid, unsigned threads) {
+CpuLightLists bin_lights_in_clusters(std::span<const render::GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid, unsigned threads) {
   const ClusterWalk walk{grid};
   return bin_lights(lights, view, grid.boxes().size(), threads,
                     [&](glm::vec4 sphere, const auto& visit) { walk.each_touched(sphere, visit); });
 }
 
-CpuLightLists bin_lights_in_tiles(std::span<const GpuLight> lights, const glm::mat4& view, const glm::mat4& projection, glm::ivec2 viewport,
+CpuLightLists bin_lights_in_tiles(std::span<const render::GpuLight> lights, const glm::mat4& view, const glm::mat4& projection, glm::ivec2 viewport,
                                   int tile_size, float near_plane, float far_plane, unsigned threads) {
   const glm::uvec2 tiles = (glm::uvec2(viewport) + glm::uvec2(tile_size - 1)) / glm::uvec2(tile_size);
   const TileWalk walk{tiles, 2.0f * static_cast<float>(tile_size) / glm::vec2(viewport),

@@ -34,7 +34,7 @@ inline constexpr std::size_t kLightsPerBinningThread = 256;
 // The lists of every cluster of `grid` (as last updated: its boxes, slicing
 // and projection; grid bounds, no pixel boxes) for `lights` seen through
 // `view`, on up to `threads` threads (0: one per hardware thread).
-[[nodiscard]] CpuLightLists bin_lights_in_clusters(std::span<const GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid,
+[[nodiscard]] CpuLightLists bin_lights_in_clusters(std::span<const render::GpuLight> lights, const glm::mat4& view, const ClusterGrid& grid,
                                                    unsigned threads = 0);
 
 // The lists of the viewport's `tile_size`-pixel screen tiles (row by row from
@@ -42,7 +42,7 @@ inline constexpr std::size_t kLightsPerBinningThread = 256;
 // tiles whose frustum (side planes through the eye, from the near to the far
 // plane: no depth bounds, which would take the depth buffer back) its sphere
 // reaches. `projection` must be symmetric, as gfx::perspective makes it.
-[[nodiscard]] CpuLightLists bin_lights_in_tiles(std::span<const GpuLight> lights, const glm::mat4& view, const glm::mat4& projection,
+[[nodiscard]] CpuLightLists bin_lights_in_tiles(std::span<const render::GpuLight> lights, const glm::mat4& view, const glm::mat4& projection,
                                                 glm::ivec2 viewport, int tile_size, float near_plane, float far_plane,
                                                 unsigned threads = 0);
 

@@ -56,7 +56,7 @@ std::optional<GBuffer::Found> GBuffer::find(const render::FrameGraph& graph) {
   return std::nullopt;
 }
 
-void GBuffer::draw_geometry(const render::PassResources& res, gfx::ShaderProgram& program, const FrameContext& frame) {
+void GBuffer::draw_geometry(const render::PassResources& res, gfx::ShaderProgram& program, const render::FrameContext& frame) {
   const auto layout = targets();
   const GLuint framebuffer = res.framebuffer(resources(), depth_);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -81,7 +81,7 @@ void GBuffer::draw_geometry(const render::PassResources& res, gfx::ShaderProgram
   const bool srgb_switch = gfx::gl_features().srgb_write_control;
   if (srgb_switch) glEnable(GL_FRAMEBUFFER_SRGB);
   program.use();
-  frame.draw_first_pass(draw_items);
+  frame.draw_first_pass(res, render::draw_items);
   if (srgb_switch) glDisable(GL_FRAMEBUFFER_SRGB);
   if (edges_) mark_edges(res);
 }
@@ -114,9 +114,9 @@ void GBuffer::bind_textures(const render::PassResources& res, const Found& found
 
 void GBuffer::bind_textures(const render::PassResources& res) const { bind_textures(res, {layout_, resources_, targets().size()}); }
 
-void GBuffer::draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameContext& frame,
-                              const FrameTargets& targets) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, lighting_framebuffer(res, frame));
+void GBuffer::draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const render::FrameContext& frame,
+                              const render::FrameTargets& targets) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, render::lighting_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);

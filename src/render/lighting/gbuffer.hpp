@@ -20,7 +20,7 @@
 #include "gfx/shader_program.hpp"
 #include "render/shader_globals.hpp"
 #include "render/lighting/sample_rate.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_context.hpp"
 #include "components/technique_options.hpp"
 
 namespace atrium::lighting {
@@ -62,13 +62,13 @@ class GBuffer {
 
   // Fills the G-buffer with the opaque and masked draw items; with MSAA then
   // sets kEdgeStencilBit on the pixels whose samples differ.
-  void draw_geometry(const render::PassResources& res, gfx::ShaderProgram& program, const FrameContext& frame);
+  void draw_geometry(const render::PassResources& res, gfx::ShaderProgram& program, const render::FrameContext& frame);
   // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures(const render::PassResources& res) const;
   // A full-screen pass with `programs` reading the G-buffer into the lighting
-  // targets (lighting_framebuffer in render/techniques/technique.hpp), per pixel or per sample.
-  void draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const FrameContext& frame,
-                       const FrameTargets& targets) const;
+  // targets (lighting_framebuffer in render/frame/frame_context.hpp), per pixel or per sample.
+  void draw_fullscreen(const render::PassResources& res, const SampleRatePrograms& programs, const render::FrameContext& frame,
+                       const render::FrameTargets& targets) const;
 
   [[nodiscard]] std::span<const Target> targets() const { return targets(layout_); }
   [[nodiscard]] GBufferLayout layout() const { return layout_; }
@@ -108,7 +108,7 @@ class GBuffer {
   glm::ivec2 size_{0};
   std::array<render::ResourceId, kMaxTargets> resources_;  // this frame's, set by create_targets
   render::ResourceId depth_;
-  FullscreenTriangle fullscreen_;
+  render::FullscreenTriangle fullscreen_;
 };
 
 }  // namespace atrium::lighting

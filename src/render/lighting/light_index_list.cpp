@@ -184,10 +184,10 @@ void LightIndexList::run(std::uint32_t light_count, const LightAssignmentProgram
   glCopyNamedBufferSubData(resets_.id(), long_bins_.id(), kResetListOffset, 0, sizeof kEmptyList);
   glCopyNamedBufferSubData(resets_.id(), big_lights_.id(), kResetListOffset, 0, sizeof kEmptyList);
   bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLongBinsBinding, long_bins_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBinCountsBinding, bin_counts_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightFitsBinding, fits_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kBigLightsBinding, big_lights_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLongBinsBinding, long_bins_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kBinCountsBinding, bin_counts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightFitsBinding, fits_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kBigLightsBinding, big_lights_.id());
   bind_inputs();
   if (method == LightAssignment::Gather) gather(light_count, programs);
   else scatter(light_count, programs);
@@ -282,10 +282,10 @@ void LightIndexList::assign(std::uint32_t light_count, const LightAssignmentProg
 }
 
 void LightIndexList::bind() const {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightRangesBinding, ranges_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightIndicesBinding, indices_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLightTotalBinding, total_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOverflowLightsBinding, overflow_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightRangesBinding, ranges_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightIndicesBinding, indices_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightTotalBinding, total_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kOverflowLightsBinding, overflow_.id());
 }
 
 render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const std::string& name, render::ViewKind view) const {

@@ -57,9 +57,9 @@ void LightingPass::each(const std::function<void(gfx::ShaderProgram&)>& f) const
   else fragment_->each(f);
 }
 
-void LightingPass::declare(render::PassBuilder& pass, const GBuffer& gbuffer, const FrameContext& frame) const {
+void LightingPass::declare(render::PassBuilder& pass, const GBuffer& gbuffer, const render::FrameContext& frame) const {
   gbuffer.read_targets(pass);
-  read_shading_inputs(pass, frame);
+  render::read_shading_inputs(pass, frame);
   const render::Access access = compute_ ? render::Access::Storage : render::Access::Attachment;
   pass.write(frame.scene_color, access);
   for (const render::ResourceId sum : {frame.diffuse_light, frame.specular_light}) {
@@ -67,7 +67,7 @@ void LightingPass::declare(render::PassBuilder& pass, const GBuffer& gbuffer, co
   }
 }
 
-void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer, const FrameContext& frame, const FrameTargets& targets) const {
+void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer, const render::FrameContext& frame, const render::FrameTargets& targets) const {
   const bool add = write_ == Write::Add;
   if (!compute_) {
     if (add) {
@@ -80,10 +80,10 @@ void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer,
   }
   gbuffer.bind_textures(res);
   const GLenum access = add ? GL_READ_WRITE : GL_WRITE_ONLY;
-  glBindImageTexture(kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, access, GL_RGBA16F);
+  glBindImageTexture(render::kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, access, GL_RGBA16F);
   if (frame.diffuse_light.valid()) {
-    glBindImageTexture(kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
-    glBindImageTexture(kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
+    glBindImageTexture(render::kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
+    glBindImageTexture(render::kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
   }
   // The run before stored these pixels: its stores must land before this run reads them.
   if (add) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);

@@ -21,7 +21,7 @@
 #include "render/frame_graph.hpp"
 #include "render/lighting/gbuffer.hpp"
 #include "render/lighting/sample_rate.hpp"
-#include "render/techniques/technique.hpp"
+#include "render/frame/frame_context.hpp"
 
 namespace atrium::lighting {
 
@@ -67,9 +67,9 @@ class LightingPass {
   // Declares what the pass reads (the G-buffer, the lights and the shadow
   // atlas; its light lists are the technique's) and the lit targets it
   // writes, as the stage reaches them.
-  void declare(render::PassBuilder& pass, const GBuffer& gbuffer, const FrameContext& frame) const;
+  void declare(render::PassBuilder& pass, const GBuffer& gbuffer, const render::FrameContext& frame) const;
   // Shades every pixel of the lit targets from the G-buffer.
-  void run(const render::PassResources& res, const GBuffer& gbuffer, const FrameContext& frame, const FrameTargets& targets) const;
+  void run(const render::PassResources& res, const GBuffer& gbuffer, const render::FrameContext& frame, const render::FrameTargets& targets) const;
 
  private:
   std::optional<SampleRatePrograms> fragment_;

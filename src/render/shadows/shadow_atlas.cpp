@@ -23,7 +23,7 @@ bool box_meets_sphere(const Box& box, glm::vec3 centre, float radius) {
 
 
 // What a map depends on besides geometry: position, reach, direction, cone, kind.
-bool same_light(const GpuLight& a, const GpuLight& b) {
+bool same_light(const render::GpuLight& a, const render::GpuLight& b) {
   return a.position_radius == b.position_radius && a.direction == b.direction && a.color_kind.w == b.color_kind.w &&
          glm::vec2(a.spot) == glm::vec2(b.spot);
 }
@@ -44,21 +44,21 @@ bool glows(const assets::Material& material) {
 // The batch state of a caster: depth-only passes need textures only for the
 // alpha test, and draw both faces so that open geometry (a single-sided wall
 // seen from behind) still blocks light.
-auto caster_key(const lighting::DrawBatch& b) { return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers); }
+auto caster_key(const render::DrawBatch& b) { return std::tie(b.alpha_masked, b.vertex_array, b.textures, b.samplers); }
 
 // Sends the patched lights of the staging copy to the GPU: runs of indices
 // less than kGap apart go as one upload (the lights between are unchanged, so
 // resending them is harmless), which keeps K shadowed lights from costing K
 // calls without resending a million lights for two far apart.
-void upload_patched_lights(const LightBuffer& lights, std::vector<std::uint32_t>& patched) {
+void upload_patched_lights(const render::LightBuffer& lights, std::vector<std::uint32_t>& patched) {
   constexpr std::uint32_t kGap = 64;
   std::sort(patched.begin(), patched.end());
   for (std::size_t begin = 0; begin < patched.size();) {
     std::size_t end = begin + 1;
     while (end < patched.size() && patched[end] - patched[end - 1] < kGap) ++end;
     const std::uint32_t first = patched[begin], last = patched[end - 1];
-    glNamedBufferSubData(lights.buffer.id(), static_cast<GLintptr>(first * sizeof(GpuLight)),
-                         static_cast<GLsizeiptr>((last - first + 1) * sizeof(GpuLight)), &lights.staging[first]);
+    glNamedBufferSubData(lights.buffer.id(), static_cast<GLintptr>(first * sizeof(render::GpuLight)),
+                         static_cast<GLsizeiptr>((last - first + 1) * sizeof(render::GpuLight)), &lights.staging[first]);
     begin = end;
   }
 }
@@ -69,7 +69,7 @@ void upload_patched_lights(const LightBuffer& lights, std::vector<std::uint32_t>
 // first, with the map lookup, and the rest without it (common/shading.glsl):
 // a lookup in one loop body would cost every light on a GPU's divergent lanes
 // and on llvmpipe, which runs both sides of a branch.
-void move_to_front(LightBuffer& lights, std::vector<ShadowChoice>& choices, std::vector<std::uint32_t>& moved) {
+void move_to_front(render::LightBuffer& lights, std::vector<ShadowChoice>& choices, std::vector<std::uint32_t>& moved) {
   const auto front = static_cast<std::uint32_t>(choices.size());
   std::vector<bool> taken(front, false);
   for (const ShadowChoice& c : choices) {
@@ -90,7 +90,7 @@ void move_to_front(LightBuffer& lights, std::vector<ShadowChoice>& choices, std:
 
 }  // namespace
 
-ShadowAtlas::ShadowAtlas(assets::GpuAssets& gpu) : gpu_(gpu), allocator_(limits_.max_tile, limits_.min_tile) {}
+ShadowAtlas::ShadowAtlas(render::GpuAssets& gpu) : gpu_(gpu), allocator_(limits_.max_tile, limits_.min_tile) {}
 
 void ShadowAtlas::release() {
   entries_.clear();
@@ -162,15 +162,15 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
   caster_materials_.clear();
   const auto& assets = registry.resource<assets::AssetManager>();
   std::map<const assets::Material*, std::uint32_t> material_index;
-  std::vector<lighting::DrawBatch> states;  // distinct caster states, in order of first use
+  std::vector<render::DrawBatch> states;  // distinct caster states, in order of first use
   registry.view<Transform, MeshInstance, WorldBounds>().each([&](const Transform&, const MeshInstance& instance, const WorldBounds& bounds) {
     if (bounds.empty || bounds.asset != instance.asset || bounds.mesh != instance.mesh) return;
     const assets::MeshAsset& asset = assets.mesh_asset(instance.asset);
     if (instance.mesh >= asset.meshes.size()) return;
-    const assets::GpuMeshAsset& gpu_asset = gpu_.mesh_asset(instance.asset);
+    const render::GpuMeshAsset& gpu_asset = gpu_.mesh_asset(instance.asset);
     const auto& primitives = asset.meshes[instance.mesh].primitives;
     bool used = false;
-    lighting::InstanceData data;
+    render::InstanceData data;
     data.model = bounds.model;
     for (std::uint32_t p = 0; p < primitives.size() && p < bounds.primitives.size(); ++p) {
       const assets::Primitive& primitive = primitives[p];
@@ -178,7 +178,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
       const assets::Material& material = asset.materials.at(primitive.material);
       // Blended surfaces cast no shadow (glass lets light through).
       if (material.alpha_mode == assets::AlphaMode::Blend) continue;
-      lighting::DrawBatch state = lighting::batch_state(material, gpu_, gpu_asset.vertex_array.id(), false);
+      render::DrawBatch state = render::batch_state(material, gpu_, gpu_asset.vertex_array.id(), false);
       state.double_sided = true;
       std::uint32_t material_slot = 0;
       if (!state.alpha_masked) {
@@ -186,7 +186,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
         state.samplers = {};
       } else {
         const auto [it, added] = material_index.try_emplace(&material, static_cast<std::uint32_t>(caster_materials_.size()));
-        if (added) caster_materials_.push_back(lighting::material_data(material, gpu_));
+        if (added) caster_materials_.push_back(render::material_data(material, gpu_));
         material_slot = it->second;
       }
       // Casters share a material record only through the instance, so a masked
@@ -196,12 +196,12 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
         caster_instances_.push_back(data);
         used = true;
       }
-      auto found = std::find_if(states.begin(), states.end(), [&](const lighting::DrawBatch& s) { return caster_key(s) == caster_key(state); });
+      auto found = std::find_if(states.begin(), states.end(), [&](const render::DrawBatch& s) { return caster_key(s) == caster_key(state); });
       if (found == states.end()) {
         states.push_back(state);
         found = states.end() - 1;
       }
-      const assets::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
+      const render::GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
       Caster caster{bounds.primitives[p], static_cast<std::uint32_t>(found - states.begin()),
                     {range.index_count, 1, range.first_index, range.base_vertex, static_cast<std::uint32_t>(caster_instances_.size() - 1)}};
       caster.glows = glows(material);
@@ -227,7 +227,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
   if (caster_materials_.empty()) caster_materials_.emplace_back();
 }
 
-bool ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
+bool ShadowAtlas::update(ecs::Registry& registry, render::LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
                          bool redraw) {
   stats_ = {};
   pending_views_.clear();
@@ -267,7 +267,7 @@ bool ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
   auto place = [&](const ShadowChoice& c) {
     Entry entry;
     entry.resolution = c.resolution;
-    const int tiles = view_count(static_cast<GpuLightKind>(lights.staging[c.light].color_kind.w));
+    const int tiles = view_count(static_cast<render::GpuLightKind>(lights.staging[c.light].color_kind.w));
     for (int t = 0; t < tiles; ++t) {
       const auto tile = allocator_.allocate(c.resolution);
       if (!tile) {
@@ -307,19 +307,19 @@ bool ShadowAtlas::update(ecs::Registry& registry, LightBuffer& lights, const Vie
   const float atlas_texels = static_cast<float>(limits_.atlas_size);
   for (const ShadowChoice& c : choices) {
     Entry& entry = entries_.at(c.entity);
-    GpuLight& light = lights.staging[c.light];
-    const auto kind = static_cast<GpuLightKind>(light.color_kind.w);
+    render::GpuLight& light = lights.staging[c.light];
+    const auto kind = static_cast<render::GpuLightKind>(light.color_kind.w);
     std::vector<ShadowView> light_views;
-    if (kind == GpuLightKind::Point) {
+    if (kind == render::GpuLightKind::Point) {
       const auto faces = point_views(light, entry.resolution);
       light_views.assign(faces.begin(), faces.end());
-    } else if (kind == GpuLightKind::Spot) {
+    } else if (kind == render::GpuLightKind::Spot) {
       light_views.push_back(spot_view(light, entry.resolution));
     } else {
       const auto cascades = cascade_views(light, cascade_frame, entry.resolution);
       light_views.assign(cascades.begin(), cascades.end());
     }
-    const glm::vec4 sphere = kind == GpuLightKind::Directional ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f) : light.position_radius;
+    const glm::vec4 sphere = kind == render::GpuLightKind::Directional ? glm::vec4(0.0f, 0.0f, 0.0f, -1.0f) : light.position_radius;
     bool stale = redraw || !entry.drawn || !same_light(entry.drawn_light, light) || entry.drawn_views.size() != light_views.size();
     for (std::size_t v = 0; !stale && v < light_views.size(); ++v) stale = entry.drawn_views[v] != light_views[v].view_projection;
     for (std::size_t b = 0; !stale && b < changed_.size(); ++b) {
@@ -369,8 +369,8 @@ void ShadowAtlas::draw_pending(ecs::Registry& registry) {
 
 void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<const glm::vec4> reach) {
   // Per view, its casters in state order: one batch per run of a state.
-  std::vector<lighting::DrawCommand> commands;
-  std::vector<std::vector<lighting::DrawBatch>> batches(views.size());
+  std::vector<render::DrawCommand> commands;
+  std::vector<std::vector<render::DrawBatch>> batches(views.size());
   std::vector<std::uint32_t> selected;
   std::vector<std::uint32_t> near_light;
   for (std::size_t v = 0; v < views.size(); ++v) {
@@ -395,7 +395,7 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     std::stable_sort(selected.begin(), selected.end(), [&](std::uint32_t a, std::uint32_t b) { return casters_[a].state < casters_[b].state; });
     for (const std::uint32_t c : selected) {
       const Caster& caster = casters_[c];
-      auto add = [&](lighting::DrawCommand command) {
+      auto add = [&](render::DrawCommand command) {
         if (batches[v].empty() || caster_key(batches[v].back()) != caster_key(caster_states_[caster.state])) {
           batches[v].push_back(caster_states_[caster.state]);
           batches[v].back().first_command = static_cast<std::uint32_t>(commands.size());
@@ -419,7 +419,7 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
                    (sphere.w < 0.0f || glm::length(bounds.center - glm::vec3(sphere)) <= sphere.w + bounds.radius);
           },
           [&](std::uint32_t first_index, std::uint32_t index_count) {
-            lighting::DrawCommand run = caster.command;
+            render::DrawCommand run = caster.command;
             run.first_index += first_index;
             run.count = index_count;
             add(run);
@@ -434,15 +434,15 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     instance_texture_.bind(render::kInstanceTextureUnit);
     material_texture_.bind(render::kMaterialTextureUnit);
   } else {
-    instances_.upload(caster_instances_.data(), caster_instances_.size() * sizeof(lighting::InstanceData));
-    materials_.upload(caster_materials_.data(), caster_materials_.size() * sizeof(lighting::MaterialData));
-    commands_.upload(commands.data(), commands.size() * sizeof(lighting::DrawCommand));
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kInstanceStorageBinding, instances_.buffer.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, lighting::kMaterialStorageBinding, materials_.buffer.id());
+    instances_.upload(caster_instances_.data(), caster_instances_.size() * sizeof(render::InstanceData));
+    materials_.upload(caster_materials_.data(), caster_materials_.size() * sizeof(render::MaterialData));
+    commands_.upload(commands.data(), commands.size() * sizeof(render::DrawCommand));
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kInstanceStorageBinding, instances_.buffer.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialStorageBinding, materials_.buffer.id());
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, commands_.buffer.id());
   }
   // The casters' commands, all of them; whoever draws next binds its own.
-  const lighting::CommandSource source{compute_free_ ? std::span<const lighting::DrawCommand>(commands) : std::span<const lighting::DrawCommand>(), -1};
+  const render::CommandSource source{compute_free_ ? std::span<const render::DrawCommand>(commands) : std::span<const render::DrawCommand>(), -1};
 
   gfx::ShaderProgram& position_only = gpu_.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}, {"SHADOW_PASS"}});
   gfx::ShaderProgram& masked = gpu_.shaders().get({"common/mesh.vert", "common/depth_masked.frag"}, {{"SHADOW_PASS"}});
@@ -467,7 +467,7 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
     if (batches[v].empty()) continue;
     position_only.set("u_shadow_view_projection", view.view_projection);
     masked.set("u_shadow_view_projection", view.view_projection);
-    lighting::draw_depth(batches[v], source, position_only, masked);
+    render::draw_depth(batches[v], source, position_only, masked);
   }
   glDisable(GL_POLYGON_OFFSET_FILL);
   glDisable(GL_SCISSOR_TEST);

@@ -58,7 +58,7 @@ class ShadowAtlas {
     if (inputs.settings.shadows > 0) defines.push_back({"SHADOWS"});
   }
 
-  explicit ShadowAtlas(assets::GpuAssets& gpu);
+  explicit ShadowAtlas(render::GpuAssets& gpu);
   // The compute-free tier (render/storage_free.hpp): views, caster instances
   // and materials in textures, casters drawn from the CPU's commands.
   void set_compute_free(bool on) { compute_free_ = on; }
@@ -69,7 +69,7 @@ class ShadowAtlas {
   // shaders. Returns whether some maps must be drawn: draw_pending, the
   // frame's "shadows" pass. `count` 0 gives everything back; `redraw` draws
   // every map, changed or not (to measure the worst case).
-  [[nodiscard]] bool update(ecs::Registry& registry, LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
+  [[nodiscard]] bool update(ecs::Registry& registry, render::LightBuffer& lights, const ViewState& view, glm::ivec2 viewport, int count,
                             bool redraw);
   // Draws the maps update() found stale, with instance, material and command
   // buffers of its own (bound when it returns), then binds the atlas again.
@@ -88,7 +88,7 @@ class ShadowAtlas {
   struct Entry {
     int resolution = 0;
     std::vector<AtlasTile> tiles;
-    GpuLight drawn_light{};                 // the light as its maps show it
+    render::GpuLight drawn_light{};                 // the light as its maps show it
     std::vector<glm::mat4> drawn_views;     // the matrices they were drawn with
     bool drawn = false;
   };
@@ -96,7 +96,7 @@ class ShadowAtlas {
   struct Caster {
     Box box;
     std::uint32_t state = 0;  // index into caster_states_ (masked states sort last)
-    lighting::DrawCommand command;
+    render::DrawCommand command;
     // Its meshlets (world bounds, index ranges within the primitive), when it
     // is cut into them: a view then draws only the runs inside it.
     const MeshletBounds* meshlet_bounds = nullptr;
@@ -117,7 +117,7 @@ class ShadowAtlas {
   void draw_maps(const std::vector<std::uint32_t>& views, std::span<const glm::vec4> reach);
   void bind() const;
 
-  assets::GpuAssets& gpu_;
+  render::GpuAssets& gpu_;
   AtlasLimits limits_;
   AtlasAllocator allocator_;
   gfx::Texture atlas_;
@@ -142,9 +142,9 @@ class ShadowAtlas {
   std::uint64_t frame_ = 0;
   // The frame's casters (gathered only on frames that draw a map).
   std::vector<Caster> casters_;
-  std::vector<lighting::DrawBatch> caster_states_;
-  std::vector<lighting::InstanceData> caster_instances_;
-  std::vector<lighting::MaterialData> caster_materials_;
+  std::vector<render::DrawBatch> caster_states_;
+  std::vector<render::InstanceData> caster_instances_;
+  std::vector<render::MaterialData> caster_materials_;
   ShadowStats stats_;
 };
 

@@ -31,11 +31,11 @@ int map_resolution(float pixels, int previous, const AtlasLimits& limits) {
 
 // The estimated contribution of one light to the image (0 when its sphere
 // misses `frustum`, the view's) and its radius on screen in pixels.
-float light_importance(const GpuLight& light, const ViewState& view, const Frustum& frustum, glm::ivec2 viewport, float& pixels_radius) {
+float light_importance(const render::GpuLight& light, const ViewState& view, const Frustum& frustum, glm::ivec2 viewport, float& pixels_radius) {
   const glm::vec3 color(light.color_kind);
   const float luminance = glm::dot(color, glm::vec3(0.2126f, 0.7152f, 0.0722f));
   const float screen_pixels = static_cast<float>(viewport.x) * static_cast<float>(viewport.y);
-  if (static_cast<GpuLightKind>(light.color_kind.w) == GpuLightKind::Directional) {
+  if (static_cast<render::GpuLightKind>(light.color_kind.w) == render::GpuLightKind::Directional) {
     // Cascades cover the whole view at every size: as large as a tile may be.
     pixels_radius = std::numeric_limits<float>::max();
     return luminance > 0.0f ? std::numeric_limits<float>::max() : 0.0f;
@@ -56,7 +56,7 @@ float light_importance(const GpuLight& light, const ViewState& view, const Frust
 
 }  // namespace
 
-std::vector<ShadowChoice> choose_shadowed_lights(std::span<const GpuLight> lights, std::span<const ecs::Entity> entities,
+std::vector<ShadowChoice> choose_shadowed_lights(std::span<const render::GpuLight> lights, std::span<const ecs::Entity> entities,
                                                  const ViewState& view, glm::ivec2 viewport, int count,
                                                  const PreviousShadows& previous, const AtlasLimits& limits) {
   std::vector<ShadowChoice> choices;
@@ -78,7 +78,7 @@ std::vector<ShadowChoice> choose_shadowed_lights(std::span<const GpuLight> light
                     [](const ShadowChoice& a, const ShadowChoice& b) { return a.score != b.score ? a.score > b.score : a.entity < b.entity; });
   choices.resize(kept);
 
-  auto faces = [&](const ShadowChoice& c) { return view_count(static_cast<GpuLightKind>(lights[c.light].color_kind.w)); };
+  auto faces = [&](const ShadowChoice& c) { return view_count(static_cast<render::GpuLightKind>(lights[c.light].color_kind.w)); };
   long long area = 0;
   for (ShadowChoice& c : choices) {
     const auto before = previous.find(c.entity);

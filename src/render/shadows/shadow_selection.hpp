@@ -45,7 +45,7 @@ using PreviousShadows = std::unordered_map<ecs::Entity, int>;
 
 // Up to `count` lights, most important first, their maps' areas adding up to at
 // most the atlas (the least important are made smaller, then left out).
-[[nodiscard]] std::vector<ShadowChoice> choose_shadowed_lights(std::span<const GpuLight> lights, std::span<const ecs::Entity> entities,
+[[nodiscard]] std::vector<ShadowChoice> choose_shadowed_lights(std::span<const render::GpuLight> lights, std::span<const ecs::Entity> entities,
                                                                const ViewState& view, glm::ivec2 viewport, int count,
                                                                const PreviousShadows& previous, const AtlasLimits& limits);
 

@@ -32,16 +32,16 @@ ShadowView perspective_view(glm::vec3 eye, glm::vec3 forward, glm::vec3 up, floa
 
 }  // namespace
 
-int view_count(GpuLightKind kind) {
+int view_count(render::GpuLightKind kind) {
   switch (kind) {
-    case GpuLightKind::Point: return 6;
-    case GpuLightKind::Spot: return 1;
-    case GpuLightKind::Directional: return kCascades;
+    case render::GpuLightKind::Point: return 6;
+    case render::GpuLightKind::Spot: return 1;
+    case render::GpuLightKind::Directional: return kCascades;
   }
   return 0;
 }
 
-std::array<ShadowView, 6> point_views(const GpuLight& light, int resolution) {
+std::array<ShadowView, 6> point_views(const render::GpuLight& light, int resolution) {
   // Face order +X, -X, +Y, -Y, +Z, -Z: shadows.glsl picks a face by the major axis in this order.
   static const std::array<glm::vec3, 6> kForward{glm::vec3(1, 0, 0), glm::vec3(-1, 0, 0), glm::vec3(0, 1, 0),
                                                  glm::vec3(0, -1, 0), glm::vec3(0, 0, 1), glm::vec3(0, 0, -1)};
@@ -55,7 +55,7 @@ std::array<ShadowView, 6> point_views(const GpuLight& light, int resolution) {
   return views;
 }
 
-ShadowView spot_view(const GpuLight& light, int resolution) {
+ShadowView spot_view(const render::GpuLight& light, int resolution) {
   // lights.glsl's cone: clamp(cos * x + y, 0, 1) is zero beyond cos = -y / x.
   const float cos_outer = light.spot.x > 0.0f ? std::clamp(-light.spot.y / light.spot.x, -1.0f, 1.0f) : 0.0f;
   const float half_angle = std::min(std::acos(cos_outer), glm::radians(85.0f));
@@ -64,7 +64,7 @@ ShadowView spot_view(const GpuLight& light, int resolution) {
                           light.position_radius.w, resolution);
 }
 
-std::array<ShadowView, kCascades> cascade_views(const GpuLight& light, const CascadeFrame& frame, int resolution) {
+std::array<ShadowView, kCascades> cascade_views(const render::GpuLight& light, const CascadeFrame& frame, int resolution) {
   const glm::vec3 direction = glm::normalize(glm::vec3(light.direction));
   // Light space: looking along the light's rays, rotation only.
   const glm::mat4 light_view = glm::lookAt(glm::vec3(0.0f), direction, any_perpendicular(direction));

@@ -32,12 +32,12 @@ struct ShadowView {
 static_assert(sizeof(ShadowView) == 96, "must match ShadowView in shaders/common/shadows.glsl");
 
 // How many views (atlas tiles) a light of this kind renders.
-[[nodiscard]] int view_count(GpuLightKind kind);
+[[nodiscard]] int view_count(render::GpuLightKind kind);
 
 // The view of one face, cone or cascade, without its tile (rect) filled in.
 // `resolution` is the tile's side in texels.
-[[nodiscard]] std::array<ShadowView, 6> point_views(const GpuLight& light, int resolution);
-[[nodiscard]] ShadowView spot_view(const GpuLight& light, int resolution);
+[[nodiscard]] std::array<ShadowView, 6> point_views(const render::GpuLight& light, int resolution);
+[[nodiscard]] ShadowView spot_view(const render::GpuLight& light, int resolution);
 
 // What a directional light's cascades cover: the camera's view frustum from
 // `near` to `far`, and the scene's box, whose every caster must reach the maps.
@@ -49,6 +49,6 @@ struct CascadeFrame {
   glm::vec3 scene_min{-1.0f};
   glm::vec3 scene_max{1.0f};
 };
-[[nodiscard]] std::array<ShadowView, kCascades> cascade_views(const GpuLight& light, const CascadeFrame& frame, int resolution);
+[[nodiscard]] std::array<ShadowView, kCascades> cascade_views(const render::GpuLight& light, const CascadeFrame& frame, int resolution);
 
 }  // namespace atrium::shadows

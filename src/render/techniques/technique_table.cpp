@@ -7,14 +7,14 @@
 #include "render/techniques/tiled/tiled.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 namespace {
 
 // Every technique is built from the GPU assets and the options; `variant`
 // picks a row's flavour of a shared implementation (radius culling, instancing,
 // deferred or forward+).
 template <typename T, auto... variant>
-std::unique_ptr<LightingTechnique> make(assets::GpuAssets& gpu, const TechniqueOptions& options) {
+std::unique_ptr<LightingTechnique> make(render::GpuAssets& gpu, const TechniqueOptions& options) {
   return std::make_unique<T>(gpu, options, variant...);
 }
 
@@ -59,4 +59,4 @@ std::string technique_names() {
   return names;
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -22,7 +22,7 @@ void FireflySprites::add_pass(render::FrameBuild& build) {
   });
   if (sprites_.empty()) return;
   if (!program_) {
-    program_ = &registry.resource<assets::GpuAssets>().shaders().get({"fireflies/sprite.vert", "fireflies/sprite.frag"});
+    program_ = &registry.resource<render::GpuAssets>().shaders().get({"fireflies/sprite.vert", "fireflies/sprite.frag"});
     vertex_array_ = gfx::create_vertex_array();
     const GLuint vao = vertex_array_.id();
     for (const GLuint location : {kPositionSizeLocation, kColorLocation}) {

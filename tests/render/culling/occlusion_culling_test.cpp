@@ -28,19 +28,19 @@ constexpr float kInfinity = std::numeric_limits<float>::infinity();
 struct Scene {
   glm::mat4 view{1.0f};
   glm::mat4 projection = gfx::perspective(glm::radians(90.0f), 1.0f, 0.1f, 100.0f);
-  DepthPyramid pyramid(float depth, glm::ivec2 hole = glm::ivec2(-1)) const {
+  render::DepthPyramid pyramid(float depth, glm::ivec2 hole = glm::ivec2(-1)) const {
     std::vector<float> tiles(64, depth);
     if (hole.x >= 0) tiles[static_cast<std::size_t>(hole.y) * 8 + hole.x] = kInfinity;
-    return DepthPyramid(std::move(tiles), glm::ivec2(8), glm::ivec2(64));
+    return render::DepthPyramid(std::move(tiles), glm::ivec2(8), glm::ivec2(64));
   }
-  bool hides(const DepthPyramid& p, glm::vec3 centre, float half) const {
+  bool hides(const render::DepthPyramid& p, glm::vec3 centre, float half) const {
     return p.hides(view, projection, 0.1f, centre - half, centre + half);
   }
 };
 
 TEST(DepthPyramid, HidesABoxBehindTheDepthAndNothingThatReachesInFrontOfIt) {
   const Scene scene;
-  const DepthPyramid wall = scene.pyramid(10.0f);
+  const render::DepthPyramid wall = scene.pyramid(10.0f);
   EXPECT_TRUE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -20.0f), 1.0f));
   EXPECT_TRUE(scene.hides(wall, glm::vec3(3.0f, -2.0f, -11.5f), 1.0f)) << "nearest corner at 10.5 m";
   EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -10.5f), 1.0f)) << "nearest corner at 9.5 m, in front";
@@ -51,12 +51,12 @@ TEST(DepthPyramid, HidesABoxBehindTheDepthAndNothingThatReachesInFrontOfIt) {
 TEST(DepthPyramid, OneUncoveredTileUnderTheBoxKeepsItAtEveryLevel) {
   const Scene scene;
   for (int x = 0; x < 8; ++x) {
-    const DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(x, 3));
+    const render::DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(x, 3));
     // A box over the whole screen: read at the pyramid's coarsest levels.
     EXPECT_FALSE(scene.hides(holed, glm::vec3(0.0f, 0.0f, -50.0f), 40.0f)) << "hole in tile " << x;
   }
   // A small box over tile (6, 3) only (pixels 48-55, 24-31): the hole at (1, 3) does not matter.
-  const DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(1, 3));
+  const render::DepthPyramid holed = scene.pyramid(10.0f, glm::ivec2(1, 3));
   const float ndc_x = (52.0f / 64.0f) * 2.0f - 1.0f, ndc_y = (28.0f / 64.0f) * 2.0f - 1.0f;
   EXPECT_TRUE(scene.hides(holed, glm::vec3(ndc_x * 20.0f, ndc_y * 20.0f, -20.0f), 0.2f));
   EXPECT_FALSE(scene.hides(scene.pyramid(10.0f, glm::ivec2(6, 3)), glm::vec3(ndc_x * 20.0f, ndc_y * 20.0f, -20.0f), 0.2f));
@@ -64,11 +64,11 @@ TEST(DepthPyramid, OneUncoveredTileUnderTheBoxKeepsItAtEveryLevel) {
 
 TEST(DepthPyramid, KeepsBoxesAtTheNearPlaneBehindTheCameraOrOffScreen) {
   const Scene scene;
-  const DepthPyramid wall = scene.pyramid(1.0f);
+  const render::DepthPyramid wall = scene.pyramid(1.0f);
   EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, -0.1f), 0.05f)) << "crosses the near plane";
   EXPECT_FALSE(scene.hides(wall, glm::vec3(0.0f, 0.0f, 20.0f), 1.0f)) << "behind the camera";
   EXPECT_FALSE(scene.hides(wall, glm::vec3(200.0f, 0.0f, -20.0f), 1.0f)) << "off screen to the right";
-  EXPECT_FALSE(scene.hides(DepthPyramid(), glm::vec3(0.0f, 0.0f, -20.0f), 1.0f)) << "no depth read";
+  EXPECT_FALSE(scene.hides(render::DepthPyramid(), glm::vec3(0.0f, 0.0f, -20.0f), 1.0f)) << "no depth read";
 }
 
 // Each picture test runs with the test on the CPU (the depth read back) and on
@@ -141,7 +141,7 @@ TEST_P(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
     WorldOptions options{.scene = kGrid, .lights = 256u, .mode = "forward", .view = 5, .size = kSize};
     options.technique_options.msaa = samples;
     World world(options);
-    for (const std::string& mode : lighting::mode_names()) {
+    for (const std::string& mode : techniques::mode_names()) {
       world.set_mode(mode);
       set_occlusion_culling(world, false);
       const Frame all = draw(world);

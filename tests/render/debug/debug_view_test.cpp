@@ -30,7 +30,7 @@ TEST_F(DebugViewRender, EveryViewRendersNonBlankAndDistinct) {
   world.registry().resource<RendererSettings>().shadows = 8;
   std::vector<assets::Image> images;
   std::vector<std::string_view> names;
-  for (const lighting::DebugView& row : lighting::debug_view_table()) {
+  for (const render::DebugView& row : render::debug_view_table()) {
     const std::string_view name = row.name;
     names.push_back(name);
     world.registry().resource<RendererSettings>().debug_view = std::string(name);
@@ -159,16 +159,16 @@ constexpr Rgb kMagenta{255, 0, 255}, kBlack{0, 0, 0};
 std::vector<int> pixel_bins(World& world) {
   const std::vector<float> depth = world.renderer().read_view_depth();
   std::vector<int> bins(depth.size(), -1);
-  const lighting::LightingTechnique* technique = world.renderer().technique();
-  const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique);
-  const auto* clustered = dynamic_cast<const lighting::ClusteredTechnique*>(technique);
+  const techniques::LightingTechnique* technique = world.renderer().technique();
+  const auto* tiled = dynamic_cast<const techniques::TiledTechnique*>(technique);
+  const auto* clustered = dynamic_cast<const techniques::ClusteredTechnique*>(technique);
   for (int y = 0; y < kSize.y; ++y) {
     for (int x = 0; x < kSize.x; ++x) {
       const std::size_t i = static_cast<std::size_t>(y * kSize.x + x);
       if (!std::isfinite(depth[i])) continue;
       const int gl_y = kSize.y - 1 - y;
       if (tiled) {
-        bins[i] = gl_y / lighting::kTileSize * static_cast<int>(tiled->tiles().x) + x / lighting::kTileSize;
+        bins[i] = gl_y / techniques::kTileSize * static_cast<int>(tiled->tiles().x) + x / techniques::kTileSize;
       } else {
         const glm::uvec3 dims = clustered->grid().dims();
         const glm::uvec2 tile = glm::uvec2(glm::clamp(glm::vec2(x + 0.5f, gl_y + 0.5f) / glm::vec2(kSize) * glm::vec2(dims),
@@ -181,9 +181,9 @@ std::vector<int> pixel_bins(World& world) {
 }
 
 std::vector<std::vector<std::uint32_t>> read_lists(World& world) {
-  const lighting::LightingTechnique* technique = world.renderer().technique();
-  if (const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique)) return tiled->list().read();
-  return dynamic_cast<const lighting::ClusteredTechnique*>(technique)->grid().read_lists();
+  const techniques::LightingTechnique* technique = world.renderer().technique();
+  if (const auto* tiled = dynamic_cast<const techniques::TiledTechnique*>(technique)) return tiled->list().read();
+  return dynamic_cast<const techniques::ClusteredTechnique*>(technique)->grid().read_lists();
 }
 
 // Per key (a light count, a slice): the colour most of its pixels got, and how
@@ -302,11 +302,11 @@ TEST_F(DebugViewRender, EveryViewAModeOffersShowsSomethingAndTheOthersShowNothin
     return true;
   };
   int offered_somewhere = 0;
-  for (const std::string& mode : lighting::mode_names()) {
+  for (const std::string& mode : techniques::mode_names()) {
     World world({.scene = "atrium", .lights = 32u, .mode = mode, .size = kSmall, .shadows = 2});
     world.frame(0.0);
     auto& settings = world.registry().resource<RendererSettings>();
-    for (const lighting::DebugView& view : lighting::debug_view_table()) {
+    for (const render::DebugView& view : render::debug_view_table()) {
       const bool offered = world.renderer().offers(view.name);
       offered_somewhere += offered;
       settings.debug_view = std::string(view.name);
@@ -341,11 +341,11 @@ TEST_F(DebugViewRender, LightSumViewsAndThumbnailsShowTheSplitOfDeferredModesOnl
   auto cell_colours = [&] {
     const GLuint texture = world.renderer().gbuffer_thumbnails();
     const glm::ivec2 cell = world.renderer().thumbnail_size();
-    constexpr int kColumns = lighting::DebugViews::kThumbnailColumns, kRows = lighting::DebugViews::kThumbnailCount / kColumns;
+    constexpr int kColumns = render::DebugViews::kThumbnailColumns, kRows = render::DebugViews::kThumbnailCount / kColumns;
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(cell.x * kColumns * cell.y * kRows) * 4);
     glGetTextureImage(texture, 0, GL_RGBA, GL_UNSIGNED_BYTE, static_cast<GLsizei>(rgba.size()), rgba.data());
-    std::vector<std::set<Rgb>> colours(lighting::DebugViews::kThumbnailCount);
-    for (int index = 0; index < lighting::DebugViews::kThumbnailCount; ++index) {
+    std::vector<std::set<Rgb>> colours(render::DebugViews::kThumbnailCount);
+    for (int index = 0; index < render::DebugViews::kThumbnailCount; ++index) {
       const int column = index % kColumns, row = kRows - 1 - index / kColumns;  // GL rows run bottom-up
       for (int y = row * cell.y; y < (row + 1) * cell.y; ++y) {
         for (int x = column * cell.x; x < (column + 1) * cell.x; ++x) {
@@ -410,18 +410,18 @@ TEST_F(DebugViewRender, LightPrepassShowsItsThinGBufferAndLightBuffer) {
 // Each --z-slicing scheme in a mode with a grid and in one without.
 TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyModeAndScheme) {
   for (const char* mode : {"forward", "clustered-deferred"}) {
-    for (std::size_t scheme = 0; scheme < lighting::kZSlicingNames.size(); ++scheme) {
-      const auto slicing = static_cast<lighting::ZSlicing>(scheme);
-      const std::string label = std::string(mode) + "/" + std::string(lighting::kZSlicingNames[scheme]);
+    for (std::size_t scheme = 0; scheme < kZSlicingNames.size(); ++scheme) {
+      const auto slicing = static_cast<ZSlicing>(scheme);
+      const std::string label = std::string(mode) + "/" + std::string(kZSlicingNames[scheme]);
       World world({.scene = "atrium", .lights = 16u, .mode = mode, .size = kSize});
       world.registry().resource<RendererSettings>().debug_view = "depth-slices";
       world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
       world.frame(0.0);
       const assets::Image image = world.renderer().read_output();
-      assets::write_png("debug_view_depth_slices_" + std::string(mode) + "_" + std::string(lighting::kZSlicingNames[scheme]) + ".png",
+      assets::write_png("debug_view_depth_slices_" + std::string(mode) + "_" + std::string(kZSlicingNames[scheme]) + ".png",
                         image);
       const std::vector<float> depth = world.renderer().read_view_depth();
-      lighting::ClusterGrid grid(lighting::TechniqueOptions{}.cluster_grid.at(kSize), slicing);
+      lighting::ClusterGrid grid(TechniqueOptions{}.cluster_grid.at(kSize), slicing);
       const auto& view = world.registry().resource<ViewState>();
       grid.update(view.projection, view.near_plane, view.far_plane);
       std::map<std::uint32_t, std::map<Rgb, int>> colours;
@@ -452,16 +452,16 @@ TEST_F(DebugViewRender, DepthSlicesMatchTheCpuSlicingInAnyModeAndScheme) {
 TEST_F(DebugViewRender, EveryResourceViewOfEveryModeDraws) {
   constexpr glm::ivec2 kSmall{48, 27};
   std::set<std::string> seen;
-  for (const std::string& mode : lighting::mode_names()) {
+  for (const std::string& mode : techniques::mode_names()) {
     for (const int msaa : {1, 4}) {
-      lighting::TechniqueOptions options;
+      TechniqueOptions options;
       options.msaa = msaa;
       World world({.scene = "atrium", .lights = 32u, .mode = mode, .size = kSmall, .technique_options = options});
       world.frame(0.0);
       auto& settings = world.registry().resource<RendererSettings>();
       std::vector<std::string> resource_views;
-      for (const lighting::OfferedView& view : world.renderer().offered_views()) {
-        if (!lighting::find_debug_view(view.name)) resource_views.push_back(view.name);
+      for (const render::OfferedView& view : world.renderer().offered_views()) {
+        if (!render::find_debug_view(view.name)) resource_views.push_back(view.name);
       }
       EXPECT_FALSE(resource_views.empty()) << mode << ": the HDR image at least";
       for (const std::string& name : resource_views) {
@@ -515,7 +515,7 @@ TEST_F(DebugViewRender, ATargetAContributorDeclaresIsAViewByItsName) {
   try {
     world.frame(0.0);
     ADD_FAILURE() << "an unknown view was drawn";
-  } catch (const lighting::UnknownViewError& e) {
+  } catch (const render::UnknownViewError& e) {
     EXPECT_NE(std::string(e.what()).find("unknown debug view 'test-fil' (views: position, normal"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("test-fill"), std::string::npos) << e.what();
   }

@@ -15,7 +15,7 @@
 #include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
 
-namespace atrium::lighting {
+namespace atrium::render {
 namespace {
 
 using DrawListTest = testing::GlTest;
@@ -64,7 +64,7 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
     world.frame(0.0);
     auto& registry = world.registry();
     const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
-                                          registry.resource<assets::GpuAssets>(), registry.resource<ViewState>().view);
+                                          registry.resource<GpuAssets>(), registry.resource<ViewState>().view);
     std::set<decltype(state_of(DrawBatch{}))> states;
     std::size_t instances = 0, triangles = 0;
     bool masked_seen = false;
@@ -127,7 +127,7 @@ TEST_F(DrawListTest, BlendedDrawsComeFarthestFirstAndNeighboursOfOneStateShareAD
   world.frame(0.0);
   auto& registry = world.registry();
   const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
-                                        registry.resource<assets::GpuAssets>(), registry.resource<ViewState>().view);
+                                        registry.resource<GpuAssets>(), registry.resource<ViewState>().view);
   EXPECT_TRUE(list.opaque.empty());
   ASSERT_EQ(list.blended.size(), 1u) << "one state: one draw, its commands in order";
   ASSERT_EQ(list.blended[0].command_count, 5u);
@@ -140,4 +140,4 @@ TEST_F(DrawListTest, BlendedDrawsComeFarthestFirstAndNeighboursOfOneStateShareAD
 }
 
 }  // namespace
-}  // namespace atrium::lighting
+}  // namespace atrium::render

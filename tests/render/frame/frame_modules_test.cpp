@@ -22,7 +22,7 @@ namespace {
 using FrameModulesTest = testing::GlTest;
 using testing::kSize;
 
-static_assert(sizeof(lighting::FrameTargets) == sizeof(glm::ivec2) + sizeof(int),
+static_assert(sizeof(render::FrameTargets) == sizeof(glm::ivec2) + sizeof(int),
               "FrameTargets is the targets' shape only: passes reach the GL objects through the graph");
 
 std::vector<std::string> pass_names(World& world) {

@@ -24,7 +24,7 @@ namespace {
 using ClusterGridTest = testing::GlTest;
 
 const lighting::ClusterGrid& grid_of(World& world) {
-  const auto* technique = dynamic_cast<const lighting::ClusteredTechnique*>(world.renderer().technique());
+  const auto* technique = dynamic_cast<const techniques::ClusteredTechnique*>(world.renderer().technique());
   if (!technique) throw std::logic_error("not a clustered technique");
   return technique->grid();
 }
@@ -34,7 +34,7 @@ const lighting::ClusterGrid& grid_of(World& world) {
 std::vector<std::vector<std::uint32_t>> expect_lists_equal_cpu(World& world) {
   const lighting::ClusterGrid& grid = grid_of(world);
   const auto gpu = grid.read_lists();
-  const auto cpu = grid.assign_on_cpu(world.registry().resource<LightBuffer>().staging,
+  const auto cpu = grid.assign_on_cpu(world.registry().resource<render::LightBuffer>().staging,
                                       world.registry().resource<ViewState>().view);
   EXPECT_EQ(gpu.size(), cpu.size());
   for (std::size_t c = 0; c < std::min(gpu.size(), cpu.size()); ++c) EXPECT_EQ(gpu[c], cpu[c]) << "cluster " << c;
@@ -49,17 +49,17 @@ void draw_settled(World& world) {
   world.frame(0.0);
 }
 
-constexpr std::array kSlicings{lighting::ZSlicing::Log, lighting::ZSlicing::Uniform, lighting::ZSlicing::PlainLog};
+constexpr std::array kSlicings{ZSlicing::Log, ZSlicing::Uniform, ZSlicing::PlainLog};
 
-std::string name_of(lighting::ZSlicing slicing) { return std::string(lighting::kZSlicingNames[static_cast<std::size_t>(slicing)]); }
+std::string name_of(ZSlicing slicing) { return std::string(kZSlicingNames[static_cast<std::size_t>(slicing)]); }
 
 TEST_F(ClusterGridTest, GpuListsEqualACpuComputationOfTheSameGrid) {
-  for (const lighting::ZSlicing slicing : kSlicings) {
+  for (const ZSlicing slicing : kSlicings) {
     SCOPED_TRACE(name_of(slicing));
     World world({.scene = "atrium", .lights = 300u, .mode = "clustered-deferred", .view = 3, .size = {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
-    options.cluster_grid = lighting::ClusterGridSize::fixed({4, 3, 6});
-    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    options.cluster_grid = ClusterGridSize::fixed({4, 3, 6});
+    options.cluster_bounds = ClusterBounds::Grid;
     options.z_slicing = slicing;
     draw_settled(world);
     const lighting::ClusterGrid& grid = grid_of(world);
@@ -79,19 +79,19 @@ TEST_F(ClusterGridTest, EachSlicingSchemeCutsDepthWhereItSays) {
   constexpr std::uint32_t kSlices = 8;
   const glm::mat4 projection = gfx::perspective(glm::radians(60.0f), 16.0f / 9.0f, kNear, kFar);
   // Where boundary b (0 = near, kSlices = far) lies under each scheme.
-  auto boundary = [&](lighting::ZSlicing slicing, std::uint32_t b) -> float {
+  auto boundary = [&](ZSlicing slicing, std::uint32_t b) -> float {
     const float t = static_cast<float>(b) / kSlices;
     switch (slicing) {
-      case lighting::ZSlicing::Log:  // the first slice to ten near-plane distances, then equal ratios
+      case ZSlicing::Log:  // the first slice to ten near-plane distances, then equal ratios
         return b == 0 ? kNear : 1.0f * std::pow(kFar / 1.0f, static_cast<float>(b - 1) / (kSlices - 1));
-      case lighting::ZSlicing::PlainLog: return kNear * std::pow(kFar / kNear, t);
-      case lighting::ZSlicing::Uniform: return kNear + (kFar - kNear) * t;
+      case ZSlicing::PlainLog: return kNear * std::pow(kFar / kNear, t);
+      case ZSlicing::Uniform: return kNear + (kFar - kNear) * t;
     }
     return 0.0f;
   };
-  EXPECT_NEAR(boundary(lighting::ZSlicing::PlainLog, 1), 0.23714f, 1e-4f);
-  EXPECT_NEAR(boundary(lighting::ZSlicing::Uniform, 1), 12.5875f, 1e-4f);
-  for (const lighting::ZSlicing slicing : kSlicings) {
+  EXPECT_NEAR(boundary(ZSlicing::PlainLog, 1), 0.23714f, 1e-4f);
+  EXPECT_NEAR(boundary(ZSlicing::Uniform, 1), 12.5875f, 1e-4f);
+  for (const ZSlicing slicing : kSlicings) {
     SCOPED_TRACE(name_of(slicing));
     lighting::ClusterGrid grid({2, 2, kSlices}, slicing);
     grid.update(projection, kNear, kFar);
@@ -112,8 +112,8 @@ TEST_F(ClusterGridTest, ManyLightsEqualTheCpuInLightOrder) {
   // light order included (the sort), long and short lists alike.
   constexpr std::uint32_t kLights = 40000;
   World world({.scene = "atrium", .lights = kLights, .mode = "clustered-forward", .size = {96, 54}, .light_radius = 0.4f});
-  world.registry().resource<RendererSettings>().technique_options.cluster_grid = lighting::ClusterGridSize::fixed({4, 3, 6});
-  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
+  world.registry().resource<RendererSettings>().technique_options.cluster_grid = ClusterGridSize::fixed({4, 3, 6});
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = ClusterBounds::Grid;
   draw_settled(world);
   std::size_t longest = 0, late_lights = 0;
   for (const auto& list : expect_lists_equal_cpu(world)) {
@@ -142,7 +142,7 @@ TEST_F(ClusterGridTest, BoundsAreRebuiltOnlyWhenTheProjectionChanges) {
 }
 
 TEST_F(ClusterGridTest, EveryDepthMapsToAValidSliceInGlslAndCpp) {
-  for (const lighting::ZSlicing slicing : kSlicings) {
+  for (const ZSlicing slicing : kSlicings) {
     SCOPED_TRACE(name_of(slicing));
     World world({.scene = "atrium", .lights = 4u, .mode = "clustered-deferred", .size = {64, 36}});
     world.registry().resource<RendererSettings>().technique_options.z_slicing = slicing;
@@ -180,13 +180,13 @@ TEST_F(ClusterGridTest, EverySlicingSchemeDrawsTheForwardPicture) {
   auto& options = world.registry().resource<RendererSettings>().technique_options;
   for (const char* mode : {"clustered-forward", "clustered-deferred"}) {
     world.set_mode(mode);
-    for (const lighting::ZSlicing slicing : kSlicings) {
-      for (const lighting::ClusterBounds bounds : {lighting::ClusterBounds::Grid, lighting::ClusterBounds::Pixels}) {
+    for (const ZSlicing slicing : kSlicings) {
+      for (const ClusterBounds bounds : {ClusterBounds::Grid, ClusterBounds::Pixels}) {
         options.z_slicing = slicing;
         options.cluster_bounds = bounds;
         world.frame(0.0);
         EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr)
-            << mode << " " << name_of(slicing) << (bounds == lighting::ClusterBounds::Grid ? " grid" : " pixels");
+            << mode << " " << name_of(slicing) << (bounds == ClusterBounds::Grid ? " grid" : " pixels");
       }
     }
   }
@@ -217,7 +217,7 @@ TEST_F(ClusterGridTest, AListsFirstFrameSizesItAndLosesNoLight) {
 
 TEST_F(ClusterGridTest, ActiveClustersOnlyChangeNoPixel) {
   World world({.scene = "atrium", .lights = 200u, .mode = "clustered-deferred", .view = 2, .size = {96, 54}});
-  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
+  world.registry().resource<RendererSettings>().technique_options.cluster_bounds = ClusterBounds::Grid;
   world.frame(0.0);
   const assets::Image all = world.renderer().read_output();
   const std::uint32_t total_all = grid_of(world).list().last_total();
@@ -234,11 +234,11 @@ TEST_F(ClusterGridTest, PixelBoundsKeepEveryLightThatReachesAPixelAndDropMostTha
   for (const int view : {1, 3, 5}) {
     World world({.scene = "atrium", .lights = 1024u, .mode = "clustered-deferred", .view = view, .size = {160, 90}});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
-    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    options.cluster_bounds = ClusterBounds::Grid;
     draw_settled(world);
     const assets::Image grid_image = world.renderer().read_output();
     const auto grid_lists = grid_of(world).read_lists();
-    options.cluster_bounds = lighting::ClusterBounds::Pixels;
+    options.cluster_bounds = ClusterBounds::Pixels;
     draw_settled(world);
     EXPECT_GE(assets::psnr(grid_image, world.renderer().read_output()), 50.0) << "view " << view;
     const auto pixel_lists = grid_of(world).read_lists();

@@ -41,16 +41,16 @@ void draw_settled(World& world) {
 }
 
 TEST_F(CpuLightLists, EqualTheGpuListsOfTheSameGridInLightOrder) {
-  for (const lighting::ZSlicing slicing : {lighting::ZSlicing::Log, lighting::ZSlicing::Uniform}) {
+  for (const ZSlicing slicing : {ZSlicing::Log, ZSlicing::Uniform}) {
     World world({.scene = "atrium", .lights = 6000u, .mode = "clustered-forward", .view = 2, .size = {160, 90}, .light_radius = 1.5f});
     auto& options = world.registry().resource<RendererSettings>().technique_options;
-    options.cluster_grid = lighting::ClusterGridSize::fixed({8, 5, 12});
-    options.cluster_bounds = lighting::ClusterBounds::Grid;
+    options.cluster_grid = ClusterGridSize::fixed({8, 5, 12});
+    options.cluster_bounds = ClusterBounds::Grid;
     options.z_slicing = slicing;
     draw_settled(world);
-    const auto& technique = dynamic_cast<const lighting::ClusteredTechnique&>(*world.renderer().technique());
+    const auto& technique = dynamic_cast<const techniques::ClusteredTechnique&>(*world.renderer().technique());
     const auto gpu = technique.grid().read_lists();
-    const auto& lights = world.registry().resource<LightBuffer>().staging;
+    const auto& lights = world.registry().resource<render::LightBuffer>().staging;
     const glm::mat4& view = world.registry().resource<ViewState>().view;
     std::size_t entries = 0;
     for (const unsigned threads : {1u, 2u, 3u}) {
@@ -69,14 +69,14 @@ TEST_F(CpuLightLists, AwkwardLightsEqualTheBruteForceReference) {
   lighting::ClusterGrid grid({16, 9, 24});
   grid.update(gfx::perspective(glm::radians(60.0f), 16.0f / 9.0f, kNear, kFar), kNear, kFar);
   const glm::mat4 view = glm::lookAt(glm::vec3(0.0f, 2.0f, 10.0f), glm::vec3(0.0f, 2.0f, 0.0f), glm::vec3(0.0f, 1.0f, 0.0f));
-  auto light = [](glm::vec3 position, float radius, GpuLightKind kind = GpuLightKind::Point) {
-    GpuLight l{};
+  auto light = [](glm::vec3 position, float radius, render::GpuLightKind kind = render::GpuLightKind::Point) {
+    render::GpuLight l{};
     l.position_radius = glm::vec4(position, radius);
     l.color_kind = glm::vec4(1.0f, 1.0f, 1.0f, static_cast<float>(kind));
     return l;
   };
-  std::vector<GpuLight> lights{
-      light(glm::vec3(0.0f), 0.0f, GpuLightKind::Directional),  // everywhere
+  std::vector<render::GpuLight> lights{
+      light(glm::vec3(0.0f), 0.0f, render::GpuLightKind::Directional),  // everywhere
       light(glm::vec3(0.0f, 2.0f, 20.0f), 3.0f),                 // behind the camera
       light(glm::vec3(0.3f, 2.0f, 10.0f), 1.0f),                 // around the eye, across the near plane
       light(glm::vec3(0.0f, 2.0f, 0.0f), 200.0f),                // covers the whole grid
@@ -97,13 +97,13 @@ TEST_F(CpuLightLists, AwkwardLightsEqualTheBruteForceReference) {
 TEST_F(CpuLightLists, TileListsHoldEveryLightTheGpusTilesHold) {
   World world({.scene = "atrium", .lights = 3000u, .mode = "tiled-deferred", .view = 5, .size = {200, 120}, .light_radius = 1.0f});
   draw_settled(world);
-  const auto& technique = dynamic_cast<const lighting::TiledTechnique&>(*world.renderer().technique());
+  const auto& technique = dynamic_cast<const techniques::TiledTechnique&>(*world.renderer().technique());
   const auto gpu = technique.list().read();
-  const auto& lights = world.registry().resource<LightBuffer>().staging;
+  const auto& lights = world.registry().resource<render::LightBuffer>().staging;
   const ViewState& view = world.registry().resource<ViewState>();
   std::size_t gpu_entries = 0, cpu_entries = 0;
   for (const unsigned threads : {1u, 2u}) {
-    const auto cpu = per_bin(lighting::bin_lights_in_tiles(lights, view.view, view.projection, {200, 120}, lighting::kTileSize,
+    const auto cpu = per_bin(lighting::bin_lights_in_tiles(lights, view.view, view.projection, {200, 120}, techniques::kTileSize,
                                                            view.near_plane, view.far_plane, threads));
     ASSERT_EQ(cpu.size(), gpu.size());
     ASSERT_EQ(cpu.size(), std::size_t{technique.tiles().x} * technique.tiles().y);

@@ -80,7 +80,7 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
     }
     return total;
   };
-  for (const auto layout : {lighting::GBufferLayout::Full, lighting::GBufferLayout::Compact, lighting::GBufferLayout::Thin}) {
+  for (const auto layout : {GBufferLayout::Full, GBufferLayout::Compact, GBufferLayout::Thin}) {
     std::size_t bytes = 0;
     for (const lighting::GBuffer::Target& target : lighting::GBuffer::targets(layout)) {
       const std::size_t texel = render::texture_bytes({target.format, {1, 1}, 1});
@@ -91,11 +91,11 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
     EXPECT_EQ(gl_bits(gfx::kDepthStencilFormat), 40);
     EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(layout), bytes + 8);
   }
-  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Full), 48u);
-  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(lighting::GBufferLayout::Compact), 28u);
+  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(GBufferLayout::Full), 48u);
+  EXPECT_EQ(lighting::GBuffer::bytes_per_pixel(GBufferLayout::Compact), 28u);
   std::ifstream readme(fs::path(ATRIUM_SOURCE_DIR) / "README.md");
   const std::string text((std::istreambuf_iterator<char>(readme)), std::istreambuf_iterator<char>());
-  for (const auto& [name, layout] : {std::pair{"full", lighting::GBufferLayout::Full}, std::pair{"compact", lighting::GBufferLayout::Compact}}) {
+  for (const auto& [name, layout] : {std::pair{"full", GBufferLayout::Full}, std::pair{"compact", GBufferLayout::Compact}}) {
     const std::string stated = std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) + " B/px";
     EXPECT_NE(text.find("`" + std::string(name) + "` (" + std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + stated),
               std::string::npos)
@@ -110,30 +110,30 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
 // The technique table's GBufferUse column is what each technique does: no
 // G-buffer, the layout --gbuffer chose, or a layout of its own.
 TEST_F(CompactGBuffer, EachTechniqueKeepsTheGBufferItsTableRowSays) {
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
     World world({.scene = "atrium", .lights = 4u, .mode = std::string(info.name), .size = {32, 18},
-                 .technique_options = testing::with_layout(lighting::GBufferLayout::Compact)});
+                 .technique_options = testing::with_layout(GBufferLayout::Compact)});
     world.frame(0.0);
     const std::optional<lighting::GBuffer::Found> gbuffer = lighting::GBuffer::find(world.renderer().graph());
     switch (info.gbuffer) {
-      case lighting::GBufferUse::None: EXPECT_FALSE(gbuffer.has_value()) << info.name; break;
-      case lighting::GBufferUse::Chosen:
+      case techniques::GBufferUse::None: EXPECT_FALSE(gbuffer.has_value()) << info.name; break;
+      case techniques::GBufferUse::Chosen:
         ASSERT_TRUE(gbuffer.has_value()) << info.name;
-        EXPECT_EQ(gbuffer->layout, lighting::GBufferLayout::Compact) << info.name;
+        EXPECT_EQ(gbuffer->layout, GBufferLayout::Compact) << info.name;
         break;
-      case lighting::GBufferUse::Own:
+      case techniques::GBufferUse::Own:
         ASSERT_TRUE(gbuffer.has_value()) << info.name;
-        EXPECT_NE(gbuffer->layout, lighting::GBufferLayout::Compact) << info.name;
+        EXPECT_NE(gbuffer->layout, GBufferLayout::Compact) << info.name;
         break;
     }
   }
 }
 
 TEST_F(CompactGBuffer, DrawsWhatTheFullLayoutDrawsInEveryDeferredMode) {
-  World full({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Full)});
-  World compact({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(lighting::GBufferLayout::Compact)});
-  for (const lighting::TechniqueInfo& info : lighting::technique_table()) {
-    if (info.gbuffer != lighting::GBufferUse::Chosen) continue;  // the layout changes nothing there
+  World full({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(GBufferLayout::Full)});
+  World compact({.scene = "atrium", .mode = "deferred", .size = {160, 90}, .technique_options = testing::with_layout(GBufferLayout::Compact)});
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
+    if (info.gbuffer != techniques::GBufferUse::Chosen) continue;  // the layout changes nothing there
     const std::string mode(info.name);
     double worst = 1e9;
     for (int view = 1; view <= 5; ++view) {

@@ -23,16 +23,16 @@ constexpr glm::ivec2 kWide{320, 180};
 // The lists of the world's technique, read back (tiled or clustered).
 std::vector<std::vector<std::uint32_t>> lists_of(World& world) {
   const auto* technique = world.renderer().technique();
-  if (const auto* tiled = dynamic_cast<const lighting::TiledTechnique*>(technique)) return tiled->list().read();
-  return dynamic_cast<const lighting::ClusteredTechnique*>(technique)->grid().read_lists();
+  if (const auto* tiled = dynamic_cast<const techniques::TiledTechnique*>(technique)) return tiled->list().read();
+  return dynamic_cast<const techniques::ClusteredTechnique*>(technique)->grid().read_lists();
 }
 
-void set_assignment(World& world, lighting::LightAssignment assignment) {
+void set_assignment(World& world, LightAssignment assignment) {
   world.registry().resource<RendererSettings>().technique_options.light_assignment = assignment;
 }
 
 // With `assignment` (Automatic: the rule's choice, `expected`).
-void expect_lists_match_forward(WorldOptions options, lighting::LightAssignment assignment, lighting::LightAssignment expected) {
+void expect_lists_match_forward(WorldOptions options, LightAssignment assignment, LightAssignment expected) {
   options.mode = "forward";
   World reference_world(options);
   reference_world.frame(0.0);
@@ -50,13 +50,13 @@ void expect_lists_match_forward(WorldOptions options, lighting::LightAssignment 
 }
 
 TEST_F(LightIndexListTest, AFewLargeLightsAreGatheredAndMatchForward) {
-  expect_lists_match_forward({.scene = "atrium", .lights = 24u, .size = kWide, .light_radius = 12.0f}, lighting::LightAssignment::Automatic,
-                             lighting::LightAssignment::Gather);
+  expect_lists_match_forward({.scene = "atrium", .lights = 24u, .size = kWide, .light_radius = 12.0f}, LightAssignment::Automatic,
+                             LightAssignment::Gather);
 }
 
 TEST_F(LightIndexListTest, ManySmallLightsScatteredMatchForward) {
-  expect_lists_match_forward({.scene = "atrium", .lights = 3000u, .size = kWide, .light_radius = 0.6f}, lighting::LightAssignment::Scatter,
-                             lighting::LightAssignment::Scatter);
+  expect_lists_match_forward({.scene = "atrium", .lights = 3000u, .size = kWide, .light_radius = 0.6f}, LightAssignment::Scatter,
+                             LightAssignment::Scatter);
 }
 
 // Same bins, same test: the gather writes the scatter's lists, light order
@@ -66,10 +66,10 @@ TEST_F(LightIndexListTest, GatherAndScatterWriteTheSameListsAndPictures) {
   for (const std::string mode : {"tiled-deferred", "clustered-deferred", "clustered-forward"}) {
     std::vector<std::vector<std::vector<std::uint32_t>>> lists;
     std::vector<assets::Image> images;
-    for (const auto assignment : {lighting::LightAssignment::Scatter, lighting::LightAssignment::Gather}) {
+    for (const auto assignment : {LightAssignment::Scatter, LightAssignment::Gather}) {
       World world({.scene = "atrium", .lights = 300u, .mode = mode, .view = 2, .size = {160, 90}, .light_radius = 2.5f});
       set_assignment(world, assignment);
-      if (mode == "clustered-forward") world.registry().resource<RendererSettings>().technique_options.cluster_bounds = lighting::ClusterBounds::Grid;
+      if (mode == "clustered-forward") world.registry().resource<RendererSettings>().technique_options.cluster_bounds = ClusterBounds::Grid;
       world.frame(0.0);
       world.frame(0.0);
       EXPECT_EQ(world.renderer().stats().light_assignment, assignment) << mode;
@@ -100,7 +100,7 @@ TEST_F(LightIndexListTest, AGatherThatOverflowsLosesNoLightAndGrows) {
     options.mode = mode;
     options.light_radius = 0.25f;
     World world(options);
-    set_assignment(world, lighting::LightAssignment::Gather);
+    set_assignment(world, LightAssignment::Gather);
     for (int f = 0; f < 3; ++f) world.frame(0.0);
     world.set_light_radius(4.0f);
     world.frame(0.0);
@@ -119,7 +119,6 @@ TEST_F(LightIndexListTest, AGatherThatOverflowsLosesNoLightAndGrows) {
 // Automatic gathers where enough of the bin-light pairs are hits, never
 // before a total has arrived, and never past a driver's loop cap.
 TEST(LightIndexListRule, DenseLightsAreGatheredAndSparseOnesScattered) {
-  using lighting::LightAssignment;
   using lighting::LightIndexList;
   constexpr std::uint32_t kLights = 1024, kBins = 600;
   auto entries_at = [](double density) { return static_cast<std::uint64_t>(density * kBins * kLights); };

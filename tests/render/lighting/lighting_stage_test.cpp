@@ -23,7 +23,6 @@
 namespace atrium {
 namespace {
 
-using lighting::LightingStage;
 using testing::kSize;
 
 // The modes whose lighting is one full-screen pass: the compute stage runs it.
@@ -52,7 +51,7 @@ std::uint64_t fragments_of(World& world, const std::string& pass) {
 }
 
 class ComputeStage : public testing::GlTest,
-                     public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
+                     public ::testing::WithParamInterface<std::tuple<std::string, GBufferLayout>> {};
 
 // Views 1 (the court, open sky) and 3 (the lamps, glass and many lights close
 // by); every view against forward is the fragment stage's test, and the
@@ -89,7 +88,7 @@ TEST_F(ComputeStageWith, SplitLightSumsAsTheFragmentStageWritesThem) {
     std::vector<std::vector<glm::vec4>> sums[2];
     for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute}) {
       (void)draw(world, stage);
-      for (const auto target : {MeshRenderer::HdrTarget::Color, MeshRenderer::HdrTarget::DiffuseLight, MeshRenderer::HdrTarget::SpecularLight}) {
+      for (const auto target : {render::MeshRenderer::HdrTarget::Color, render::MeshRenderer::HdrTarget::DiffuseLight, render::MeshRenderer::HdrTarget::SpecularLight}) {
         sums[stage == LightingStage::Compute].push_back(world.renderer().read_hdr(target));
       }
     }
@@ -154,8 +153,8 @@ TEST_F(ComputeStageWith, ShadowsFirefliesAndTheOfferedDebugViews) {
     EXPECT_GE(assets::psnr(fragment, draw(world, LightingStage::Compute)), kStagesAgreeDb) << mode;
     EXPECT_GE(assets::psnr(reference, world.renderer().read_output()), kMinimumPsnr) << mode;
     // Every view the mode offers shows the same in both stages, the counting ones with the same counts.
-    const std::vector<lighting::OfferedView> offered = world.renderer().offered_views();  // each frame remakes the list
-    for (const lighting::OfferedView& view : offered) {
+    const std::vector<render::OfferedView> offered = world.renderer().offered_views();  // each frame remakes the list
+    for (const render::OfferedView& view : offered) {
       auto& settings = world.registry().resource<RendererSettings>();
       settings.debug_view = view.name;
       const assets::Image shown_fragment = draw(world, LightingStage::Fragment);
@@ -172,7 +171,7 @@ TEST_F(ComputeStageWith, ShadowsFirefliesAndTheOfferedDebugViews) {
 
 using LightingStages = testing::GlTest;
 
-std::string refusal(const lighting::TechniqueOptions& options) {
+std::string refusal(const TechniqueOptions& options) {
   try {
     (void)lighting::resolve_lighting_stage(options);
   } catch (const gfx::ResourceLimitError& e) {
@@ -203,17 +202,17 @@ TEST_F(LightingStages, ImageUnitsInTheShadersAreTheCppConstants) {
   World world({.scene = "atrium", .mode = "deferred", .size = {32, 18}});
   world.registry().resource<RendererSettings>().technique_options.split_lighting = true;
   (void)draw(world, LightingStage::Compute);
-  auto& shaders = world.registry().resource<assets::GpuAssets>().shaders();
+  auto& shaders = world.registry().resource<render::GpuAssets>().shaders();
   auto unit = [](gfx::ShaderProgram& program, const char* name) {
     GLint value = -1;
     glGetUniformiv(program.id(), glGetUniformLocation(program.id(), name), &value);
     return value;
   };
   gfx::ShaderProgram& lighting = shaders.get({"deferred/lighting.comp"});
-  EXPECT_EQ(unit(lighting, "u_lit_color"), static_cast<GLint>(lighting::kLitColorImageUnit));
-  EXPECT_EQ(unit(lighting, "u_lit_diffuse"), static_cast<GLint>(lighting::kDiffuseLightImageUnit));
-  EXPECT_EQ(unit(lighting, "u_lit_specular"), static_cast<GLint>(lighting::kSpecularLightImageUnit));
-  EXPECT_EQ(unit(shaders.get({"post/tonemap.comp"}), "u_display"), static_cast<GLint>(lighting::kDisplayImageUnit));
+  EXPECT_EQ(unit(lighting, "u_lit_color"), static_cast<GLint>(render::kLitColorImageUnit));
+  EXPECT_EQ(unit(lighting, "u_lit_diffuse"), static_cast<GLint>(render::kDiffuseLightImageUnit));
+  EXPECT_EQ(unit(lighting, "u_lit_specular"), static_cast<GLint>(render::kSpecularLightImageUnit));
+  EXPECT_EQ(unit(shaders.get({"post/tonemap.comp"}), "u_display"), static_cast<GLint>(render::kDisplayImageUnit));
 }
 
 TEST_F(LightingStages, ASceneFileChoosesTheStageAndTheCommandLineWins) {

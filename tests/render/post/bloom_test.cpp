@@ -166,12 +166,12 @@ TEST_F(Bloom, EveryModeDrawsTheForwardPictureWithBloomOnTheComputeFreeTier) {
 // level stored with imageStore).
 TEST_F(Bloom, EveryModeDrawsTheForwardPictureWithBloomInTheComputeStage) {
   WorldOptions options = bloom_options(0.3);
-  options.lighting_stage = lighting::LightingStage::Compute;
+  options.lighting_stage = LightingStage::Compute;
   expect_every_mode_matches_forward(options, "compute_stage");
   World world(options);
   world.frame(0.0);
   std::size_t compute_programs = 0;
-  world.registry().resource<assets::GpuAssets>().shaders().for_each(
+  world.registry().resource<render::GpuAssets>().shaders().for_each(
       [&](const std::vector<std::string>& files, const std::vector<gfx::ShaderDefine>&, const gfx::ShaderProgram&) {
         compute_programs += files.size() == 1 && files[0].starts_with("post/bloom/") && files[0].ends_with(".comp");
       });

@@ -240,14 +240,14 @@ TEST_F(Shadows, AGlowingBoxAroundALightDoesNotShadowIt) {
 TEST_F(Shadows, EveryModeDrawsTheForwardPictureWithShadowsOn) {
   World world({.scene = "atrium", .lights = 48u, .mode = "forward", .size = {160, 90}});
   world.registry().resource<RendererSettings>().shadows = 12;
-  for (const auto& info : lighting::technique_table()) {
+  for (const auto& info : techniques::technique_table()) {
     if (info.name == "forward") continue;
     testing::expect_forward_picture_from_every_view(world, std::string(info.name), "shadows_" + std::string(info.name));
   }
   EXPECT_EQ(world.renderer().stats().shadows.lights, 12u);
   // Light loops take the shadowed lights first (common/shading.glsl): they
   // lead the light buffer, each still the light of its own entity.
-  const auto& lights = world.registry().resource<LightBuffer>();
+  const auto& lights = world.registry().resource<render::LightBuffer>();
   for (std::size_t i = 0; i < lights.staging.size(); ++i) {
     EXPECT_EQ(lights.staging[i].spot.z > 0.5f, i < 12u) << "light " << i;
     EXPECT_EQ(glm::vec3(lights.staging[i].position_radius), world.registry().get<Transform>(lights.entities[i]).position)
@@ -285,7 +285,7 @@ TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
   const std::uint32_t maps = stats.maps_reused;
   EXPECT_GE(maps, 8u);
   // Move one shadowed point light a little (its map keeps its size).
-  const auto& lights = world.registry().resource<LightBuffer>();
+  const auto& lights = world.registry().resource<render::LightBuffer>();
   ecs::Entity moved;
   for (std::size_t i = 0; i < lights.staging.size(); ++i) {
     if (lights.staging[i].spot.z > 0.0f && lights.staging[i].color_kind.w == 0.0f) moved = lights.entities[i];
@@ -358,7 +358,7 @@ TEST(AtlasAllocator, TilesThatFitByAreaPackLargestFirst) {
   EXPECT_EQ(atlas.free_texels(), 0);
 }
 
-GpuLight point_light(glm::vec3 position, float radius, float brightness) {
+render::GpuLight point_light(glm::vec3 position, float radius, float brightness) {
   return {glm::vec4(position, radius), glm::vec4(glm::vec3(brightness), 0.0f), glm::vec4(0, 0, -1, 0), glm::vec4(0.0f)};
 }
 
@@ -371,11 +371,11 @@ ViewState camera_at_origin() {
 }
 
 TEST(ShadowSelection, TheBrightestNearestLightsInViewWinAndDirectionalComesFirst) {
-  std::vector<GpuLight> lights{point_light({0, 0, -5}, 3, 1.0f),     // in view, near
+  std::vector<render::GpuLight> lights{point_light({0, 0, -5}, 3, 1.0f),     // in view, near
                                point_light({0, 0, -40}, 3, 1.0f),    // in view, far
                                point_light({0, 0, 20}, 3, 50.0f),    // behind the camera: no pixel of it shows
                                point_light({1, 0, -5}, 3, 4.0f)};    // as near, brighter
-  GpuLight sun{glm::vec4(0.0f), glm::vec4(glm::vec3(0.1f), 2.0f), glm::vec4(0, -1, 0, 0), glm::vec4(0.0f)};
+  render::GpuLight sun{glm::vec4(0.0f), glm::vec4(glm::vec3(0.1f), 2.0f), glm::vec4(0, -1, 0, 0), glm::vec4(0.0f)};
   lights.push_back(sun);
   std::vector<ecs::Entity> entities;
   for (std::uint32_t i = 0; i < lights.size(); ++i) entities.push_back({i, 0});
@@ -388,7 +388,7 @@ TEST(ShadowSelection, TheBrightestNearestLightsInViewWinAndDirectionalComesFirst
 }
 
 TEST(ShadowSelection, AShadowedLightKeepsItsPlaceOverOneSlightlyBrighter) {
-  std::vector<GpuLight> lights{point_light({-1, 0, -8}, 3, 1.0f), point_light({1, 0, -8}, 3, 1.2f)};
+  std::vector<render::GpuLight> lights{point_light({-1, 0, -8}, 3, 1.0f), point_light({1, 0, -8}, 3, 1.2f)};
   std::vector<ecs::Entity> entities{{0, 0}, {1, 0}};
   const ViewState view = camera_at_origin();
   auto choices = shadows::choose_shadowed_lights(lights, entities, view, {1280, 720}, 1, {}, {});
@@ -405,7 +405,7 @@ TEST(ShadowSelection, AShadowedLightKeepsItsPlaceOverOneSlightlyBrighter) {
 }
 
 TEST(ShadowSelection, MapsShrinkToFitTheAtlas) {
-  std::vector<GpuLight> lights;
+  std::vector<render::GpuLight> lights;
   std::vector<ecs::Entity> entities;
   for (std::uint32_t i = 0; i < 64; ++i) {
     lights.push_back(point_light({static_cast<float>(i % 8) - 4.0f, static_cast<float>(i / 8) - 4.0f, -6.0f}, 5, 1.0f));

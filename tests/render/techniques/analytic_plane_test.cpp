@@ -110,13 +110,13 @@ void check_split(const Case& c) {
     World& world = *plane;
     world.frame(0.0);
     const assets::Image unsplit = world.renderer().read_output();
-    EXPECT_TRUE(world.renderer().read_hdr(MeshRenderer::HdrTarget::DiffuseLight).empty()) << "no sums while the split is off";
+    EXPECT_TRUE(world.renderer().read_hdr(render::MeshRenderer::HdrTarget::DiffuseLight).empty()) << "no sums while the split is off";
     world.registry().resource<RendererSettings>().technique_options.split_lighting = true;
     world.frame(0.0);
     EXPECT_GE(assets::psnr(unsplit, world.renderer().read_output()), 50.0);
-    const auto hdr = world.renderer().read_hdr(MeshRenderer::HdrTarget::Color);
-    const auto diffuse = world.renderer().read_hdr(MeshRenderer::HdrTarget::DiffuseLight);
-    const auto specular = world.renderer().read_hdr(MeshRenderer::HdrTarget::SpecularLight);
+    const auto hdr = world.renderer().read_hdr(render::MeshRenderer::HdrTarget::Color);
+    const auto diffuse = world.renderer().read_hdr(render::MeshRenderer::HdrTarget::DiffuseLight);
+    const auto specular = world.renderer().read_hdr(render::MeshRenderer::HdrTarget::SpecularLight);
     ASSERT_EQ(diffuse.size(), hdr.size());
     ASSERT_EQ(specular.size(), hdr.size());
     const ViewState& view = world.registry().resource<ViewState>();
@@ -182,7 +182,7 @@ void check_light_buffer(const Case& c) {
   const std::unique_ptr<World> plane = plane_world(c, "light-prepass");
   World& world = *plane;
   std::vector<std::string> names;
-  for (const char* target : lighting::LightPrepassTechnique::kLightBufferTargets) names.push_back(std::string("light-buffer.") + target);
+  for (const char* target : techniques::LightPrepassTechnique::kLightBufferTargets) names.push_back(std::string("light-buffer.") + target);
   const std::shared_ptr<testing::Captured> captured = testing::capture_textures(world, names);
   world.frame(0.0);
   std::array<std::vector<glm::vec4>, 3> buffer;
@@ -223,7 +223,7 @@ void check_light_buffer(const Case& c) {
   }
   EXPECT_GT(compared, kSize.x * kSize.y / 2);
   for (std::size_t t = 0; t < 3; ++t) {
-    SCOPED_TRACE(lighting::LightPrepassTechnique::kLightBufferTargets[t]);
+    SCOPED_TRACE(techniques::LightPrepassTechnique::kLightBufferTargets[t]);
     most_of_all[t] = std::max(most_of_all[t], most[t]);
     EXPECT_LE(worst[t], 1.0f) << "in units of the tolerance";
   }

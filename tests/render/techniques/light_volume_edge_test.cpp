@@ -35,7 +35,7 @@ struct EdgeCase {
 
 // A floor and a back wall, seen from (0, 0.5, 5) looking along -Z.
 std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
-                                  lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
+                                  GBufferLayout layout = GBufferLayout::Full) {
   assets::AssetManager manager;
   assets::MeshAsset room;
   assets::Material material;
@@ -77,7 +77,7 @@ std::unique_ptr<World> make_world(const EdgeCase& c, const std::string& mode,
   return world;
 }
 
-assets::Image render(const EdgeCase& c, const std::string& mode, lighting::GBufferLayout layout = lighting::GBufferLayout::Full) {
+assets::Image render(const EdgeCase& c, const std::string& mode, GBufferLayout layout = GBufferLayout::Full) {
   const auto world = make_world(c, mode, layout);
   world->frame(0.0);
   return world->renderer().read_output();
@@ -158,7 +158,7 @@ const EdgeCase kCases[] = {
 };
 
 class VolumeEdgeCase : public testing::GlTest,
-                       public ::testing::WithParamInterface<std::tuple<std::tuple<std::string, lighting::GBufferLayout>, int>> {};
+                       public ::testing::WithParamInterface<std::tuple<std::tuple<std::string, GBufferLayout>, int>> {};
 
 TEST_P(VolumeEdgeCase, MatchesForward) {
   const auto& [mode_layout, index] = GetParam();

@@ -19,7 +19,7 @@ namespace {
 using testing::kSize;
 
 class TechniqueMatchesForward : public testing::GlTest,
-                                public ::testing::WithParamInterface<std::tuple<std::string, lighting::GBufferLayout>> {};
+                                public ::testing::WithParamInterface<std::tuple<std::string, GBufferLayout>> {};
 
 TEST_P(TechniqueMatchesForward, FromEveryView) {
   const auto& [mode, layout] = GetParam();
@@ -73,7 +73,7 @@ using ModeSwitching = testing::GlTest;
 
 TEST_F(ModeSwitching, AHundredSwitchesLeaveTheLiveGlObjectsUnchanged) {
   World world({.scene = "atrium", .lights = 32u, .mode = "forward", .size = {64, 36}});
-  const auto modes = lighting::technique_table();
+  const auto modes = techniques::technique_table();
   // One full round first: every technique's programs are compiled and cached.
   for (const auto& info : modes) {
     world.set_mode(std::string(info.name));

@@ -61,11 +61,11 @@ void Bloom::add_passes(FrameBuild& build) {
   const int levels = bloom_levels(options.value(kRadiusOption, kDefaultBloomRadius), size.y);
   // The passes run where the frame's full-screen passes run (--lighting-stage).
   const bool compute =
-      lighting::resolve_lighting_stage(build.registry.resource<RendererSettings>().technique_options) == lighting::LightingStage::Compute;
+      lighting::resolve_lighting_stage(build.registry.resource<RendererSettings>().technique_options) == LightingStage::Compute;
   if (!programs_.first_down || programs_.compute != compute) {
-    programs_.fetch(build.registry.resource<assets::GpuAssets>().shaders(), compute);
+    programs_.fetch(build.registry.resource<GpuAssets>().shaders(), compute);
   }
-  if (!triangle_) triangle_ = std::make_unique<lighting::FullscreenTriangle>();
+  if (!triangle_) triangle_ = std::make_unique<FullscreenTriangle>();
   const Access written = compute ? Access::Storage : Access::Attachment;
 
   // The chain is the module's until the frame's passes have run: their

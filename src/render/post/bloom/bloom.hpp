@@ -56,7 +56,7 @@ class Bloom {
     void fetch(gfx::ShaderLibrary& shaders, bool compute);
   };
   Programs programs_;
-  std::unique_ptr<lighting::FullscreenTriangle> triangle_;
+  std::unique_ptr<FullscreenTriangle> triangle_;
   // Draws `program` over `target` (a full-screen triangle, or a dispatch per texel).
   void draw(const PassResources& res, gfx::ShaderProgram& program, ResourceId target, glm::ivec2 size) const;
 };

@@ -9,7 +9,7 @@ FrameModule TonemapPass::module() {
   return {FrameStage::Output, "tonemap", [this](FrameBuild& build) {
             const ResourceId color = build.color, output = build.output;
             const bool compute =
-                lighting::resolve_lighting_stage(build.registry.resource<RendererSettings>().technique_options) == lighting::LightingStage::Compute;
+                lighting::resolve_lighting_stage(build.registry.resource<RendererSettings>().technique_options) == LightingStage::Compute;
             const glm::ivec2 size = build.targets.size;
             build.graph.add_pass("tonemap", [&](PassBuilder& pass) {
               pass.read(color, Access::Sampled);
@@ -18,7 +18,7 @@ FrameModule TonemapPass::module() {
               glBindTextureUnit(0, res.texture(color));
               if (compute) {
                 if (!compute_) compute_ = &shaders_.get({"post/tonemap.comp"});
-                glBindImageTexture(lighting::kDisplayImageUnit, res.texture(output), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+                glBindImageTexture(kDisplayImageUnit, res.texture(output), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
                 lighting::dispatch_per_pixel(*compute_, size);
                 return;
               }

@@ -22,7 +22,7 @@ class TonemapPass {
   // Fetched on first use after the module's hook (the global defines changed: MSAA_SAMPLES).
   gfx::ShaderProgram* fragment_ = nullptr;
   gfx::ShaderProgram* compute_ = nullptr;
-  lighting::FullscreenTriangle triangle_;
+  FullscreenTriangle triangle_;
 };
 
 }  // namespace atrium::render

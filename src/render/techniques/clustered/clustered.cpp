@@ -4,7 +4,7 @@
 #include "render/frame/scene_passes.hpp"
 #include "render/lighting/cpu_light_lists.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 namespace {
 
 // Deferred marks from the G-buffer's positions, forward+ from depths.
@@ -23,7 +23,7 @@ std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::
 
 }  // namespace
 
-ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
+ClusteredTechnique::ClusteredTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
       compute_free_(options.compute_free),
       // Pixel boxes and active flags are marked by compute and storage writes: the tier tests the grid's boxes.
@@ -31,9 +31,9 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
       active_only_(options.active_clusters && !pixel_bounds_ && !compute_free_),
       grid_size_(options.cluster_grid),
       z_slicing_(options.z_slicing),
-      grid_(std::make_unique<ClusterGrid>(grid_size_.at({1, 1}), z_slicing_)),
+      grid_(std::make_unique<lighting::ClusterGrid>(grid_size_.at({1, 1}), z_slicing_)),
       assign_(compute_free_ ? std::nullopt
-                            : std::optional<LightAssignmentPrograms>(ClusterGrid::assign_programs(
+                            : std::optional<lighting::LightAssignmentPrograms>(lighting::ClusterGrid::assign_programs(
                                   gpu.shaders(), pixel_bounds_ ? ClusterBounds::Pixels : ClusterBounds::Grid, active_only_, options.light_assignment))),
       mark_(compute_free_ ? nullptr : &gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
       mark_blended_(compute_free_ ? nullptr
@@ -42,18 +42,18 @@ ClusteredTechnique::ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOp
                                   prepass_defines(deferred, options.msaa, {}))),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
                                        prepass_defines(deferred, options.msaa, {{"POSITION_ONLY"}}))),
-      lighting_(deferred ? std::optional<LightingPass>(std::in_place, gpu.shaders(), "clustered/lighting", std::vector<gfx::ShaderDefine>{}, options)
+      lighting_(deferred ? std::optional<lighting::LightingPass>(std::in_place, gpu.shaders(), "clustered/lighting", std::vector<gfx::ShaderDefine>{}, options)
                          : std::nullopt),
       shading_(deferred ? nullptr : &gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
-void ClusteredTechnique::resize(const FrameTargets& targets) {
+void ClusteredTechnique::resize(const render::FrameTargets& targets) {
   const glm::uvec3 dims = grid_size_.at(targets.size);
-  if (dims != grid_->dims()) grid_ = std::make_unique<ClusterGrid>(dims, z_slicing_);
+  if (dims != grid_->dims()) grid_ = std::make_unique<lighting::ClusterGrid>(dims, z_slicing_);
 }
 
-GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
   GLuint buffer = 0;
   if (pixel_bounds_) {
     grid_->clear_pixel_bounds();
@@ -64,21 +64,21 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
     buffer = grid_->active_buffer();
   }
   grid_->bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPerClusterBinding, buffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kPerClusterBinding, buffer);
   if (deferred_) gbuffer_.bind_textures(res);
   else glBindTextureUnit(0, res.texture(shading_depth_.valid() ? shading_depth_ : frame.scene_depth));
   mark_->use();
   glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
-  if (!frame.draws.blended.empty()) {
+  if (!frame.draws.list().blended.empty()) {
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
+    glBindFramebuffer(GL_FRAMEBUFFER, render::scene_framebuffer(res, frame));
     glViewport(0, 0, targets.size.x, targets.size.y);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(gfx::kDepthCloser);
     glDepthMask(GL_FALSE);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     mark_blended_->use();
-    draw_items(frame.draws.blended, frame.commands);
+    render::draw_items(frame.draws.list().blended, frame.draws.commands());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
   }
@@ -86,28 +86,31 @@ GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const
   return buffer;
 }
 
-void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
   grid_->update(frame.projection, frame.near_plane, frame.far_plane);
   shading_depth_ = {};
   if (deferred_) {
-    add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+    render::add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   } else {
     graph.add_pass("depth pre-pass", [&](render::PassBuilder& pass) {
+      render::read_draws(pass, frame);
       pass.write(frame.scene_depth, render::Access::Attachment);
       if (targets.samples > 1) shading_depth_ = pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth);
     }, [this, &frame, &targets](const render::PassResources& res) { draw_prepass(res, frame, targets); });
   }
   const render::ResourceId lists = grid_->list().import_into(graph, "cluster-light-lists", compute_free_ ? render::ViewKind::None : render::ViewKind::LightBins);
   // The light-bins view reads the GPU's lists: not on the compute-free tier.
-  if (!compute_free_) graph.publish(LightBins{LightBins::Binning::Clusters, lists, {}, 0, &grid_->list(), grid_->uniform_buffer(), grid_->dims()});
+  if (!compute_free_) graph.publish(lighting::LightBins{lighting::LightBins::Binning::Clusters, lists, {}, 0, &grid_->list(), grid_->uniform_buffer(), grid_->dims()});
   graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
     if (deferred_) gbuffer_.read_targets(pass);
     else pass.read(shading_depth_.valid() ? shading_depth_ : frame.scene_depth, render::Access::Sampled);
     pass.read(frame.light_buffer, render::Access::Storage);
+    // The blended surfaces mark their clusters by drawing.
+    if (!frame.draws.list().blended.empty()) render::read_draws(pass, frame);
     pass.write(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
     if (compute_free_) {
-      cpu_lists_.upload(bin_lights_in_clusters(frame.lights, frame.view, *grid_));
+      cpu_lists_.upload(lighting::bin_lights_in_clusters(frame.lights, frame.view, *grid_));
       return;
     }
     const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;
@@ -118,30 +121,31 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const FrameContex
       lighting_->declare(pass, gbuffer_, frame);
     } else {
       pass.write(frame.scene_color, render::Access::Attachment);
-      read_shading_inputs(pass, frame);
+      render::read_shading_inputs(pass, frame);
+      render::read_draws(pass, frame);
     }
     pass.read(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) { shade(res, frame, targets); });
   // Blended surfaces are shaded forward+ from the same lists: their clusters
   // were marked with the opaque pixels'.
-  add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
+  render::add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
                         [this] { bind_lists(); });
 }
 
-void ClusteredTechnique::draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
-  begin_scene_pass(res, frame, targets);
-  const BatchDrawer draw_prepass = [&](std::span<const DrawBatch> batches, const CommandSource& source) {
-    draw_depth(batches, source, position_only_, geometry_);
+void ClusteredTechnique::draw_prepass(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
+  render::begin_scene_pass(res, frame, targets);
+  const render::BatchDrawer draw_prepass = [&](std::span<const render::DrawBatch> batches, const render::CommandSource& source) {
+    render::draw_depth(batches, source, position_only_, geometry_);
   };
   if (shading_depth_.valid()) {
     const GLuint prepass_framebuffer = res.framebuffer({shading_depth_}, frame.scene_depth);
     glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer);
     const float far = gfx::kDepthFar;
     glClearNamedFramebufferfv(prepass_framebuffer, GL_COLOR, 0, &far);
-    frame.draw_first_pass(draw_prepass);
+    frame.draw_first_pass(res, draw_prepass);
   } else {
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    frame.draw_first_pass(draw_prepass);
+    frame.draw_first_pass(res, draw_prepass);
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
   }
 }
@@ -151,26 +155,26 @@ void ClusteredTechnique::bind_lists() const {
     grid_->bind();
     return;
   }
-  glBindBufferBase(GL_UNIFORM_BUFFER, kClusterUniformBinding, grid_->uniform_buffer());
+  glBindBufferBase(GL_UNIFORM_BUFFER, render::kClusterUniformBinding, grid_->uniform_buffer());
   cpu_lists_.bind();
 }
 
-void ClusteredTechnique::shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+void ClusteredTechnique::shade(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
   bind_lists();
   if (deferred_) {
     lighting_->run(res, gbuffer_, frame, targets);
     return;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, scene_framebuffer(res, frame));
+  glBindFramebuffer(GL_FRAMEBUFFER, render::scene_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   // Every visible fragment is shaded once: its depth is already there.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloserOrEqual);
   glDepthMask(GL_FALSE);
   shading_->use();
-  draw_items(frame.draws.opaque, frame.commands);
+  render::draw_items(frame.draws.list().opaque, frame.draws.commands());
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -20,16 +20,16 @@
 #include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 class ClusteredTechnique final : public LightingTechnique {
  public:
-  ClusteredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
+  ClusteredTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool deferred);
   // Sizes the grid for the frame (--cluster-grid in pixels follows the size).
-  void resize(const FrameTargets& targets) override;
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  void resize(const render::FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
-  [[nodiscard]] const ClusterGrid& grid() const { return *grid_; }
+  [[nodiscard]] const lighting::ClusterGrid& grid() const { return *grid_; }
   [[nodiscard]] ListStats light_lists() override {
     if (compute_free_) return {cpu_lists_.entries(), 0};
     grid_->list().poll();
@@ -40,11 +40,11 @@ class ClusteredTechnique final : public LightingTechnique {
   // Fills the per-cluster buffer assignment reads (pixel boxes, or active
   // flags) from the positions shading will light (G-buffer, or depths) and the
   // blended fragments in front of them; returns it.
-  GLuint mark_clusters(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  GLuint mark_clusters(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
   // Forward+: the depth pre-pass (through FrameContext::draw_first_pass).
-  void draw_prepass(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  void draw_prepass(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
   // The opaque surfaces lit from the lists: full-screen (deferred) or forward.
-  void shade(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  void shade(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
   // Binds the grid's uniforms and its lists (the GPU's, or the CPU's textures).
   void bind_lists() const;
 
@@ -54,20 +54,20 @@ class ClusteredTechnique final : public LightingTechnique {
   bool active_only_;
   ClusterGridSize grid_size_;
   ZSlicing z_slicing_;
-  std::unique_ptr<ClusterGrid> grid_;  // sized by resize()
-  std::optional<LightAssignmentPrograms> assign_;  // none on the compute-free tier
+  std::unique_ptr<lighting::ClusterGrid> grid_;  // sized by resize()
+  std::optional<lighting::LightAssignmentPrograms> assign_;  // none on the compute-free tier
   gfx::ShaderProgram* mark_;                    // nullptr on the compute-free tier
   gfx::ShaderProgram* mark_blended_;
   render::ListTextures cpu_lists_;              // the compute-free tier's
   gfx::ShaderProgram& geometry_;  // deferred: G-buffer pass; forward+: depth pre-pass of alpha-masked batches
   gfx::ShaderProgram& position_only_;  // forward+: depth pre-pass of the other batches
-  std::optional<LightingPass> lighting_;  // deferred: the full-screen lighting (fragment or compute)
+  std::optional<lighting::LightingPass> lighting_;  // deferred: the full-screen lighting (fragment or compute)
   gfx::ShaderProgram* shading_;           // forward+: forward shading of opaque surfaces
   gfx::ShaderProgram& blended_;   // forward+ shading of blended surfaces
-  GBuffer gbuffer_;
+  lighting::GBuffer gbuffer_;
   // Forward+ with MSAA: this frame's pre-pass depth at pixel centres (R32F,
   // per sample), where shading lights each fragment; assignment marks from it.
   render::ResourceId shading_depth_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -13,25 +13,25 @@
 #include "render/lighting/lighting_pass.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 class DeferredTechnique final : public LightingTechnique {
  public:
-  DeferredTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius);
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  DeferredTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool cull_by_radius);
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
  private:
   // The lighting pass over every light, in runs of lights_per_run().
-  void light(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  void light(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
 
   gfx::ShaderLibrary& shaders_;
   TechniqueOptions options_;
   bool cull_by_radius_;
   gfx::ShaderProgram& geometry_;
-  LightingPass lighting_;
-  std::optional<LightingPass> adding_;  // the runs after the first (ADD_LIGHTS), built when a frame first needs one
+  lighting::LightingPass lighting_;
+  std::optional<lighting::LightingPass> adding_;  // the runs after the first (ADD_LIGHTS), built when a frame first needs one
   gfx::ShaderProgram& forward_;
-  GBuffer gbuffer_;
+  lighting::GBuffer gbuffer_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

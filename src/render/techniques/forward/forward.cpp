@@ -2,22 +2,23 @@
 
 #include "render/frame/scene_passes.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
-ForwardTechnique::ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& /*options*/)
+ForwardTechnique::ForwardTechnique(render::GpuAssets& gpu, const TechniqueOptions& /*options*/)
     : program_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {}
 
-void ForwardTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
+void ForwardTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
   graph.add_pass("shading", [&](render::PassBuilder& pass) {
-    read_shading_inputs(pass, frame);
+    render::read_shading_inputs(pass, frame);
+    render::read_draws(pass, frame);
     pass.write(frame.scene_depth, render::Access::Attachment);
     pass.write(frame.scene_color, render::Access::Attachment);
   }, [this, &frame, &targets](const render::PassResources& res) {
-    begin_scene_pass(res, frame, targets);
+    render::begin_scene_pass(res, frame, targets);
     program_.use();
-    frame.draw_first_pass(draw_items);
+    frame.draw_first_pass(res, render::draw_items);
   });
-  add_transparency_pass(graph, program_, frame, targets);
+  render::add_transparency_pass(graph, program_, frame, targets);
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

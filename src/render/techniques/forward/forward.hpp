@@ -7,15 +7,15 @@
 #include "gfx/shader_program.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 class ForwardTechnique final : public LightingTechnique {
  public:
-  ForwardTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  ForwardTechnique(render::GpuAssets& gpu, const TechniqueOptions& options);
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
  private:
   gfx::ShaderProgram& program_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

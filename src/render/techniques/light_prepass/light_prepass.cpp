@@ -7,7 +7,7 @@
 #include "gfx/depth.hpp"
 #include "gfx/gl_features.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 namespace {
 
 std::vector<gfx::ShaderDefine> with(std::vector<gfx::ShaderDefine> defines, std::vector<gfx::ShaderDefine> more) {
@@ -17,7 +17,7 @@ std::vector<gfx::ShaderDefine> with(std::vector<gfx::ShaderDefine> defines, std:
 
 }  // namespace
 
-LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options)
+LightPrepassTechnique::LightPrepassTechnique(render::GpuAssets& gpu, const TechniqueOptions& options)
     : gbuffer_(gpu.shaders(), GBufferLayout::Thin, options.msaa),
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"}, gbuffer_.defines())),
       directional_(gpu.shaders(), {"post/fullscreen.vert", "light_prepass/accumulate.frag"},
@@ -28,11 +28,11 @@ LightPrepassTechnique::LightPrepassTechnique(assets::GpuAssets& gpu, const Techn
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})) {
 }
 
-void LightPrepassTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
-  add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+void LightPrepassTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
+  render::add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   graph.add_pass("light buffer", [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
-    read_shading_inputs(pass, frame);
+    render::read_shading_inputs(pass, frame);
     // The scene's depth, for the volumes' depth test (it is not sampled: the
     // distance comes from the thin G-buffer).
     pass.read(frame.scene_depth, render::Access::Attachment);
@@ -43,13 +43,14 @@ void LightPrepassTechnique::add_passes(render::FrameGraph& graph, const FrameCon
   }, [this, &frame, &targets](const render::PassResources& res) { accumulate_lights(res, frame, targets); });
   graph.add_pass("material", [&](render::PassBuilder& pass) {
     for (const render::ResourceId sum : light_buffer_) pass.read(sum, render::Access::Sampled);
+    render::read_draws(pass, frame);
     pass.write(frame.scene_depth, render::Access::Attachment);
     pass.write(frame.scene_color, render::Access::Attachment);
   }, [this, &frame, &targets](const render::PassResources& res) { shade_materials(res, frame, targets); });
-  add_transparency_pass(graph, forward_, frame, targets);
+  render::add_transparency_pass(graph, forward_, frame, targets);
 }
 
-void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
   const GLuint framebuffer = res.framebuffer(light_buffer_, frame.scene_depth);
   const GLfloat zero[] = {0.0f, 0.0f, 0.0f, 0.0f};
   for (GLint i = 0; i < static_cast<GLint>(light_buffer_.size()); ++i) glClearNamedFramebufferfv(framebuffer, GL_COLOR, i, zero);
@@ -61,7 +62,7 @@ void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, 
   glDepthMask(GL_FALSE);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_CULL_FACE);
-  for (const std::uint32_t light : directional_lights(frame.lights)) {
+  for (const std::uint32_t light : render::directional_lights(frame.lights)) {
     directional_.draw([&](gfx::ShaderProgram& program) {
       program.set("u_light_index", light);
       program.use();
@@ -77,7 +78,7 @@ void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, 
     glDepthFunc(gfx::kDepthFartherOrEqual);
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
-    volumes_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), shadowed_light_count(frame.lights));
+    volumes_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), render::shadowed_light_count(frame.lights));
     glBindVertexArray(0);
     if (gfx::gl_features().depth_clamp) glDisable(GL_DEPTH_CLAMP);
     glCullFace(GL_BACK);
@@ -87,11 +88,11 @@ void LightPrepassTechnique::accumulate_lights(const render::PassResources& res, 
   glDepthMask(GL_TRUE);
 }
 
-void LightPrepassTechnique::shade_materials(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets) {
+void LightPrepassTechnique::shade_materials(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
   // Pixels no surface covers keep the background and no light.
   const GLfloat background[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
-  glClearNamedFramebufferfv(scene_framebuffer(res, frame), GL_COLOR, 0, background);
-  glBindFramebuffer(GL_FRAMEBUFFER, lighting_framebuffer(res, frame));
+  glClearNamedFramebufferfv(render::scene_framebuffer(res, frame), GL_COLOR, 0, background);
+  glBindFramebuffer(GL_FRAMEBUFFER, render::lighting_framebuffer(res, frame));
   glViewport(0, 0, targets.size.x, targets.size.y);
   // Each visible fragment is shaded once: the first pass left its depth.
   glEnable(GL_DEPTH_TEST);
@@ -102,10 +103,10 @@ void LightPrepassTechnique::shade_materials(const render::PassResources& res, co
   for (std::size_t i = 0; i < light_buffer_.size(); ++i) glBindTextureUnit(5 + static_cast<GLuint>(i), res.texture(light_buffer_[i]));
   material_.draw([&](gfx::ShaderProgram& program) {
     program.use();
-    draw_items(frame.draws.opaque, frame.commands);
+    render::draw_items(frame.draws.list().opaque, frame.draws.commands());
   });
   glDepthMask(GL_TRUE);
   glDepthFunc(gfx::kDepthCloser);
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

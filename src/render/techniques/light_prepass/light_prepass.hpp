@@ -12,7 +12,7 @@
 #include "render/lighting/light_sphere.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 class LightPrepassTechnique final : public LightingTechnique {
  public:
@@ -22,24 +22,24 @@ class LightPrepassTechnique final : public LightingTechnique {
   static constexpr std::array<const char*, 3> kLightBufferTargets{"diffuse", "specular-f0", "specular"};
   static constexpr GLenum kLightBufferFormat = GL_RGBA16F;
 
-  LightPrepassTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  LightPrepassTechnique(render::GpuAssets& gpu, const TechniqueOptions& options);
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
  private:
-  void accumulate_lights(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
-  void shade_materials(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  void accumulate_lights(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
+  void shade_materials(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
 
-  GBuffer gbuffer_;  // first: the programs below are built with its defines
-  LightSphere sphere_;  // before volumes_, which prepares its programs for it
+  lighting::GBuffer gbuffer_;  // first: the programs below are built with its defines
+  lighting::LightSphere sphere_;  // before volumes_, which prepares its programs for it
   gfx::ShaderProgram& geometry_;
-  SampleRatePrograms directional_;
-  VolumePrograms volumes_;
+  lighting::SampleRatePrograms directional_;
+  lighting::VolumePrograms volumes_;
   // With MSAA the material pass runs per sample on the edge pixels too: a
   // fragment there must read the light of its own samples.
-  SampleRatePrograms material_;
+  lighting::SampleRatePrograms material_;
   gfx::ShaderProgram& forward_;
-  FullscreenTriangle fullscreen_;
+  render::FullscreenTriangle fullscreen_;
   std::array<render::ResourceId, kLightBufferTargets.size()> light_buffer_;  // this frame's
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -5,9 +5,9 @@
 #include "gfx/depth.hpp"
 #include "gfx/gl_features.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
-LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced)
+LightVolumeTechnique::LightVolumeTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool instanced)
     : instanced_(instanced),
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       unlit_(gpu.shaders(), {"post/fullscreen.vert", "light_volumes/unlit.frag"}, {}, options.msaa),
@@ -19,16 +19,16 @@ LightVolumeTechnique::LightVolumeTechnique(assets::GpuAssets& gpu, const Techniq
   sphere_.prepare(stencil_);
 }
 
-void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) {
-  add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
+void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
+  render::add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
   auto lights_scene = [&](render::PassBuilder& pass) {
     gbuffer_.read_targets(pass);
-    read_shading_inputs(pass, frame);
+    render::read_shading_inputs(pass, frame);
     pass.write(frame.scene_color, render::Access::Attachment);
   };
   graph.add_pass("base", lights_scene,
                  [this, &frame, &targets](const render::PassResources& res) { gbuffer_.draw_fullscreen(res, unlit_, frame, targets); });
-  if (std::vector<std::uint32_t> suns = directional_lights(frame.lights); !suns.empty()) {
+  if (std::vector<std::uint32_t> suns = render::directional_lights(frame.lights); !suns.empty()) {
     graph.add_pass("directional", lights_scene, [this, &frame, &targets, suns = std::move(suns)](const render::PassResources& res) {
       glEnable(GL_BLEND);
       glBlendFunc(GL_ONE, GL_ONE);
@@ -57,19 +57,19 @@ void LightVolumeTechnique::add_passes(render::FrameGraph& graph, const FrameCont
     glDepthFunc(gfx::kDepthCloser);
     glDepthMask(GL_TRUE);
   });
-  add_transparency_pass(graph, forward_, frame, targets);
+  render::add_transparency_pass(graph, forward_, frame, targets);
 }
 
 // The volume count lives in the stencil bits below kEdgeStencilBit; with MSAA
 // that bit marks the G-buffer's edge pixels, which are lit per sample.
-void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) {
-  const std::uint32_t shadowed = shadowed_light_count(frame.lights);
+void LightVolumeTechnique::draw_volumes_with_stencil(const render::FrameContext& frame) {
+  const std::uint32_t shadowed = render::shadowed_light_count(frame.lights);
   glEnable(GL_STENCIL_TEST);
   glDepthMask(GL_FALSE);
-  glStencilMask(kBelowEdgeBits);
+  glStencilMask(lighting::kBelowEdgeBits);
   glClear(GL_STENCIL_BUFFER_BIT);
   for (std::size_t i = 0; i < frame.lights.size(); ++i) {
-    if (frame.lights[i].color_kind.w == static_cast<float>(GpuLightKind::Directional)) continue;
+    if (frame.lights[i].color_kind.w == static_cast<float>(render::GpuLightKind::Directional)) continue;
     const auto index = static_cast<unsigned>(i);
     // Stencil: no colour, depth test on, both faces; z-fail counting.
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
@@ -92,24 +92,24 @@ void LightVolumeTechnique::draw_volumes_with_stencil(const FrameContext& frame) 
     glEnable(GL_CULL_FACE);
     glCullFace(GL_FRONT);
     glStencilOp(GL_KEEP, GL_ZERO, GL_ZERO);
-    const SampleRatePrograms& lighting = lighting_.of(index, shadowed);
+    const lighting::SampleRatePrograms& lighting = lighting_.of(index, shadowed);
     lighting.each([&](gfx::ShaderProgram& program) {
       program.set("u_light_index", index);
       program.set("u_instanced", 0);
     });
     if (gfx::ShaderProgram* per_sample = lighting.per_sample()) {
-      glStencilFunc(GL_LESS, kEdgeStencilBit, 0xff);
+      glStencilFunc(GL_LESS, lighting::kEdgeStencilBit, 0xff);
       per_sample->use();
       sphere_.draw();
     }
-    glStencilFunc(GL_NOTEQUAL, 0, kBelowEdgeBits);
+    glStencilFunc(GL_NOTEQUAL, 0, lighting::kBelowEdgeBits);
     lighting.per_pixel().use();
     sphere_.draw();
   }
   glStencilMask(0xff);
 }
 
-void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
+void LightVolumeTechnique::draw_volumes_instanced(const render::FrameContext& frame) {
   if (frame.lights.empty()) return;
   // Back faces at or behind the scene's depth: the surface is in front of the
   // sphere's far side, which includes every pixel inside the sphere.
@@ -118,7 +118,7 @@ void LightVolumeTechnique::draw_volumes_instanced(const FrameContext& frame) {
   glDepthMask(GL_FALSE);
   glEnable(GL_CULL_FACE);
   glCullFace(GL_FRONT);
-  lighting_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), shadowed_light_count(frame.lights));
+  lighting_.draw_instanced(sphere_, static_cast<std::uint32_t>(frame.lights.size()), render::shadowed_light_count(frame.lights));
 }
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -13,26 +13,26 @@
 #include "render/lighting/light_sphere.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 class LightVolumeTechnique final : public LightingTechnique {
  public:
-  LightVolumeTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options, bool instanced);
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  LightVolumeTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool instanced);
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
  private:
-  void draw_volumes_with_stencil(const FrameContext& frame);
-  void draw_volumes_instanced(const FrameContext& frame);
+  void draw_volumes_with_stencil(const render::FrameContext& frame);
+  void draw_volumes_instanced(const render::FrameContext& frame);
 
   bool instanced_;
   gfx::ShaderProgram& geometry_;
-  SampleRatePrograms unlit_;
-  SampleRatePrograms directional_;
-  LightSphere sphere_;
+  lighting::SampleRatePrograms unlit_;
+  lighting::SampleRatePrograms directional_;
+  lighting::LightSphere sphere_;
   gfx::ShaderProgram& stencil_;
-  VolumePrograms lighting_;
+  lighting::VolumePrograms lighting_;
   gfx::ShaderProgram& forward_;
-  GBuffer gbuffer_;
+  lighting::GBuffer gbuffer_;
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques

@@ -20,7 +20,7 @@
 #include "render/storage_free.hpp"
 #include "render/techniques/technique.hpp"
 
-namespace atrium::lighting {
+namespace atrium::techniques {
 
 inline constexpr int kTileSize = 16;
 
@@ -33,43 +33,43 @@ static_assert(sizeof(TileBounds) == 80, "must match TileBounds in shaders/tiled/
 
 class TiledTechnique final : public LightingTechnique {
  public:
-  TiledTechnique(assets::GpuAssets& gpu, const TechniqueOptions& options);
-  void resize(const FrameTargets& targets) override;
-  void add_passes(render::FrameGraph& graph, const FrameContext& frame, const FrameTargets& targets) override;
+  TiledTechnique(render::GpuAssets& gpu, const TechniqueOptions& options);
+  void resize(const render::FrameTargets& targets) override;
+  void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
 
-  [[nodiscard]] const LightIndexList& list() const { return *list_; }
+  [[nodiscard]] const lighting::LightIndexList& list() const { return *list_; }
   // The lists of blended surfaces (filled only in frames that draw some).
   // light_lists() counts both.
-  [[nodiscard]] const LightIndexList& blended_list() const { return *blended_list_; }
+  [[nodiscard]] const lighting::LightIndexList& blended_list() const { return *blended_list_; }
   [[nodiscard]] glm::uvec2 tiles() const { return tiles_; }
   [[nodiscard]] ListStats light_lists() override;
 
  private:
   // Takes the tiles' bounds with `bounds` (its inputs bound), then culls
   // `light_count` lights into `list` against them.
-  void assign_lights(LightIndexList& list, gfx::ShaderProgram& bounds, std::uint32_t light_count);
+  void assign_lights(lighting::LightIndexList& list, gfx::ShaderProgram& bounds, std::uint32_t light_count);
   // The frame's blended surfaces: their nearest depth over the opaque depth,
   // then their lists (their forward shading reads those lists).
-  void cull_for_blended(const render::PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+  void cull_for_blended(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
 
   // The compute-free tier: the lists from the CPU, for opaque and blended surfaces alike.
-  void bin_on_cpu(const FrameContext& frame, const FrameTargets& targets);
+  void bin_on_cpu(const render::FrameContext& frame, const render::FrameTargets& targets);
 
   bool compute_free_;
   gfx::ShaderProgram& geometry_;
   gfx::ShaderProgram* bounds_;          // tiled/tile_bounds.comp, from the G-buffer (nullptr on the compute-free tier)
-  std::optional<LightAssignmentPrograms> assign_;
-  LightingPass lighting_;
+  std::optional<lighting::LightAssignmentPrograms> assign_;
+  lighting::LightingPass lighting_;
   gfx::ShaderProgram& blended_depth_;   // depth only
   gfx::ShaderProgram* blended_bounds_;  // tiled/tile_bounds.comp, of blended surfaces
   gfx::ShaderProgram& blended_;         // forward shading from the blended lists
-  GBuffer gbuffer_;
+  lighting::GBuffer gbuffer_;
   glm::uvec2 tiles_{0};
-  std::unique_ptr<LightIndexList> list_, blended_list_;
+  std::unique_ptr<lighting::LightIndexList> list_, blended_list_;
   gfx::Buffer tile_bounds_;             // per tile: TileBounds (shaders/tiled/tiles.glsl)
   bool blended_listed_ = false;         // this frame filled blended_list_
   render::ResourceId front_depth_;      // this frame's opaque depth with blended surfaces drawn over it
   render::ListTextures cpu_lists_;      // the compute-free tier's
 };
 
-}  // namespace atrium::lighting
+}  // namespace atrium::techniques
