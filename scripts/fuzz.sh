@@ -7,8 +7,9 @@
 # build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
 # to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
 # The model fuzzer (OBJ, MTL and FBX through libassimp) is run only when named:
-# it finds crashes inside libassimp 5.2.5 itself within seconds (a SEGV in its
-# OBJ parser), which Atrium cannot fix from outside, so CI leaves it out.
+# it still finds faults inside libassimp 5.2.5 itself within a minute or two (a
+# leak in its FBX reader; tests/fuzz/known-crashes), which Atrium cannot fix
+# from outside, so CI leaves it out.
 #   scripts/fuzz.sh [SECONDS] [TARGET...]   (targets: scene_file gltf texture model)
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,10 +1,13 @@
 #include "assets/assimp_file_access.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <vector>
 
 #include <assimp/MemoryIOWrapper.h>
 
 #include "assets/fbx_sizes.hpp"
+#include "assets/mtl_check.hpp"
 #include "assets/file_lookup.hpp"
 
 namespace atrium::assets {
@@ -28,7 +31,11 @@ struct OwnedMemoryStream : OwnedBytes, Assimp::MemoryIOStream {
 }  // namespace
 
 AssimpFileAccess::AssimpFileAccess(fs::path model, std::size_t limit)
-    : model_(std::move(model)), folder_(model_.parent_path().empty() ? fs::path(".") : model_.parent_path()), limit_(limit) {}
+    : model_(std::move(model)), folder_(model_.parent_path().empty() ? fs::path(".") : model_.parent_path()), limit_(limit) {
+  std::string extension = model_.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  is_obj_ = extension == ".obj";
+}
 
 AssimpFileAccess::Access AssimpFileAccess::resolve(const std::string& asked) const {
   Access access{asked, {}, {}, {}};
@@ -70,6 +77,8 @@ Assimp::IOStream* AssimpFileAccess::Open(const char* file, const char* mode) {
   if (access.problem.empty()) {
     read = read_file_within(access.read, limit_);
     access.problem = read.problem.empty() ? fbx_array_size_problem(read.bytes, limit_) : read.problem;
+    // What an OBJ opens besides itself is a material library.
+    if (access.problem.empty() && is_obj_ && fs::path(access.asked) != model_) access.problem = mtl_texture_before_material_problem(read.bytes);
   }
   if (!access.problem.empty()) access.read.clear();
   const bool ok = access.problem.empty();

@@ -47,6 +47,7 @@ class AssimpFileAccess : public Assimp::IOSystem {
 
   std::filesystem::path model_, folder_;
   std::size_t limit_;
+  bool is_obj_ = false;  // the model is an OBJ: the other files it opens are material libraries (assets/mtl_check.hpp)
   std::vector<Access> accesses_;
 };
 

@@ -17,6 +17,7 @@
 #include "assets/gltf_import.hpp"
 #include "assets/image.hpp"
 #include "assets/model_import.hpp"
+#include "assets/mtl_check.hpp"
 #include "support/model_triangles.hpp"
 
 namespace atrium::assets {
@@ -185,6 +186,45 @@ TEST_F(ObjFolder, AMaterialLibraryBeyondTheLoadBudgetIsAWarning) {
   EXPECT_NE(model.warnings[0].find("'cube.assimp.mtl', which it names, cannot be read (256.0 KiB, more than the memory available, 128.0 KiB)"),
             std::string::npos)
       << model.warnings[0];
+}
+
+// Debian's libassimp 5.2.5 writes through a missing material on a texture
+// before any newmtl (the model fuzzer's find, kept in
+// tests/fuzz/regressions/model/): the library never reaches it.
+TEST_F(ObjFolder, AMaterialLibraryGivingATextureBeforeAnyMaterialIsAWarning) {
+  for (const std::string& statement : {"map_Kd Cube_BaseColor.png", "\tBUMP -bm 2 bumps.png", "norm n.png", "disp d.png"}) {
+    std::ofstream(folder_ / "cube.assimp.mtl") << "# exported\r\n\r\n" << statement << "\r\nnewmtl Cube\r\nKd 1 1 1\r\n";
+    AssetManager assets;
+    const ModelImport model = load(assets);
+    ASSERT_EQ(model.warnings.size(), 1u) << warnings(model);
+    const std::string keyword = statement.substr(statement.find_first_not_of('\t'), statement.find(' ') - statement.find_first_not_of('\t'));
+    EXPECT_NE(model.warnings[0].find("'cube.assimp.mtl', which it names, cannot be read (its line 3 gives a texture ('" + keyword +
+                                     "') before any 'newmtl' names a material to give it to)"),
+              std::string::npos)
+        << model.warnings[0];
+    EXPECT_EQ(drawn_triangles(assets, model), 12u) << "the geometry still loads";
+  }
+  // After a newmtl, the same statement is the material's texture.
+  put("Cube_BaseColor.png", "Cube_BaseColor.png");
+  write_mtl("map_Kd Cube_BaseColor.png");
+  AssetManager assets;
+  const ModelImport model = load(assets);
+  EXPECT_TRUE(model.warnings.empty()) << warnings(model);
+  EXPECT_TRUE(cube_material(assets, model).base_color_texture.valid());
+}
+
+// Where libassimp's reader ends a line: NUL and form feed too (the fuzzer's
+// second find hid a texture statement after a NUL).
+TEST(MtlCheck, FindsTheTextureBeforeAnyMaterialOnEveryKindOfLine) {
+  const auto problem = [](std::string_view text) {
+    return mtl_texture_before_material_problem(std::span(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
+  };
+  EXPECT_EQ(problem(std::string_view("mtllib 082\0norm5", 16)), "its line 2 gives a texture ('norm5') before any 'newmtl' names a material to give it to");
+  EXPECT_EQ(problem("Kd 1 1 1\fmap_Ks s.png"), "its line 2 gives a texture ('map_Ks') before any 'newmtl' names a material to give it to");
+  EXPECT_EQ(problem("# a\r\n\r\n  Map_Kd a.png\n"), "its line 3 gives a texture ('Map_Kd') before any 'newmtl' names a material to give it to");
+  EXPECT_EQ(problem("newmtl a\nmap_Kd a.png\n"), "");
+  EXPECT_EQ(problem("Kd 1 1 1\nNs 10\n"), "") << "no texture at all";
+  EXPECT_EQ(problem(""), "");
 }
 
 TEST_F(ObjFolder, PhongMaterialsBecomeRoughnessAndAlphaMasks) {
