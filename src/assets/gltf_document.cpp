@@ -15,6 +15,12 @@
 namespace atrium::assets::gltf {
 namespace {
 
+// The largest byte length or offset a file may state: what this platform's
+// size_t holds (32 bits in the WebAssembly build), less two bits, so that the
+// sums the range checks form (offset + length, offset + stride * count) cannot
+// wrap around. A larger value is refused, never truncated.
+constexpr std::uint64_t kMaxBytes = std::numeric_limits<std::size_t>::max() / 4;
+
 namespace fs = std::filesystem;
 
 constexpr std::uint32_t kGlbMagic = 0x46546C67;      // "glTF"
@@ -242,7 +248,7 @@ class DocumentReader {
       const JsonPointer where = element("buffers", b);
       const Json& j = r_.object(buffers[b], where);
       Buffer& buffer = doc_.buffers[b];
-      buffer.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 0, std::numeric_limits<std::uint64_t>::max() / 2);
+      buffer.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 0, kMaxBytes);
       const Json ext = r_.object_or_empty(j, where, "extensions");
       const bool fallback = ext.contains("EXT_meshopt_compression") &&
                             r_.boolean_or(r_.object(ext["EXT_meshopt_compression"], where / "extensions" / "EXT_meshopt_compression"),
@@ -299,9 +305,8 @@ class DocumentReader {
       const Json& j = r_.object(views[v], where);
       BufferView& view = doc_.buffer_views[v];
       view.buffer = required_index(j, where, "buffer", "buffers");
-      constexpr std::size_t kMax = std::numeric_limits<std::uint64_t>::max() / 4;
-      view.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMax, 0);
-      view.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMax);
+      view.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMaxBytes, 0);
+      view.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMaxBytes);
       if (r_.find(j, "byteStride")) {
         view.byte_stride = r_.whole(j["byteStride"], where / "byteStride", 4, 252);
         if (view.byte_stride % 4 != 0) fail(where / "byteStride", "expected a multiple of 4, got " + std::to_string(view.byte_stride));
@@ -324,10 +329,9 @@ class DocumentReader {
 
   MeshoptSource read_meshopt(const Json& j, const JsonPointer& where, const BufferView& view) {
     MeshoptSource m;
-    constexpr std::size_t kMax = std::numeric_limits<std::uint64_t>::max() / 4;
     m.buffer = required_index(j, where, "buffer", "buffers");
-    m.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMax, 0);
-    m.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMax);
+    m.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMaxBytes, 0);
+    m.byte_length = r_.whole(r_.required(j, where, "byteLength"), where / "byteLength", 1, kMaxBytes);
     m.byte_stride = r_.whole(r_.required(j, where, "byteStride"), where / "byteStride", 1, 256);
     m.count = r_.whole(r_.required(j, where, "count"), where / "count", 1, std::numeric_limits<std::uint32_t>::max());
     const std::string mode = r_.string(r_.required(j, where, "mode"), where / "mode");
@@ -377,7 +381,7 @@ class DocumentReader {
       const Json& j = r_.object(accessors[i], where);
       Accessor& a = doc_.accessors[i];
       a.buffer_view = index(j, where, "bufferView", "bufferViews");
-      a.byte_offset = r_.whole_or(j, where, "byteOffset", 0, std::numeric_limits<std::uint64_t>::max() / 4, 0);
+      a.byte_offset = r_.whole_or(j, where, "byteOffset", 0, kMaxBytes, 0);
       a.component_type = static_cast<int>(r_.whole(r_.required(j, where, "componentType"), where / "componentType", 0, 100000));
       if (component_size(a.component_type) == 0) {
         fail(where / "componentType", "expected a glTF component type (5120 to 5126), got " + std::to_string(a.component_type));

@@ -26,6 +26,7 @@ inline constexpr Entity kNullEntity{};
 template <>
 struct std::hash<atrium::ecs::Entity> {
   std::size_t operator()(const atrium::ecs::Entity& e) const noexcept {
-    return (static_cast<std::size_t>(e.generation) << 32) | e.index;
+    // Both halves in 64 bits, hashed to size_t: 32 bits in the WebAssembly build.
+    return std::hash<std::uint64_t>{}((std::uint64_t{e.generation} << 32) | e.index);
   }
 };
