@@ -54,7 +54,7 @@ void show_error(const std::string& message) {
 }
 
 // fps over the last half second and the latest frame's pass times, as JSON.
-std::string stats_json(World& world, double fps) {
+std::string stats_json(World& world, double fps, const std::string& refused) {
   const gfx::PassTimer& timer = world.renderer().timer();
   nlohmann::ordered_json passes = nlohmann::ordered_json::array(), views = nlohmann::ordered_json::array();
   double total = 0.0;
@@ -65,6 +65,7 @@ std::string stats_json(World& world, double fps) {
   for (const render::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
   const nlohmann::ordered_json stats{
       {"fps", fps},
+      {"refused", refused},  // why the latest frame drew nothing; empty when it drew
       {"mode", world.mode()},
       {"lights", world.light_count()},
       {"view", world.view()},
@@ -99,7 +100,7 @@ void frame() {
   ++page.frames_since_stats;
   if (now - page.stats_seconds >= 0.5) {
     const double fps = page.frames_since_stats / (now - page.stats_seconds);
-    const std::string json = stats_json(world, fps);
+    const std::string json = stats_json(world, fps, page.last_error);
     EM_ASM({ atriumShowStats(UTF8ToString($0)); }, json.c_str());
     page.stats_seconds = now;
     page.frames_since_stats = 0;
@@ -127,6 +128,13 @@ const char* apply(Change change) {
   return g_page->reply.c_str();
 }
 
+// A value from the panel, parsed by the command line's own row for `option`
+// (--lights, --light-radius), so that it is refused with the URL's message.
+CliOptions parse_panel_value(const char* option, const char* value) {
+  const std::string_view args[] = {option, value};
+  return parse_cli(args);
+}
+
 }  // namespace
 }  // namespace atrium
 
@@ -140,15 +148,15 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_set_view(int view) {
   return atrium::apply([&](atrium::World& world) { world.set_view(view); });
 }
 
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_lights(int count) {
-  return atrium::apply([&](atrium::World& world) {
-    world.set_light_count(static_cast<std::uint32_t>(std::clamp<int>(count, 0, static_cast<int>(atrium::kMaxLights))));
-  });
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_lights(const char* count) {
+  return atrium::apply([&](atrium::World& world) { world.set_light_count(*atrium::parse_panel_value("--lights", count).lights); });
 }
 
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_radius(float radius) {
+// "0" (or nothing): each light keeps its own radius.
+EMSCRIPTEN_KEEPALIVE const char* atrium_set_radius(const char* radius) {
   return atrium::apply([&](atrium::World& world) {
-    world.set_light_radius(radius > 0.0f ? std::optional<float>(radius) : std::nullopt);
+    const std::string_view text(radius);
+    world.set_light_radius(text.empty() || text == "0" ? std::nullopt : atrium::parse_panel_value("--light-radius", radius).light_radius);
   });
 }
 
@@ -227,6 +235,7 @@ int main(int argc, char** argv) {
                 g_page->context->info().renderer.c_str(), world.mode().c_str(), world.light_count());
   } catch (const std::exception& e) {
     show_error(e.what());
+    EM_ASM({ atriumShowRefused(UTF8ToString($0)); }, e.what());
     g_page->world.reset();
     return kExitUsage;
   }

@@ -3,8 +3,10 @@
 build-web/site/atrium.html from a server on 127.0.0.1, every mode's picture
 comes back from the page (?capture: the page POSTs them with every error it
 saw), and each is compared with the native build's compute-free render of the
-same options (atrium render --no-compute) by PSNR. A bad URL parameter must
-show the command line's own one-line message on the page.
+same options (atrium render --no-compute) by PSNR. The canvas must show the
+frame's aspect (a frame wider than the window scaled down to fit), and a bad
+URL parameter must show the command line's own one-line message on the page,
+where the frame rate would be.
 
 usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--out DIR]
 """
@@ -36,6 +38,17 @@ def native_render(atrium, scene, mode, options, out):
                     "--out", out] + options, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
 
 
+def check_aspect(tag, canvas):
+    """The canvas as the page lays it out shows the frame's aspect, not stretched."""
+    frame = canvas["width"] / canvas["height"]
+    shown = canvas["shown_width"] / canvas["shown_height"] if canvas["shown_height"] else 0.0
+    print(f"{tag}: a {canvas['width']}x{canvas['height']} frame shown at {canvas['shown_width']:.0f}x{canvas['shown_height']:.0f}")
+    if abs(shown - frame) > 0.02 * frame:
+        return [f"{tag}: a {canvas['width']}x{canvas['height']} frame is shown at "
+                f"{canvas['shown_width']:.0f}x{canvas['shown_height']:.0f}, another aspect"]
+    return []
+
+
 def compare(args, port, results, tag, page_scene, native_scene, options):
     """Every mode of one scene on the page against the native renders; options
     are command-line options, given to both."""
@@ -50,6 +63,7 @@ def compare(args, port, results, tag, page_scene, native_scene, options):
         failures.append(f"{tag}: console errors {console}")
     if not result["images"]:
         failures.append(f"{tag}: no pictures came back")
+    failures += check_aspect(tag, result["canvas"])
     for name, data in sorted(result["images"].items()):
         mode = name[:-4]
         page_png = os.path.join(args.out, f"web-{tag}-{mode}.png")
@@ -86,10 +100,19 @@ def main():
         failures += compare(args, port, results, "sponza", "/assets/sponza/glTF/Sponza.gltf", args.sponza,
                             ["--camera", "-10.5,1.7,-0.25,90,4"])
 
+    # A frame wider than Chromium's window: scaled down to fit, its aspect kept.
+    result, _ = open_page(port, f"layout&size=1920x1080&lights={LIGHTS}&mode=clustered-deferred&pause=1", results)
+    failures += check_aspect("wide", result["canvas"])
+    if result["canvas"]["shown_width"] > result["canvas"]["window_width"]:
+        failures.append(f"wide: the canvas is {result['canvas']['shown_width']:.0f} pixels wide in a "
+                        f"{result['canvas']['window_width']}-pixel window")
+
     result, _ = open_page(port, "capture&mode=deferred-ish", results)
     expected = "unknown mode 'deferred-ish' (modes: forward"
     if not any(error.startswith(expected) for error in result["errors"]):
         failures.append(f"a bad URL parameter showed {result['errors']}, not the line starting {expected!r}")
+    if not result["status"].startswith("not started: " + expected):
+        failures.append(f"after a bad URL parameter the panel says {result['status']!r}, not that the page did not start")
     server.shutdown()
     for failure in failures:
         print("FAILED:", failure)
