@@ -11,6 +11,7 @@
 
 #include "app/progress_bar.hpp"
 #include "assets/asset_manager.hpp"
+#include "assets/file_lookup.hpp"
 #include "assets/scene_file.hpp"
 #include "assets/builtin_scene.hpp"
 #include "gfx/gl_features.hpp"
@@ -53,8 +54,7 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
     report.timings.parse_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return scene;
   }
-  std::string extension = std::filesystem::path(options.scene).extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), ::tolower);
+  const std::string extension = assets::lowercase_extension(options.scene);
   try {
     if (assets::is_model_file(options.scene)) {
       return assets::load_model_scene(options.scene, assets, options.lights.value_or(0), report, progress);

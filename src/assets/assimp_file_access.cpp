@@ -1,7 +1,5 @@
 #include "assets/assimp_file_access.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <vector>
 
 #include <assimp/MemoryIOWrapper.h>
@@ -31,11 +29,10 @@ struct OwnedMemoryStream : OwnedBytes, Assimp::MemoryIOStream {
 }  // namespace
 
 AssimpFileAccess::AssimpFileAccess(fs::path model, std::size_t limit)
-    : model_(std::move(model)), folder_(model_.parent_path().empty() ? fs::path(".") : model_.parent_path()), limit_(limit) {
-  std::string extension = model_.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  is_obj_ = extension == ".obj";
-}
+    : model_(std::move(model)),
+      folder_(model_.parent_path().empty() ? fs::path(".") : model_.parent_path()),
+      limit_(limit),
+      is_obj_(lowercase_extension(model_) == ".obj") {}
 
 AssimpFileAccess::Access AssimpFileAccess::resolve(const std::string& asked) const {
   Access access{asked, {}, {}, {}};

@@ -18,6 +18,8 @@ std::string lower(std::string s) {
 
 }  // namespace
 
+std::string lowercase_extension(const fs::path& path) { return lower(path.extension().string()); }
+
 FoundFile find_named_file(const fs::path& folder, const std::string& written) {
   std::string path = written;
   std::replace(path.begin(), path.end(), '\\', '/');

@@ -24,6 +24,9 @@ struct FoundFile {
 
 // `written` as the model wrote it, relative to `folder` (the model's folder)
 // unless absolute.
+// A path's extension in lower case (".obj" for "Model.OBJ"), as formats are told apart.
+[[nodiscard]] std::string lowercase_extension(const std::filesystem::path& path);
+
 [[nodiscard]] FoundFile find_named_file(const std::filesystem::path& folder, const std::string& written);
 
 // What a path names when it is not a regular file, in a few words: "no such

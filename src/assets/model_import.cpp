@@ -4,19 +4,14 @@
 #include <array>
 
 #include "assets/assimp_import.hpp"
+#include "assets/file_lookup.hpp"
 #include "assets/gltf_import.hpp"
 
 namespace atrium::assets {
 namespace {
 
-std::string extension_of(const std::filesystem::path& path) {
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return extension;
-}
-
 const ModelFormat* format_of(const std::filesystem::path& path) {
-  const std::string extension = extension_of(path);
+  const std::string extension = lowercase_extension(path);
   for (const ModelFormat& format : model_formats()) {
     if (std::find(format.extensions.begin(), format.extensions.end(), extension) != format.extensions.end()) return &format;
   }

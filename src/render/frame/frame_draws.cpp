@@ -14,9 +14,9 @@ void FrameDraws::begin_frame(ecs::Registry& registry, CullingChoice culling, boo
   triangles_occluded_ = 0;
   const auto& view = registry.resource<ViewState>();
   list_ = build_draw_list(registry, registry.resource<assets::AssetManager>(), gpu_, view.view,
-                                    culling.on_gpu      ? DrawSelection::EachInView
-                                    : culling.occlusion ? DrawSelection::ShownLastFrame
-                                                        : DrawSelection::InView);
+                          culling.on_gpu      ? DrawSelection::EachInView
+                          : culling.occlusion ? DrawSelection::ShownLastFrame
+                                              : DrawSelection::InView);
   if (compute_free) storage_free_.upload(lights, list_);
   upload(list_);
 }
