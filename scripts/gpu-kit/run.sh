@@ -161,9 +161,18 @@ for assignment in scatter gather; do
     --modes clustered-deferred,tiled-deferred --views 4 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 \
     --lights 1024 --light-radius 4 --light-assignment "$assignment" --lighting-stage compute
 done
+# The visibility buffer against the G-buffer it replaces and forward, each
+# scene at 1,024 lights (issue 42's goals): its geometry pass ("visibility")
+# and its resolve ("material classification", "resolve") are columns of the pass table.
+grid=$kit/scenes/courtyard-grid.json
+for scene in built-in sponza grid; do
+  case $scene in built-in) file=() ;; sponza) file=("$sponza") ;; grid) file=("$grid") ;; esac
+  step "visibility buffer, $scene" 25 "$out/.visibility-$scene.md" "$atrium" bench "${file[@]}" \
+    --modes forward,clustered-deferred,visibility-buffer --views 1 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" \
+    --frame-limit 1000 --lighting-stage compute
+done
 # Occlusion culling where it tests: the grid's street view hides most of what
 # is in view; the same triangles either way, the GPU path with nothing read back.
-grid=$kit/scenes/courtyard-grid.json
 for device in cpu gpu; do
   step "occlusion culling on the $device, grid" 30 "$out/.culling-$device.md" "$atrium" bench "$grid" --modes clustered-deferred,tiled-deferred \
     --views 2 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --culling "$device"
@@ -235,6 +244,9 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "$million lights, compute stage, built-in scene, constant density" "$out/.million.md"
   for bloom in 0 0.04; do
     section "Bloom $bloom, compute stage, built-in scene, 1,024 lights" "$out/.bloom-$bloom.md"
+  done
+  for scene in built-in sponza grid; do
+    section "Visibility buffer against clustered-deferred and forward, $scene, 1,024 lights, compute stage" "$out/.visibility-$scene.md"
   done
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"

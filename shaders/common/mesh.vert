@@ -20,40 +20,21 @@ layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
 layout(location = 6) in uint a_instance;
 
-// C++ twin: InstanceData in src/render/frame/draw_list.hpp.
-struct Instance {
-  mat4 model;
-  mat4 normal_matrix;  // the inverse transpose in the upper-left 3x3
-  uvec4 material;      // x: index into the frame's material table (material_data.glsl)
-};
+#include "common/instances.glsl"
+
 #ifdef NO_STORAGE_BUFFERS
-// The compute-free tier: the records in a texture, 9 RGBA32F texels each,
-// kInstancesPerRow a row (C++ twin: kInstanceTexels and kInstancesPerRow in
-// src/render/storage_free.hpp).
 // Without base instances (WebGL2, GLES 3.0) a_instance is the draw's first
 // instance, set as a constant attribute, and gl_InstanceID counts from it.
-layout(binding = 11) uniform highp sampler2D u_instance_texture;
-
-const uint kInstancesPerRow = 227u;  // 2,043 texels: within WebGL2's least texture width, 2,048
-
-Instance instance_at(uint i) {
-  ivec2 row = ivec2(int(i % kInstancesPerRow) * 9, int(i / kInstancesPerRow));
-  Instance instance;
-  for (int c = 0; c < 4; ++c) {
-    instance.model[c] = texelFetch(u_instance_texture, row + ivec2(c, 0), 0);
-    instance.normal_matrix[c] = texelFetch(u_instance_texture, row + ivec2(4 + c, 0), 0);
-  }
-  instance.material = uvec4(texelFetch(u_instance_texture, row + ivec2(8, 0), 0));  // whole numbers stored as floats
-  return instance;
-}
 uint instance_index() { return a_instance + uint(gl_InstanceID); }
 #else
-layout(std430, binding = 1) readonly buffer Instances { Instance u_instances[]; };
-
-Instance instance_at(uint i) { return u_instances[i]; }
 uint instance_index() { return a_instance; }
 #endif
 
+#ifdef VISIBILITY_ID
+// The identifier of the instance record's first triangle (visibility/id.frag
+// adds gl_PrimitiveID).
+flat out uint v_first_triangle_id;
+#endif
 #ifndef POSITION_ONLY
 out vec3 v_position;
 out vec3 v_normal;
@@ -84,6 +65,9 @@ void main() {
   gl_Position = clip_position(u_shadow_view_projection * world);
 #else
   gl_Position = clip_position(u_view_projection * world);
+#endif
+#ifdef VISIBILITY_ID
+  v_first_triangle_id = instance.material.y;
 #endif
 #ifndef POSITION_ONLY
   v_position = world.xyz;

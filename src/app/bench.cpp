@@ -224,7 +224,7 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   result.options.warmup = warmup;
   const std::string previous = world.mode();
   const double reaching = count_reaching(world);
-  for (const std::string& mode : techniques::mode_names()) {
+  for (const std::string& mode : world.modes()) {
     result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching, BenchOptions{}.frame_limit_ms));
     result.rows.back().view_name = "current camera";
   }

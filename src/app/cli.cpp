@@ -103,7 +103,7 @@ int run_info(const CliOptions& options) {
   if (options.memory) {
     world.set_size(options.size);
     info.memory_size = options.size;
-    for (const std::string& mode : techniques::mode_names()) {
+    for (const std::string& mode : world.modes()) {
       world.set_mode(mode);
       world.frame(0.0);
       info.memory.push_back({mode, world.renderer().graph().memory(), world.renderer().graph().used_resources()});
@@ -150,6 +150,10 @@ int run_compare(const CliOptions& options) {
       technique_options.lighting_stage = stage;
       for (const auto& technique : techniques::technique_table()) {
         if (technique.name == "forward" && stage == LightingStage::Fragment) continue;
+        if (const std::string why = techniques::refusal(technique, technique_options); !why.empty()) {
+          if (view == 1 && stage == stages.front()) std::printf("%-24s not compared: %s\n", std::string(technique.name).c_str(), why.c_str());
+          continue;
+        }
         world.set_mode(std::string(technique.name));
         world.frame(0.0);
         const assets::Image image = world.renderer().read_output();

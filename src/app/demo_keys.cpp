@@ -36,7 +36,7 @@ void request_view(World& world, int view) { world.registry().resource<DemoReques
 constexpr std::array kDemoKeys{
     DemoKey{{GLFW_KEY_T, 0},
             [](World& world, bool shift) {
-              world.registry().resource<DemoRequests>().mode = step_name(techniques::mode_names(), world.mode(), shift ? -1 : 1);
+              world.registry().resource<DemoRequests>().mode = step_name(world.modes(), world.mode(), shift ? -1 : 1);
             }},
     DemoKey{{GLFW_KEY_1, 0}, [](World& world, bool) { request_view(world, 1); }},
     DemoKey{{GLFW_KEY_2, 0}, [](World& world, bool) { request_view(world, 2); }},

@@ -75,7 +75,7 @@ std::string stats_json(World& world, double fps, const std::string& refused) {
       {"passes_ms", total},
       {"passes", passes},
       {"views", views},
-      {"modes", techniques::mode_names()}};
+      {"modes", world.modes()}};
   return stats.dump();
 }
 
@@ -176,7 +176,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_set_paused(int paused) {
 EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
   return atrium::apply([&](atrium::World& world) {
     std::filesystem::create_directories(folder);
-    for (const std::string& mode : atrium::techniques::mode_names()) {
+    for (const std::string& mode : world.modes()) {
       world.set_mode(mode);
       world.frame(0.0);
       atrium::assets::write_png(std::filesystem::path(folder) / (mode + ".png"), world.renderer().read_output());
@@ -195,7 +195,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_capture_modes(const char* folder) {
 EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
   nlohmann::ordered_json medians = nlohmann::ordered_json::object();
   const char* error = atrium::apply([&](atrium::World& world) {
-    for (const std::string& mode : atrium::techniques::mode_names()) {
+    for (const std::string& mode : world.modes()) {
       world.set_mode(mode);
       for (int i = 0; i < warmup; ++i) world.frame(0.0);
       atrium::wait_for_frame();

@@ -233,4 +233,8 @@ const std::string& World::mode() const {
   return registry_.resource<RendererSettings>().mode;
 }
 
+std::vector<std::string> World::modes() const {
+  return techniques::mode_names(registry_.resource<RendererSettings>().technique_options);
+}
+
 }  // namespace atrium

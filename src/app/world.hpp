@@ -92,6 +92,10 @@ class World {
   [[nodiscard]] const assets::SceneDescription& scene() const { return scene_; }
   [[nodiscard]] render::MeshRenderer& renderer() { return registry_.resource<render::MeshRenderer>(); }
   [[nodiscard]] const std::string& mode() const;
+  // The modes this world runs with its tier and options (techniques::refusal
+  // leaves out those that need compute on the compute-free tier, or refuse
+  // MSAA while it is on), in table order: what `t`, menus and sweeps offer.
+  [[nodiscard]] std::vector<std::string> modes() const;
   [[nodiscard]] int view() const { return view_; }
   // What loading reported: warnings, parse and decode times, images.
   [[nodiscard]] const assets::LoadReport& load_report() const { return report_; }

@@ -30,6 +30,9 @@ inline constexpr unsigned kBlockSumsBinding = 11;       // BlockSums: the debug 
 inline constexpr unsigned kBigLightsBinding = 12, kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
 inline constexpr unsigned kCommandTemplateBinding = 16, kCullOutBinding = 17, kCullShownBinding = 18, kCullRecordsBinding = 19,
                           kLastShownBinding = 20, kCullCountersBinding = 21;  // GPU occlusion culling
+inline constexpr unsigned kVisibilityUnitsBinding = 24;  // Units: the visibility buffer's identifiers (render/frame/draw_list.hpp)
+inline constexpr unsigned kVertexPoolBinding = 25, kIndexPoolBinding = 26;  // VertexPool, IndexPool: GpuAssets' pools
+inline constexpr unsigned kMaterialDispatchBinding = 27, kMaterialTilesBinding = 28;  // the visibility buffer's material tiles
 inline constexpr unsigned kReadbackSourceBinding = gfx::kReadbackSourceBinding;  // ReadbackSource, ReadbackSlot: a
 inline constexpr unsigned kReadbackSlotBinding = gfx::kReadbackSlotBinding;      // readback ring's copy (gfx/readback_ring.hpp)
 
@@ -41,6 +44,7 @@ inline constexpr unsigned kLightTextureUnit = 10, kInstanceTextureUnit = 11, kMa
 inline constexpr unsigned kShadowViewTextureUnit = 13;
 inline constexpr unsigned kDepthTextureUnit = 14;  // occlusion culling's depth read
 inline constexpr unsigned kShadowAtlasUnit = 15;
+inline constexpr unsigned kVisibilityUnit = 5;  // the visibility buffer's identifiers, beside the materials' 0-4
 
 // Image units of compute passes (shaders/common/lighting_targets.glsl); the
 // heatmap's light counts take unit 0, the fragment counts unit 1.
@@ -72,7 +76,9 @@ inline constexpr BlockSlot kBlockSlots[] = {
     {"Batches", kCullRecordsBinding},           {"Records", kCullRecordsBinding},
     {"LastShown", kLastShownBinding},           {"Counters", kCullCountersBinding},
     {"Counts", kCullCountersBinding},           {"ReadbackSource", kReadbackSourceBinding},
-    {"ReadbackSlot", kReadbackSlotBinding},
+    {"ReadbackSlot", kReadbackSlotBinding},     {"Units", kVisibilityUnitsBinding},
+    {"VertexPool", kVertexPoolBinding},         {"IndexPool", kIndexPoolBinding},
+    {"MaterialDispatch", kMaterialDispatchBinding}, {"MaterialTileLists", kMaterialTilesBinding},
 };
 
 }  // namespace atrium::render

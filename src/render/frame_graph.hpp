@@ -79,6 +79,7 @@ enum class ViewKind : std::uint8_t {
   Counts,       // per-pixel counters (R32UI): a heatmap
   LightBins,    // per-bin light ranges: each pixel's bin's light count (FrameGraph::published<LightBins>)
   ShadowAtlas,  // shadow-map depths
+  Identifiers,  // 32-bit identifiers (R32UI, 0 = none): a colour each
 };
 
 // A resource a debug view can show (FrameGraph::viewable).

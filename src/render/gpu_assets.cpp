@@ -123,41 +123,55 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
     warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
     textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
   }
-  for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
+  if (mesh_assets_.size() < assets.mesh_asset_count()) {
+    for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {
+      for (const assets::Material& m : assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)}).materials) {
+        for (const assets::TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
+      }
+    }
+    build_pools(assets);
+  }
+  return warnings;
+}
+
+void GpuAssets::build_pools(const assets::AssetManager& assets) {
+  // Every vertex buffer once, primitives as index ranges with the base
+  // vertex of the buffer they index: shared vertices stay shared.
+  std::size_t vertex_total = 0, index_total = 0;
+  for (std::size_t a = 0; a < assets.mesh_asset_count(); ++a) {
     const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
-    for (const assets::Material& m : asset.materials) {
-      for (const assets::TextureSlot* slot : m.texture_slots()) make_sampler(slot->sampler);
-    }
-    // Every vertex buffer once, primitives as index ranges with the base
-    // vertex of the buffer they index: shared vertices stay shared.
-    GpuMeshAsset gpu;
-    std::vector<std::int32_t> base_vertex(asset.vertex_buffers.size());
-    std::size_t vertex_total = 0, index_total = 0;
-    for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
-      base_vertex[b] = static_cast<std::int32_t>(vertex_total);
-      vertex_total += asset.vertex_buffers[b].size();
-    }
+    for (const auto& vertices : asset.vertex_buffers) vertex_total += vertices.size();
     for (const assets::Mesh& mesh : asset.meshes) {
       for (const assets::Primitive& p : mesh.primitives) index_total += p.indices.size();
     }
-    gpu.vertices = gfx::create_buffer();
-    gpu.indices = gfx::create_index_buffer();
-    glNamedBufferStorage(gpu.vertices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, vertex_total) * sizeof(assets::Vertex)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
-    glNamedBufferStorage(gpu.indices.id(), static_cast<GLsizeiptr>(std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t)), nullptr,
-                         GL_DYNAMIC_STORAGE_BIT);
+  }
+  vertices_ = gfx::create_buffer();
+  indices_ = gfx::create_index_buffer();
+  const std::size_t vertex_bytes = std::max<std::size_t>(1, vertex_total) * sizeof(assets::Vertex);
+  const std::size_t index_bytes = std::max<std::size_t>(1, index_total) * sizeof(std::uint32_t);
+  glNamedBufferStorage(vertices_.id(), static_cast<GLsizeiptr>(vertex_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(indices_.id(), static_cast<GLsizeiptr>(index_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  geometry_bytes_ = vertex_bytes + index_bytes;
+  // Without glDrawElements*BaseVertex (ES 3.0, WebGL2) the indices are
+  // stored already offset by their buffer's first vertex, and every range
+  // draws from vertex 0.
+  const bool offset_indices = !gfx::gl_features().base_vertex;
+  std::vector<std::uint32_t> offset;
+  std::size_t first_vertex = 0, first_index = 0;
+  mesh_assets_.clear();
+  for (std::size_t a = 0; a < assets.mesh_asset_count(); ++a) {
+    const assets::MeshAsset& asset = assets.mesh_asset(assets::MeshAssetHandle{static_cast<std::uint32_t>(a)});
+    std::vector<std::int32_t> base_vertex(asset.vertex_buffers.size());
     for (std::size_t b = 0; b < asset.vertex_buffers.size(); ++b) {
       const auto& vertices = asset.vertex_buffers[b];
-      if (vertices.empty()) continue;
-      glNamedBufferSubData(gpu.vertices.id(), static_cast<GLintptr>(base_vertex[b]) * static_cast<GLintptr>(sizeof(assets::Vertex)),
-                           static_cast<GLsizeiptr>(vertices.size() * sizeof(assets::Vertex)), vertices.data());
+      base_vertex[b] = static_cast<std::int32_t>(first_vertex);
+      if (!vertices.empty()) {
+        glNamedBufferSubData(vertices_.id(), static_cast<GLintptr>(first_vertex * sizeof(assets::Vertex)),
+                             static_cast<GLsizeiptr>(vertices.size() * sizeof(assets::Vertex)), vertices.data());
+      }
+      first_vertex += vertices.size();
     }
-    // Without glDrawElements*BaseVertex (ES 3.0, WebGL2) the indices are
-    // stored already offset by their buffer's first vertex, and every range
-    // draws from vertex 0.
-    const bool offset_indices = !gfx::gl_features().base_vertex;
-    std::vector<std::uint32_t> offset;
-    std::size_t first_index = 0;
+    GpuMeshAsset& gpu = mesh_assets_.emplace_back();
     for (const assets::Mesh& mesh : asset.meshes) {
       auto& ranges = gpu.meshes.emplace_back();
       for (const assets::Primitive& p : mesh.primitives) {
@@ -171,47 +185,45 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
           indices = offset.data();
         }
         if (!p.indices.empty()) {
-          glNamedBufferSubData(gpu.indices.id(), static_cast<GLintptr>(first_index * sizeof(std::uint32_t)),
+          glNamedBufferSubData(indices_.id(), static_cast<GLintptr>(first_index * sizeof(std::uint32_t)),
                                static_cast<GLsizeiptr>(p.indices.size() * sizeof(std::uint32_t)), indices);
         }
         first_index += p.indices.size();
       }
     }
-
-    gpu.vertex_array = gfx::create_vertex_array();
-    const GLuint vao = gpu.vertex_array.id();
-    glVertexArrayVertexBuffer(vao, 0, gpu.vertices.id(), 0, sizeof(assets::Vertex));
-    glVertexArrayElementBuffer(vao, gpu.indices.id());
-    struct Attribute {
-      GLuint location;
-      GLint components;
-      GLenum type;
-      GLboolean normalized;
-      std::size_t offset;
-    };
-    const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, position)},
-                                    {1, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, normal)},
-                                    {2, 4, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, tangent)},
-                                    {3, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv0)},
-                                    {4, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv1)},
-                                    {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(assets::Vertex, color)}};
-    for (const auto& attribute : attributes) {
-      glEnableVertexArrayAttrib(vao, attribute.location);
-      glVertexArrayAttribFormat(vao, attribute.location, attribute.components, attribute.type, attribute.normalized,
-                                static_cast<GLuint>(attribute.offset));
-      glVertexArrayAttribBinding(vao, attribute.location, 0);
-    }
-    // Location 6: which instance record a vertex belongs to, from the
-    // instance-index buffer (binding 1, one value per instance). Instanced
-    // draws offset it by their base instance.
-    glEnableVertexArrayAttrib(vao, kInstanceIndexLocation);
-    glVertexArrayAttribIFormat(vao, kInstanceIndexLocation, 1, GL_UNSIGNED_INT, 0);
-    glVertexArrayAttribBinding(vao, kInstanceIndexLocation, 1);
-    glVertexArrayBindingDivisor(vao, 1, 1);
-    if (instance_indices_) glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
-    mesh_assets_.push_back(std::move(gpu));
   }
-  return warnings;
+
+  vertex_array_ = gfx::create_vertex_array();
+  const GLuint vao = vertex_array_.id();
+  glVertexArrayVertexBuffer(vao, 0, vertices_.id(), 0, sizeof(assets::Vertex));
+  glVertexArrayElementBuffer(vao, indices_.id());
+  struct Attribute {
+    GLuint location;
+    GLint components;
+    GLenum type;
+    GLboolean normalized;
+    std::size_t offset;
+  };
+  const Attribute attributes[] = {{0, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, position)},
+                                  {1, 3, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, normal)},
+                                  {2, 4, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, tangent)},
+                                  {3, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv0)},
+                                  {4, 2, GL_FLOAT, GL_FALSE, offsetof(assets::Vertex, uv1)},
+                                  {5, 4, GL_UNSIGNED_SHORT, GL_TRUE, offsetof(assets::Vertex, color)}};
+  for (const auto& attribute : attributes) {
+    glEnableVertexArrayAttrib(vao, attribute.location);
+    glVertexArrayAttribFormat(vao, attribute.location, attribute.components, attribute.type, attribute.normalized,
+                              static_cast<GLuint>(attribute.offset));
+    glVertexArrayAttribBinding(vao, attribute.location, 0);
+  }
+  // Location 6: which instance record a vertex belongs to, from the
+  // instance-index buffer (binding 1, one value per instance). Instanced
+  // draws offset it by their base instance.
+  glEnableVertexArrayAttrib(vao, kInstanceIndexLocation);
+  glVertexArrayAttribIFormat(vao, kInstanceIndexLocation, 1, GL_UNSIGNED_INT, 0);
+  glVertexArrayAttribBinding(vao, kInstanceIndexLocation, 1);
+  glVertexArrayBindingDivisor(vao, 1, 1);
+  if (instance_indices_) glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
 }
 
 void GpuAssets::reserve_instances(std::size_t count) {
@@ -221,9 +233,7 @@ void GpuAssets::reserve_instances(std::size_t count) {
   for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<std::uint32_t>(i);
   instance_indices_ = gfx::create_buffer();
   glNamedBufferStorage(instance_indices_.id(), static_cast<GLsizeiptr>(identity.size() * sizeof(std::uint32_t)), identity.data(), 0);
-  for (const GpuMeshAsset& asset : mesh_assets_) {
-    glVertexArrayVertexBuffer(asset.vertex_array.id(), 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
-  }
+  if (vertex_array_) glVertexArrayVertexBuffer(vertex_array_.id(), 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
 }
 
 GLuint GpuAssets::sampler(const assets::SamplerDesc& desc) const {

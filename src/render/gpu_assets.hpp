@@ -1,6 +1,8 @@
-// GPU copies of the AssetManager's contents: one vertex and one index buffer per
-// mesh asset (primitives are ranges in them; vertex buffers that primitives
-// share are uploaded once), one mipmapped texture per image,
+// GPU copies of the AssetManager's contents: one vertex and one index pool for
+// every mesh asset, drawn through one vertex array (primitives are ranges in
+// them; vertex buffers that primitives share are uploaded once), so that a
+// compute shader reaches any triangle (the visibility buffer's resolve), one
+// mipmapped texture per image,
 // neutral 1x1 defaults for the texture slots a material leaves empty, sampler
 // objects, and the shader programs (cached by files and defines).
 #pragma once
@@ -20,15 +22,12 @@ namespace atrium::render {
 inline constexpr GLuint kInstanceIndexLocation = 6;
 
 struct GpuPrimitive {
-  std::uint32_t first_index = 0;  // in the asset's index buffer
+  std::uint32_t first_index = 0;  // in the index pool
   std::uint32_t index_count = 0;
-  std::int32_t base_vertex = 0;
+  std::int32_t base_vertex = 0;   // in the vertex pool
 };
 
 struct GpuMeshAsset {
-  gfx::Buffer vertices;
-  gfx::Buffer indices;
-  gfx::VertexArray vertex_array;
   std::vector<std::vector<GpuPrimitive>> meshes;  // [mesh][primitive]
 };
 
@@ -44,7 +43,14 @@ class GpuAssets {
   std::vector<std::string> upload(const assets::AssetManager& assets);
 
   [[nodiscard]] const GpuMeshAsset& mesh_asset(assets::MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
-  // Every mesh asset's vertex array feeds attribute kInstanceIndexLocation from
+  // The one vertex array every mesh is drawn through (the pools, and the
+  // instance indices at kInstanceIndexLocation).
+  [[nodiscard]] GLuint vertex_array() const { return vertex_array_.id(); }
+  // The pools as storage buffers: assets::Vertex records (64 bytes) and 32-bit indices.
+  [[nodiscard]] GLuint vertex_pool() const { return vertices_.id(); }
+  [[nodiscard]] GLuint index_pool() const { return indices_.id(); }
+  [[nodiscard]] std::size_t geometry_bytes() const { return geometry_bytes_; }
+  // The vertex array feeds attribute kInstanceIndexLocation from
   // one buffer holding 0, 1, 2, ... with a divisor of 1, so an instanced draw
   // with base instance B gives its instances B, B+1, ...: the index of their
   // record in the frame's instance buffer. Grows that buffer to `count`.
@@ -61,9 +67,15 @@ class GpuAssets {
 
  private:
   void make_sampler(const assets::SamplerDesc& desc);
+  // Uploads every mesh asset into new pools (assets arrive at load time, rarely
+  // and all at once: one rebuild beats a growth policy) and points the vertex array at them.
+  void build_pools(const assets::AssetManager& assets);
 
   int max_texture_size_;
   std::vector<GpuMeshAsset> mesh_assets_;
+  gfx::Buffer vertices_, indices_;
+  gfx::VertexArray vertex_array_;
+  std::size_t geometry_bytes_ = 0;
   std::vector<gfx::Texture> textures_;
   std::vector<bool> two_channel_;
   gfx::Texture white_;

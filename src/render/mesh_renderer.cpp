@@ -117,6 +117,7 @@ FrameTargets MeshRenderer::targets() const { return {size_, technique_options_.m
 void MeshRenderer::select_technique(const std::string& mode) {
   const techniques::TechniqueInfo* info = techniques::find_technique(mode);
   if (!info) throw std::invalid_argument("unknown mode '" + mode + "'");
+  if (const std::string why = techniques::refusal(*info, technique_options_); !why.empty()) throw gfx::ResourceLimitError(why);
   technique_.reset();  // release the old technique's targets before the new one allocates
   technique_ = info->create(gpu_, technique_options_);
   technique_->resize(targets());

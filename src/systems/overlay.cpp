@@ -182,7 +182,7 @@ void Overlay::statistics(ecs::Registry& registry) {
 void Overlay::controls(ecs::Registry& registry) {
   auto& settings = registry.resource<RendererSettings>();
   auto& requests = registry.resource<DemoRequests>();
-  const std::vector<std::string> modes = techniques::mode_names();
+  const std::vector<std::string> modes = techniques::mode_names(settings.technique_options);
   std::vector<std::string> models, views{"(none)"};
   for (const auto name : lighting::kShadingModels) models.emplace_back(name);
   for (const render::OfferedView& view : registry.resource<render::MeshRenderer>().offered_views()) views.push_back(view.name);

@@ -4,6 +4,7 @@
 // compiles declare no storage buffer and are no compute shaders, so what runs
 // here would run where neither exists; and what needs them (the counting debug
 // views) says so in one line and is not offered.
+#include <algorithm>
 #include <filesystem>
 #include <string>
 
@@ -60,9 +61,10 @@ void expect_tier_matches_full(const std::string& scene, int samples = 1, int sha
   World full(full_options);
   World free(free_options);
   std::size_t compared = 0;
-  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
-    full.set_mode(std::string(info.name));
-    free.set_mode(std::string(info.name));
+  const std::vector<std::string> modes = techniques::mode_names(TechniqueOptions{.compute_free = true});
+  for (const std::string& mode : modes) {
+    full.set_mode(mode);
+    free.set_mode(mode);
     const int view_count = views > 0 ? views : static_cast<int>(full.scene().views.size());
     for (int view = 1; view <= view_count; ++view) {
       full.set_view(view);
@@ -70,11 +72,11 @@ void expect_tier_matches_full(const std::string& scene, int samples = 1, int sha
       full.frame(0.0);
       free.frame(0.0);
       const double psnr = assets::psnr(full.renderer().read_output(), free.renderer().read_output());
-      EXPECT_GE(psnr, kMinimumPsnr) << info.name << ", view " << view << ", MSAA " << samples << ", " << shadows << " shadowed lights";
+      EXPECT_GE(psnr, kMinimumPsnr) << mode << ", view " << view << ", MSAA " << samples << ", " << shadows << " shadowed lights";
       ++compared;
     }
   }
-  EXPECT_EQ(compared, techniques::technique_table().size() * static_cast<std::size_t>(views > 0 ? views : static_cast<int>(full.scene().views.size())));
+  EXPECT_EQ(compared, modes.size() * static_cast<std::size_t>(views > 0 ? views : static_cast<int>(full.scene().views.size())));
   expect_storage_free_programs(free);
 }
 
@@ -118,6 +120,30 @@ TEST_F(ComputeFreeTier, CountingViewsSayTheyNeedImageAtomicsInOneLineAndAreNotOf
     EXPECT_NE(view.name, "heatmap") << "a view the tier refuses is not offered";
     EXPECT_NE(view.name, "fragments") << "a view the tier refuses is not offered";
   }
+}
+
+// The technique table's column: a mode that needs compute is refused in one
+// line naming what the tier lacks, and left out of the tier's mode list.
+TEST_F(ComputeFreeTier, ModesThatNeedComputeAreRefusedInOneLineAndNotListed) {
+  World world(tier_options("atrium", true));
+  const std::vector<std::string> listed = techniques::mode_names(TechniqueOptions{.compute_free = true});
+  std::size_t refused = 0;
+  for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
+    if (!info.needs.compute) continue;
+    ++refused;
+    EXPECT_EQ(std::count(listed.begin(), listed.end(), std::string(info.name)), 0) << info.name;
+    world.set_mode(std::string(info.name));
+    try {
+      world.frame(0.0);
+      ADD_FAILURE() << info.name << " ran on the compute-free tier";
+    } catch (const gfx::ResourceLimitError& e) {
+      EXPECT_EQ(std::string(e.what()), std::string(info.name) + " needs compute shaders and storage buffers, which this context's tier "
+                                                               "(OpenGL 4.1, ES 3.0, WebGL2) lacks; use another mode");
+    }
+  }
+  EXPECT_GE(refused, 1u) << "visibility-buffer needs compute";
+  world.set_mode("clustered-deferred");
+  world.frame(0.0);
 }
 
 }  // namespace

@@ -18,6 +18,7 @@
 #include "components/frame_resources.hpp"
 #include "gfx/limits.hpp"
 #include "support/gl_test.hpp"
+#include "support/modes.hpp"
 #include "render/debug/debug_views.hpp"
 #include "render/techniques/technique.hpp"
 
@@ -53,7 +54,7 @@ TEST_F(GpuWaits, NoSteadyFrameWaitsInAnyMode) {
 }
 
 TEST_F(GpuWaits, NoSteadyFrameWaitsWithMsaa) {
-  for (const std::string& mode : techniques::mode_names()) {
+  for (const std::string& mode : techniques::mode_names({.msaa = 4})) {
     WorldOptions options = steady_options(mode);
     options.technique_options.msaa = 4;
     World world(options);

@@ -75,8 +75,7 @@ TEST_F(Msaa, BringsEveryModeCloserToASupersampledPicture) {
     World big({.scene = "atrium", .mode = "forward", .view = view, .size = kSize * 4});
     big.frame(0.0);
     const assets::Image supersampled = testing::box_downsample(big.renderer().read_output(), 4, true);
-    for (const auto& info : techniques::technique_table()) {
-      const std::string mode(info.name);
+    for (const std::string& mode : techniques::mode_names(with_msaa(kSamples))) {
       World plain({.scene = "atrium", .mode = mode, .view = view, .size = kSize});
       plain.frame(0.0);
       World smoothed({.scene = "atrium", .mode = mode, .view = view, .size = kSize, .technique_options = with_msaa(kSamples)});
@@ -108,6 +107,20 @@ TEST_F(Msaa, EdgesViewMarksSilhouettesAndNothingWithoutMsaa) {
   World plain({.scene = "atrium", .mode = "deferred", .size = kSize, .debug_view = "msaa-edges"});
   plain.frame(0.0);
   EXPECT_EQ(red_pixels(plain.renderer().read_output()), 0u);
+}
+
+TEST_F(Msaa, AModeThatResolvesOneSampleAPixelRefusesMsaaInOneLine) {
+  World world({.scene = "atrium", .mode = "forward", .size = kSize, .technique_options = with_msaa(kSamples)});
+  world.set_mode("visibility-buffer");
+  try {
+    world.frame(0.0);
+    ADD_FAILURE() << "visibility-buffer drew with MSAA";
+  } catch (const gfx::ResourceLimitError& e) {
+    EXPECT_EQ(std::string(e.what()), "visibility-buffer with --msaa 4: it resolves one triangle identifier per pixel; use --msaa 1, or "
+                                     "another mode for MSAA");
+  }
+  world.set_mode("forward");
+  world.frame(0.0);
 }
 
 TEST_F(Msaa, MoreSamplesThanTheDriverAllowsAreRefusedNamingTheLimit) {

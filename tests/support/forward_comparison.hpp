@@ -31,7 +31,7 @@ inline double share_differing(const assets::Image& a, const assets::Image& b, in
 }
 
 // From each of the world's five stored views (or those in `views`), renders
-// forward and then every other mode, and calls `check(mode, view, reference,
+// forward and then every other mode that runs with the world's options, and calls `check(mode, view, reference,
 // image)` with forward's image as the reference.
 template <typename Check>
 void compare_every_mode_with_forward(World& world, Check check, const std::vector<int>& views = {1, 2, 3, 4, 5}) {
@@ -40,7 +40,7 @@ void compare_every_mode_with_forward(World& world, Check check, const std::vecto
     world.set_mode("forward");
     world.frame(0.0);
     const assets::Image reference = world.renderer().read_output();
-    for (const std::string& mode : non_forward_modes()) {
+    for (const std::string& mode : non_forward_modes(world.registry().resource<RendererSettings>().technique_options)) {
       world.set_mode(mode);
       world.frame(0.0);
       check(mode, view, reference, world.renderer().read_output());

@@ -11,8 +11,10 @@
 
 namespace atrium::testing {
 
-inline std::vector<std::string> non_forward_modes() {
-  std::vector<std::string> modes = techniques::mode_names();
+// The modes that run with `options` (techniques::refusal: a tier without
+// compute shaders, MSAA) but forward, in table order.
+inline std::vector<std::string> non_forward_modes(const TechniqueOptions& options = {}) {
+  std::vector<std::string> modes = techniques::mode_names(options);
   std::erase(modes, "forward");
   return modes;
 }

@@ -39,6 +39,10 @@ constexpr Visualiser kVisualisers[] = {
      [](DebugViews& views, ResourceId resource, const DebugViewFrame&, const PassResources& res, glm::vec2, glm::vec2) {
        views.show_shadow_atlas(resource, res);
      }},
+    {ViewKind::Identifiers, "identifiers, a colour each (black: none)",
+     [](DebugViews& views, ResourceId resource, const DebugViewFrame&, const PassResources& res, glm::vec2, glm::vec2) {
+       views.show_identifiers(resource, res, DebugViews::Identify::Value);
+     }},
 };
 
 const Visualiser* visualiser_for(ViewKind kind) {
@@ -60,23 +64,39 @@ bool has_resource(const FrameGraph& graph, const TechniqueOptions&) {
   return graph.find(kName).valid();
 }
 bool has_light_bins(const FrameGraph& graph, const TechniqueOptions&) { return graph.first_of(ViewKind::LightBins).valid(); }
+// The modes that shade each pixel once from a G-buffer or the visibility
+// buffer: those that can write the light sums apart.
+bool shades_pixels_once(const FrameGraph& graph, const TechniqueOptions& options) {
+  return has_gbuffer(graph, options) || graph.find(kVisibilityIdsTarget).valid();
+}
 
 template <const char* kTarget>
 void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
   views.show_gbuffer(kTarget, frame, res, origin, scale);
 }
-// Only a deferred mode's lighting passes write the sums apart: a forward
-// mode's sums stay grey.
+// Only the passes that shade each pixel once (deferred lighting, the
+// visibility buffer's resolve) write the sums apart: a forward mode's stay grey.
+bool written(const FrameGraph& graph, std::string_view name) {
+  const std::vector<ViewableResource> resources = graph.viewable();
+  return std::any_of(resources.begin(), resources.end(), [&](const ViewableResource& r) { return r.name == name && !r.written_by.empty(); });
+}
 template <const char* kName>
 void split_sum(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
   const ResourceId sum = frame.graph.find(kName);
-  if (sum.valid() && lighting::GBuffer::find(frame.graph)) views.show_light_sum(sum, res, origin, scale);
+  if (sum.valid() && written(frame.graph, kName)) views.show_light_sum(sum, res, origin, scale);
   else views.show_nothing();
 }
 constexpr char kPosition[] = "POSITION", kNormal[] = "NORMAL", kAlbedo[] = "ALBEDO", kMetallicRoughness[] = "METALLIC_ROUGHNESS",
                kEmissive[] = "EMISSIVE";
 constexpr char kDiffuseLight[] = "diffuse-light", kSpecularLight[] = "specular-light", kLightBuffer[] = "light-buffer.diffuse",
                kShadowAtlas[] = "shadow-atlas";
+
+// The visibility buffer's identifiers, a colour per triangle, per draw (the
+// primitive instance that drew it) or per material (the classification's).
+template <DebugViews::Identify kWhat>
+void identifiers(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2, glm::vec2) {
+  views.show_identifiers(frame.graph.find(kVisibilityIdsTarget), res, kWhat);
+}
 
 constexpr DebugViewNeeds kGBuffer{.gbuffer = true};
 
@@ -101,10 +121,10 @@ const std::array kViews{
               }},
     DebugView{"fragments", "fragments the geometry passes rasterise per pixel (overdraw)", {.count_fragments = true}, "fragment-counts",
               {}, always},
-    DebugView{"diffuse-light", "the diffuse light sum, apart (deferred modes)", {.split_lighting = true}, kDiffuseLight, {}, has_gbuffer,
-              split_sum<kDiffuseLight>},
-    DebugView{"specular-light", "the specular light sum, apart (deferred modes)", {.split_lighting = true}, kSpecularLight, {},
-              has_gbuffer, split_sum<kSpecularLight>},
+    DebugView{"diffuse-light", "the diffuse light sum, apart (deferred modes, visibility-buffer)", {.split_lighting = true}, kDiffuseLight,
+              {}, shades_pixels_once, split_sum<kDiffuseLight>},
+    DebugView{"specular-light", "the specular light sum, apart (deferred modes, visibility-buffer)", {.split_lighting = true},
+              kSpecularLight, {}, shades_pixels_once, split_sum<kSpecularLight>},
     DebugView{"light-buffer", "light summed before materials (light-prepass)", {}, kLightBuffer, {}, has_resource<kLightBuffer>},
     DebugView{"msaa-edges", "the pixels the deferred modes shade per sample, in red (with --msaa)", kGBuffer, {}, {},
               [](const FrameGraph& graph, const TechniqueOptions& options) { return options.msaa > 1 && has_gbuffer(graph, options); },
@@ -112,6 +132,12 @@ const std::array kViews{
                 views.show_over_gbuffer("debug/msaa_edges.frag", frame, res, true);
               }},
     DebugView{"shadow-atlas", "the shadow maps' depths (with --shadows)", {}, kShadowAtlas, {}, has_resource<kShadowAtlas>},
+    DebugView{"triangles", "the triangle each pixel shows, a colour each (visibility-buffer)", {}, kVisibilityIdsTarget, {},
+              has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Value>},
+    DebugView{"draws", "the primitive instance each pixel shows, a colour each (visibility-buffer)", {}, kVisibilityIdsTarget, {},
+              has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Draw>},
+    DebugView{"materials", "the material each pixel's resolve runs, a colour each: its tiles' classification (visibility-buffer)", {},
+              kVisibilityIdsTarget, {}, has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Material>},
 };
 
 }  // namespace
@@ -286,6 +312,15 @@ void DebugViews::show_counts(ResourceId counts, const DebugViewFrame& frame, con
   heatmap.set("u_scale_max", scale_max);
   glBindImageTexture(0, res.texture(counts), 0, GL_FALSE, 0, GL_READ_ONLY, GL_R32UI);
   heatmap.use();
+  fullscreen_.draw();
+}
+
+void DebugViews::show_identifiers(ResourceId identifiers, const PassResources& res, Identify what) {
+  // Draw and Material look the identifier up in the visibility buffer's units
+  // and the frame's instances, which its passes left bound.
+  static constexpr const char* kDefines[] = {"SHOW_VALUE", "SHOW_DRAW", "SHOW_MATERIAL"};
+  glBindTextureUnit(kVisibilityUnit, res.texture(identifiers));
+  gpu_.shaders().get({"post/fullscreen.vert", "debug/identifiers.frag"}, {{kDefines[static_cast<int>(what)]}}).use();
   fullscreen_.draw();
 }
 

@@ -185,6 +185,10 @@ class DebugViews {
   void show_light_sum(ResourceId sum, const PassResources& res, glm::vec2 origin, glm::vec2 scale);
   // A shadow atlas's depths.
   void show_shadow_atlas(ResourceId atlas, const PassResources& res);
+  // Identifiers (R32UI) as colours: each value, or the visibility buffer's
+  // draw (primitive instance) or material that a triangle identifier names.
+  enum class Identify { Value, Draw, Material };
+  void show_identifiers(ResourceId identifiers, const PassResources& res, Identify what);
   // A full-screen debug shader over the frame's G-buffer (outlines, MSAA
   // edges), blended over the image when `blend`.
   void show_over_gbuffer(const char* fragment_shader, const DebugViewFrame& frame, const PassResources& res, bool blend);

@@ -42,7 +42,12 @@ auto state_key(const DrawBatch& b) {
 struct PendingCommand {
   DrawBatch state;
   DrawCommand command;
-  std::vector<std::pair<float, InstanceData>> instances;  // view depth, record; never empty
+  struct Placed {
+    float depth;  // view depth
+    InstanceData record;
+    std::uint32_t unit;  // its DrawList::visibility_units entry
+  };
+  std::vector<Placed> instances;  // never empty
   CullRecord cull;  // DrawSelection::EachInView
 };
 
@@ -121,7 +126,12 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     const std::uint32_t first_unit = list.cull_units;
     if (bounds) list.cull_units += static_cast<std::uint32_t>(bounds->primitives.size() + bounds->meshlets.size());
     const auto& primitives = asset.meshes[instance.mesh].primitives;
-    for (const assets::Primitive& primitive : primitives) list.triangles += primitive.indices.size() / 3;
+    const std::size_t first_visibility_unit = list.visibility_units.size();
+    for (const assets::Primitive& primitive : primitives) {
+      list.triangles += primitive.indices.size() / 3;
+      list.visibility_units.push_back({static_cast<std::uint32_t>(list.visibility_ids), VisibilityUnit::kNotDrawn});
+      list.visibility_ids += primitive.indices.size() / 3;
+    }
     if (visibility && !visibility->any) return;
 
     const GpuMeshAsset& gpu_asset = gpu.mesh_asset(instance.asset);
@@ -136,12 +146,13 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       if (!(state & seen::kInView)) continue;
       const assets::Material& material = asset.materials.at(primitive.material);
       const GpuPrimitive& range = gpu_asset.meshes[instance.mesh][p];
-      data.material.x = index_of(material);
+      const auto unit = static_cast<std::uint32_t>(first_visibility_unit + p);
+      data.material = {index_of(material), list.visibility_units[unit].first_id, range.first_index, static_cast<std::uint32_t>(range.base_vertex)};
       const glm::vec3 centre = bounds && p < bounds->primitives.size()
                                    ? 0.5f * (bounds->primitives[p].min + bounds->primitives[p].max)
                                    : glm::vec3(data.model * glm::vec4(0.5f * (primitive.bounds_min + primitive.bounds_max), 1.0f));
       const float depth = -(view * glm::vec4(centre, 1.0f)).z;
-      const GLuint vertex_array = gpu_asset.vertex_array.id();
+      const GLuint vertex_array = gpu.vertex_array();
       if (material.alpha_mode == assets::AlphaMode::Blend) {
         // Never occlusion-culled: blended surfaces go with every list but the late one.
         if (selection == DrawSelection::Revealed) continue;
@@ -157,14 +168,18 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
         if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}, {}});
-        pending[it->second].instances.emplace_back(depth, data);
+        InstanceData record = data;
+        record.material.y += offset / 3;
+        pending[it->second].instances.push_back({depth, record, unit});
       };
       // One command of its own per unit, with the box the GPU tests.
-      auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t unit) {
+      auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
         list.triangles_drawn += count / 3;
-        const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), unit, count / 3, {0, 0}};
+        const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), cull_unit, count / 3, {0, 0}};
+        InstanceData record = data;
+        record.material.y += offset / 3;
         pending.push_back({batch_state(material, gpu, vertex_array, mirrored), {count, 1, range.first_index + offset, range.base_vertex, 0},
-                           {{depth, data}}, cull});
+                           {{depth, record, unit}}, cull});
       };
       const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
                               bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
@@ -195,7 +210,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   // by state, so that a batch holds every command of one state, then front to
   // back (instances by depth, commands by their nearest instance).
   for (PendingCommand& command : pending) {
-    std::stable_sort(command.instances.begin(), command.instances.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::stable_sort(command.instances.begin(), command.instances.end(), [](const auto& a, const auto& b) { return a.depth < b.depth; });
   }
   std::vector<std::size_t> order(pending.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
@@ -204,7 +219,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     const PendingCommand& y = pending[b];
     // alpha_masked leads the state key: false sorts first.
     if (state_key(x.state) != state_key(y.state)) return state_key(x.state) < state_key(y.state);
-    return x.instances.front().first < y.instances.front().first;
+    return x.instances.front().depth < y.instances.front().depth;
   });
   auto append = [&](std::vector<DrawBatch>& batches, const DrawBatch& state, DrawCommand command, float depth) {
     if (batches.empty() || state_key(batches.back()) != state_key(state)) {
@@ -221,8 +236,11 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     DrawCommand command = pending_command.command;
     command.base_instance = static_cast<std::uint32_t>(list.instances.size());
     command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
-    for (const auto& [depth, record] : pending_command.instances) list.instances.push_back(record);
-    append(list.opaque, pending_command.state, command, pending_command.instances.front().first);
+    for (const PendingCommand::Placed& placed : pending_command.instances) {
+      list.visibility_units[placed.unit].record = static_cast<std::uint32_t>(list.instances.size());
+      list.instances.push_back(placed.record);
+    }
+    append(list.opaque, pending_command.state, command, pending_command.instances.front().depth);
     if (each_unit) list.cull_records.push_back(pending_command.cull);
   }
   for (std::size_t b = 0; b < list.opaque.size(); ++b) list.opaque[b].count_slot = static_cast<std::uint32_t>(b);
@@ -324,6 +342,10 @@ void begin_scene_pass(const PassResources& res, const FrameContext& frame, const
   glViewport(0, 0, targets.size.x, targets.size.y);
   const float clear_color[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
   glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, clear_color);
+  begin_depth(framebuffer);
+}
+
+void begin_depth(GLuint framebuffer) {
   glClearNamedFramebufferfi(framebuffer, GL_DEPTH_STENCIL, 0, gfx::kDepthFar, 0);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloser);

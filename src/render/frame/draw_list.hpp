@@ -31,9 +31,28 @@ inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlot
 struct InstanceData {
   glm::mat4 model{1.0f};
   glm::mat4 normal_matrix{1.0f};  // inverse transpose of the model's 3x3, in a mat4 to keep std430 simple
-  glm::uvec4 material{0};         // x: index into DrawList::materials
+  // x: index into DrawList::materials; y: the visibility identifier of the
+  // record's first triangle (VisibilityUnit); z, w: its primitive's first
+  // index and base vertex in the GPU's pools (GpuPrimitive).
+  glm::uvec4 material{0};
 };
 static_assert(sizeof(InstanceData) == 144, "must match Instance in shaders/common/mesh.vert");
+
+// std430 twin of Unit in shaders/visibility/visibility.glsl. Every triangle of
+// the scene has a 32-bit identifier for the frame, stable through occlusion
+// culling's phases (whatever list drew it): its primitive instance's first
+// identifier (units in registry order, from 1; 0 is no geometry) plus its index
+// in the primitive. The visibility buffer stores it; its resolve finds the
+// unit by binary search and the unit's record in the frame's instances.
+struct VisibilityUnit {
+  static constexpr std::uint32_t kNotDrawn = 0xffffffffu;
+  std::uint32_t first_id = 0;
+  std::uint32_t record = kNotDrawn;  // an opaque instance record of this primitive instance in the list
+};
+static_assert(sizeof(VisibilityUnit) == 8, "must match Unit in shaders/visibility/visibility.glsl");
+// The graph's name for the target of those identifiers (R32UI), which the
+// visibility buffer writes and its debug views read.
+inline constexpr char kVisibilityIdsTarget[] = "visibility-ids";
 
 // Material::flags bits; GLSL twins in shaders/common/material_data.glsl.
 inline constexpr std::uint32_t kMaterialHasNormalTexture = 1u << 0;
@@ -123,6 +142,11 @@ struct DrawList {
   // [0, cull_records.size())), and how many units the scene has in all.
   std::vector<CullRecord> cull_records;
   std::uint32_t cull_units = 0;
+  // Every primitive instance of the scene, in view or not, in registry order
+  // (InstanceData::material.y); the identifiers they use run to
+  // visibility_ids (more than 2^32 cannot be told apart: the visibility buffer refuses).
+  std::vector<VisibilityUnit> visibility_units;
+  std::uint64_t visibility_ids = 1;
   std::size_t triangles = 0;        // in the scene, every instance, visible or not
   std::size_t triangles_drawn = 0;  // by one pass over opaque and blended: what culling kept
 
@@ -191,6 +215,9 @@ void draw_transparent(const PassResources& res, gfx::ShaderProgram& forward_prog
 // plane (gfx::kDepthFar, reversed depth), and sets
 // the state for drawing scene geometry (depth test kDepthCloser with writes, no blend).
 void begin_scene_pass(const PassResources& res, const FrameContext& frame, const FrameTargets& targets);
+// Clears the bound `framebuffer`'s depth-stencil to the far plane and sets
+// that state (what begin_scene_pass does after clearing colour).
+void begin_depth(GLuint framebuffer);
 
 // A triangle that covers the viewport, for full-screen passes.
 class FullscreenTriangle {

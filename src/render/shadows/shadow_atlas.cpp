@@ -178,7 +178,7 @@ void ShadowAtlas::gather_casters(ecs::Registry& registry) {
       const assets::Material& material = asset.materials.at(primitive.material);
       // Blended surfaces cast no shadow (glass lets light through).
       if (material.alpha_mode == assets::AlphaMode::Blend) continue;
-      render::DrawBatch state = render::batch_state(material, gpu_, gpu_asset.vertex_array.id(), false);
+      render::DrawBatch state = render::batch_state(material, gpu_, gpu_.vertex_array(), false);
       state.double_sided = true;
       std::uint32_t material_slot = 0;
       if (!state.alpha_masked) {

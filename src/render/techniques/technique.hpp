@@ -22,6 +22,7 @@
 #include "render/frame_graph.hpp"
 #include "components/technique_options.hpp"
 #include "render/light_buffer.hpp"
+#include "render/lighting/cluster_lights.hpp"
 #include "render/frame/draw_list.hpp"
 #include "render/frame/frame_context.hpp"
 
@@ -52,6 +53,15 @@ class LightingTechnique {
     double density = 0.0;  // LightIndexList::last_density()
   };
   [[nodiscard]] virtual ListStats light_lists() { return {}; }
+
+ protected:
+  // The stats of clustered lists (clustered modes, the visibility buffer).
+  [[nodiscard]] static ListStats cluster_list_stats(lighting::ClusterLights& clusters) {
+    if (clusters.compute_free()) return {clusters.cpu_entries(), 0};
+    lighting::LightIndexList& list = clusters.list();
+    list.poll();
+    return {list.last_total(), list.overflow_frames(), list.last_assignment(), list.last_density()};
+  }
 };
 
 // Which of a technique's shaders loop over every light, so that a driver's loop
@@ -66,11 +76,23 @@ struct LightLoops {
 // thin one). Tests run the --gbuffer layouts only where they change something.
 enum class GBufferUse : std::uint8_t { None, Chosen, Own };
 
+// What a technique needs of the context and the options; a combination it
+// lacks is refused in one line (refusal()), and a tier that lacks what it
+// needs leaves it out of `t`, the overlay's and the page's mode lists.
+struct ModeNeeds {
+  // Compute shaders and storage buffers, which the compute-free tier (OpenGL
+  // 4.1, ES 3.0, WebGL2) lacks.
+  bool compute = false;
+  // One sample a pixel: the mode refuses MSAA.
+  bool single_sample = false;
+};
+
 struct TechniqueInfo {
   std::string_view name;         // the mode name users type (--mode, `t`)
   std::string_view description;  // one line for --help and the overlay
   LightLoops loops_over_every_light;
   GBufferUse gbuffer;
+  ModeNeeds needs;
   // Makes the technique; it takes its shader programs from gpu.shaders().
   std::unique_ptr<LightingTechnique> (*create)(render::GpuAssets& gpu, const TechniqueOptions& options);
 };
@@ -78,8 +100,14 @@ struct TechniqueInfo {
 [[nodiscard]] std::span<const TechniqueInfo> technique_table();
 // nullptr when no technique has that name.
 [[nodiscard]] const TechniqueInfo* find_technique(std::string_view name);
-// The mode names in table order (for `t`, menus and sweeps).
+// The mode names in table order.
 [[nodiscard]] std::vector<std::string> mode_names();
+// Those that run with `options` (refusal() is empty: their tier, MSAA), in
+// table order: what `t`, menus and sweeps offer.
+[[nodiscard]] std::vector<std::string> mode_names(const TechniqueOptions& options);
+// Why `info` cannot run with `options` (their tier and MSAA), in one line;
+// empty when it can.
+[[nodiscard]] std::string refusal(const TechniqueInfo& info, const TechniqueOptions& options);
 // "forward, deferred, ..." for messages.
 [[nodiscard]] std::string technique_names();
 

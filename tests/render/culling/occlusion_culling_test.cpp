@@ -141,7 +141,7 @@ TEST_P(OcclusionCulling, EveryModeDrawsItsPictureWithoutWhatTheDepthHides) {
     WorldOptions options{.scene = kGrid, .lights = 256u, .mode = "forward", .view = 5, .size = kSize};
     options.technique_options.msaa = samples;
     World world(options);
-    for (const std::string& mode : techniques::mode_names()) {
+    for (const std::string& mode : techniques::mode_names(options.technique_options)) {
       world.set_mode(mode);
       set_occlusion_culling(world, false);
       const Frame all = draw(world);

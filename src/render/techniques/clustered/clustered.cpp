@@ -2,18 +2,9 @@
 
 #include "gfx/depth.hpp"
 #include "render/frame/scene_passes.hpp"
-#include "render/lighting/cpu_light_lists.hpp"
 
 namespace atrium::techniques {
 namespace {
-
-// Deferred marks from the G-buffer's positions, forward+ from depths.
-std::vector<gfx::ShaderDefine> mark_defines(bool pixel_bounds, bool from_gbuffer) {
-  std::vector<gfx::ShaderDefine> defines;
-  if (!pixel_bounds) defines.push_back({"ACTIVE_FLAGS"});
-  if (from_gbuffer) defines.push_back({"FROM_GBUFFER"});
-  return defines;
-}
 
 // Forward+'s pre-pass with MSAA also writes the shading depth (common/shading_depth.glsl).
 std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::vector<gfx::ShaderDefine> defines) {
@@ -25,19 +16,7 @@ std::vector<gfx::ShaderDefine> prepass_defines(bool deferred, int samples, std::
 
 ClusteredTechnique::ClusteredTechnique(render::GpuAssets& gpu, const TechniqueOptions& options, bool deferred)
     : deferred_(deferred),
-      compute_free_(options.compute_free),
-      // Pixel boxes and active flags are marked by compute and storage writes: the tier tests the grid's boxes.
-      pixel_bounds_(options.cluster_bounds == ClusterBounds::Pixels && !compute_free_),
-      active_only_(options.active_clusters && !pixel_bounds_ && !compute_free_),
-      grid_size_(options.cluster_grid),
-      z_slicing_(options.z_slicing),
-      grid_(std::make_unique<lighting::ClusterGrid>(grid_size_.at({1, 1}), z_slicing_)),
-      assign_(compute_free_ ? std::nullopt
-                            : std::optional<lighting::LightAssignmentPrograms>(lighting::ClusterGrid::assign_programs(
-                                  gpu.shaders(), pixel_bounds_ ? ClusterBounds::Pixels : ClusterBounds::Grid, active_only_, options.light_assignment))),
-      mark_(compute_free_ ? nullptr : &gpu.shaders().get({"clustered/mark_active.comp"}, mark_defines(pixel_bounds_, deferred))),
-      mark_blended_(compute_free_ ? nullptr
-                                  : &gpu.shaders().get({"common/mesh.vert", "clustered/mark_blended.frag"}, mark_defines(pixel_bounds_, false))),
+      clusters_(gpu.shaders(), options, deferred ? lighting::ClusterLights::Positions::GBuffer : lighting::ClusterLights::Positions::Depth),
       geometry_(gpu.shaders().get({"common/mesh.vert", deferred ? "deferred/geometry.frag" : "common/depth_masked.frag"},
                                   prepass_defines(deferred, options.msaa, {}))),
       position_only_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"},
@@ -48,46 +27,9 @@ ClusteredTechnique::ClusteredTechnique(render::GpuAssets& gpu, const TechniqueOp
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
 
-void ClusteredTechnique::resize(const render::FrameTargets& targets) {
-  const glm::uvec3 dims = grid_size_.at(targets.size);
-  if (dims != grid_->dims()) grid_ = std::make_unique<lighting::ClusterGrid>(dims, z_slicing_);
-}
-
-GLuint ClusteredTechnique::mark_clusters(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
-  GLuint buffer = 0;
-  if (pixel_bounds_) {
-    grid_->clear_pixel_bounds();
-    buffer = grid_->pixel_bounds_buffer();
-  } else {
-    const std::uint32_t zero = 0;
-    glClearNamedBufferData(grid_->active_buffer(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    buffer = grid_->active_buffer();
-  }
-  grid_->bind();
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kPerClusterBinding, buffer);
-  if (deferred_) gbuffer_.bind_textures(res);
-  else glBindTextureUnit(0, res.texture(shading_depth_.valid() ? shading_depth_ : frame.scene_depth));
-  mark_->use();
-  glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
-  if (!frame.draws.list().blended.empty()) {
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    glBindFramebuffer(GL_FRAMEBUFFER, render::scene_framebuffer(res, frame));
-    glViewport(0, 0, targets.size.x, targets.size.y);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(gfx::kDepthCloser);
-    glDepthMask(GL_FALSE);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    mark_blended_->use();
-    render::draw_items(frame.draws.list().blended, frame.draws.commands());
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glDepthMask(GL_TRUE);
-  }
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  return buffer;
-}
+void ClusteredTechnique::resize(const render::FrameTargets& targets) { clusters_.resize(targets.size); }
 
 void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
-  grid_->update(frame.projection, frame.near_plane, frame.far_plane);
   shading_depth_ = {};
   if (deferred_) {
     render::add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);
@@ -98,9 +40,7 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::Fra
       if (targets.samples > 1) shading_depth_ = pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth);
     }, [this, &frame, &targets](const render::PassResources& res) { draw_prepass(res, frame, targets); });
   }
-  const render::ResourceId lists = grid_->list().import_into(graph, "cluster-light-lists", compute_free_ ? render::ViewKind::None : render::ViewKind::LightBins);
-  // The light-bins view reads the GPU's lists: not on the compute-free tier.
-  if (!compute_free_) graph.publish(lighting::LightBins{lighting::LightBins::Binning::Clusters, lists, {}, 0, &grid_->list(), grid_->uniform_buffer(), grid_->dims()});
+  const render::ResourceId lists = clusters_.begin_frame(graph, frame);
   graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
     if (deferred_) gbuffer_.read_targets(pass);
     else pass.read(shading_depth_.valid() ? shading_depth_ : frame.scene_depth, render::Access::Sampled);
@@ -109,12 +49,10 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::Fra
     if (!frame.draws.list().blended.empty()) render::read_draws(pass, frame);
     pass.write(lists, render::Access::Storage);
   }, [this, &frame, &targets](const render::PassResources& res) {
-    if (compute_free_) {
-      cpu_lists_.upload(lighting::bin_lights_in_clusters(frame.lights, frame.view, *grid_));
-      return;
-    }
-    const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets) : 0;
-    grid_->assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
+    clusters_.assign(res, frame, targets, [&] {
+      if (deferred_) gbuffer_.bind_textures(res);
+      else glBindTextureUnit(0, res.texture(shading_depth_.valid() ? shading_depth_ : frame.scene_depth));
+    });
   });
   graph.add_pass(deferred_ ? "lighting" : "shading", [&](render::PassBuilder& pass) {
     if (deferred_) {
@@ -129,7 +67,7 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::Fra
   // Blended surfaces are shaded forward+ from the same lists: their clusters
   // were marked with the opaque pixels'.
   render::add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
-                        [this] { bind_lists(); });
+                        [this] { clusters_.bind(); });
 }
 
 void ClusteredTechnique::draw_prepass(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
@@ -150,17 +88,8 @@ void ClusteredTechnique::draw_prepass(const render::PassResources& res, const re
   }
 }
 
-void ClusteredTechnique::bind_lists() const {
-  if (!compute_free_) {
-    grid_->bind();
-    return;
-  }
-  glBindBufferBase(GL_UNIFORM_BUFFER, render::kClusterUniformBinding, grid_->uniform_buffer());
-  cpu_lists_.bind();
-}
-
 void ClusteredTechnique::shade(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
-  bind_lists();
+  clusters_.bind();
   if (deferred_) {
     lighting_->run(res, gbuffer_, frame, targets);
     return;

@@ -1,0 +1,24 @@
+#version 450 core
+// The visibility buffer's geometry pass: writes the identifier of each visible
+// triangle (its record's first identifier plus gl_PrimitiveID, which counts
+// from 0 in every draw and instance) and nothing else. Alpha-masked materials
+// (ALPHA_TEST) test their alpha here, and only here: the resolve trusts that
+// what the buffer holds was kept.
+#include "common/frame.glsl"
+#include "common/fragment_count.glsl"
+#ifdef ALPHA_TEST
+#include "common/material.glsl"
+#include "common/mesh_inputs.glsl"
+#endif
+
+flat in uint v_first_triangle_id;
+layout(location = 0) out uint out_id;
+
+void main() {
+  count_fragment();
+#ifdef ALPHA_TEST
+  Surface s = evaluate_surface(v_position, v_normal, v_tangent, v_uv, v_color, gl_FrontFacing);
+  if (s.alpha < material_alpha_cutoff()) discard;
+#endif
+  out_id = v_first_triangle_id + uint(gl_PrimitiveID);
+}

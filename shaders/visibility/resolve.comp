@@ -1,0 +1,34 @@
+#version 450 core
+// The visibility buffer's resolve for one material (u_material, its textures
+// bound at units 0-4): one work group per tile that holds it (the
+// classification's list, dispatched indirectly). Each of its pixels rebuilds
+// its surface from the triangle it shows, evaluates the material with explicit
+// gradients and shades it with its cluster's lights, storing the lit result
+// (common/lighting_targets.glsl) once: no G-buffer between geometry and light.
+#define COMPUTE_STAGE
+#define EXPLICIT_GRADIENTS
+layout(local_size_x = 8, local_size_y = 8) in;
+
+#include "common/frame.glsl"
+#include "common/material.glsl"
+#include "common/cluster_shading.glsl"
+#include "common/lighting_targets.glsl"
+#include "visibility/visibility.glsl"
+#include "visibility/material_tiles.glsl"
+
+uniform uint u_material;
+
+void main() {
+  uint tile = u_tiles[u_material * u_tile_capacity + gl_WorkGroupID.x];
+  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * kTileSize + ivec2(gl_LocalInvocationID.xy);
+  if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
+  uint id = texelFetch(u_visibility, pixel, 0).r;
+  if (id == 0u) return;
+  uint triangle;
+  Instance instance = visible_instance(id, triangle);
+  if (instance.material.x != u_material) return;
+  VisibleSurface v = visible_surface(pixel, instance, triangle);
+  g_shaded_pixel = pixel;
+  Surface s = evaluate_material(v.material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+}

@@ -1,0 +1,173 @@
+#include "render/techniques/visibility/visibility.hpp"
+
+#include <algorithm>
+#include <vector>
+
+#include "gfx/limits.hpp"
+#include "render/frame/frame_draws.hpp"
+#include "render/frame/scene_passes.hpp"
+
+namespace atrium::techniques {
+namespace {
+
+std::vector<gfx::ShaderDefine> identifier_defines(bool masked) {
+  if (masked) return {{"VISIBILITY_ID"}, {"ALPHA_TEST"}};
+  return {{"VISIBILITY_ID"}, {"POSITION_ONLY"}};
+}
+
+}  // namespace
+
+VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options)
+    : gpu_(gpu),
+      identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false))),
+      identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true))),
+      classify_(gpu.shaders().get({"visibility/classify.comp"})),
+      resolve_(gpu.shaders().get({"visibility/resolve.comp"})),
+      blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
+      clusters_(gpu.shaders(), options, lighting::ClusterLights::Positions::Depth) {}
+
+void VisibilityTechnique::resize(const render::FrameTargets& targets) {
+  clusters_.resize(targets.size);
+  tiles_ = (glm::uvec2(glm::max(targets.size, glm::ivec2(0))) + glm::uvec2(kMaterialTileSize - 1)) / glm::uvec2(kMaterialTileSize);
+  tile_materials_ = 0;  // the lists are sized by tile count: remade at the next frame
+}
+
+void VisibilityTechnique::reserve_tiles(std::size_t materials) {
+  if (materials <= tile_materials_ && dispatch_) return;
+  tile_materials_ = std::max<std::size_t>({materials, 2 * tile_materials_, 16});
+  dispatch_ = gfx::create_buffer();
+  tile_lists_ = gfx::create_buffer();
+  glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(tile_materials_ * sizeof(DispatchCommand)), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)), nullptr, 0);
+}
+
+void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
+  if (frame.draws.list().visibility_ids > std::uint64_t{1} << 32) {
+    throw gfx::ResourceLimitError("visibility-buffer: the scene has " + std::to_string(frame.draws.list().visibility_ids - 1) +
+                                  " triangle instances, more than its 32-bit identifiers can name; use another mode");
+  }
+  // As many lists as this frame's materials; a list that occlusion culling's
+  // late phase extends with new materials grows them when the pass runs.
+  reserve_tiles(frame.draws.list().materials.size());
+  const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(DispatchCommand)});
+  const render::ResourceId tile_lists =
+      graph.import_buffer("material-tiles", tile_lists_.id(), {tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)});
+
+  graph.add_pass("visibility", [&](render::PassBuilder& pass) {
+    render::read_draws(pass, frame);
+    pass.write(frame.scene_depth, render::Access::Attachment);
+    identifiers_target_ = pass.create(render::kVisibilityIdsTarget, render::TextureDesc{GL_R32UI, targets.size, 1}, render::ViewKind::Identifiers);
+  }, [this, &frame, &targets](const render::PassResources& res) { draw_identifiers(res, frame, targets); });
+
+  const render::ResourceId lists = clusters_.begin_frame(graph, frame);
+  graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
+    pass.read(frame.scene_depth, render::Access::Sampled);
+    pass.read(frame.light_buffer, render::Access::Storage);
+    if (!frame.draws.list().blended.empty()) render::read_draws(pass, frame);
+    pass.write(lists, render::Access::Storage);
+  }, [this, &frame, &targets](const render::PassResources& res) {
+    clusters_.assign(res, frame, targets, [&] { glBindTextureUnit(0, res.texture(frame.scene_depth)); });
+  });
+
+  auto write_lit = [&frame](render::PassBuilder& pass) {
+    pass.write(frame.scene_color, render::Access::Storage);
+    for (const render::ResourceId sum : {frame.diffuse_light, frame.specular_light}) {
+      if (sum.valid()) pass.write(sum, render::Access::Storage);
+    }
+  };
+  graph.add_pass("material classification", [&](render::PassBuilder& pass) {
+    pass.read(identifiers_target_, render::Access::Sampled);
+    render::read_draws(pass, frame);
+    write_lit(pass);
+    pass.write(dispatch, render::Access::Storage);
+    pass.write(tile_lists, render::Access::Storage);
+  }, [this, &frame](const render::PassResources& res) { classify(res, frame); });
+
+  graph.add_pass("resolve", [&](render::PassBuilder& pass) {
+    pass.read(identifiers_target_, render::Access::Sampled);
+    render::read_draws(pass, frame);
+    render::read_shading_inputs(pass, frame);
+    pass.read(lists, render::Access::Storage);
+    pass.read(dispatch, render::Access::Indirect);
+    pass.read(tile_lists, render::Access::Storage);
+    write_lit(pass);
+  }, [this, &frame](const render::PassResources& res) { resolve(res, frame); });
+
+  render::add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
+                                [this] { clusters_.bind(); });
+}
+
+void VisibilityTechnique::draw_identifiers(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
+  const GLuint framebuffer = res.framebuffer({identifiers_target_}, frame.scene_depth);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
+  const GLuint none[] = {0, 0, 0, 0};
+  glClearNamedFramebufferuiv(framebuffer, GL_COLOR, 0, none);
+  render::begin_depth(framebuffer);
+  frame.draw_first_pass(res, [this](std::span<const render::DrawBatch> batches, const render::CommandSource& source) {
+    render::draw_depth(batches, source, identifiers_, identifiers_masked_);
+  });
+}
+
+void VisibilityTechnique::bind_lit_targets(const render::PassResources& res, const render::FrameContext& frame) const {
+  glBindImageTexture(render::kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  if (frame.diffuse_light.valid()) {
+    glBindImageTexture(render::kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(render::kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  }
+}
+
+void VisibilityTechnique::bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const {
+  // Bound to the units' size: the binary search takes its end from the block's length.
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, render::kVisibilityUnitsBinding, units_.buffer.id(), 0,
+                    static_cast<GLsizeiptr>(std::max<std::size_t>(unit_count_, 1) * sizeof(render::VisibilityUnit)));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kVertexPoolBinding, gpu_.vertex_pool());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kIndexPoolBinding, gpu_.index_pool());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
+  glBindTextureUnit(render::kVisibilityUnit, res.texture(identifiers_target_));
+  bind_lit_targets(res, frame);
+}
+
+void VisibilityTechnique::classify(const render::PassResources& res, const render::FrameContext& frame) {
+  const render::DrawList& list = frame.draws.list();
+  reserve_tiles(list.materials.size());
+  // Every scene triangle's unit, with the records of the list as drawn (after occlusion culling's phases).
+  units_.reserve(sizeof(render::VisibilityUnit));  // a scene without meshes binds one unit nothing reads
+  units_.upload(list.visibility_units.data(), list.visibility_units.size() * sizeof(render::VisibilityUnit));
+  unit_count_ = list.visibility_units.size();
+  const GLuint empty[] = {0, 1, 1};
+  glClearNamedBufferData(dispatch_.id(), GL_RGB32UI, GL_RGB_INTEGER, GL_UNSIGNED_INT, empty);
+  bind_inputs(res, frame);
+  const auto capacity = static_cast<unsigned>(tiles_.x * tiles_.y);
+  classify_.set("u_tile_capacity", capacity);
+  resolve_.set("u_tile_capacity", capacity);
+  classify_.use();
+  glDispatchCompute(tiles_.x, tiles_.y, 1);
+}
+
+void VisibilityTechnique::resolve(const render::PassResources& res, const render::FrameContext& frame) const {
+  const render::DrawList& list = frame.draws.list();
+  // Each material's textures and samplers, from the batches that draw it.
+  std::vector<const render::DrawBatch*> batch_of(list.materials.size(), nullptr);
+  for (const render::DrawBatch& batch : list.opaque) {
+    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
+      const std::uint32_t record = list.commands[c].base_instance;
+      if (record < list.instances.size()) batch_of[list.instances[record].material.x] = &batch;
+    }
+  }
+  clusters_.bind();
+  bind_inputs(res, frame);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
+  resolve_.use();
+  for (std::size_t m = 0; m < batch_of.size(); ++m) {
+    if (!batch_of[m]) continue;
+    glBindTextures(0, render::kMaterialTextureSlots, batch_of[m]->textures.data());
+    glBindSamplers(0, render::kMaterialTextureSlots, batch_of[m]->samplers.data());
+    resolve_.set("u_material", static_cast<unsigned>(m));
+    glDispatchComputeIndirect(static_cast<GLintptr>(m * sizeof(DispatchCommand)));
+  }
+  glBindSamplers(0, render::kMaterialTextureSlots, nullptr);
+}
+
+}  // namespace atrium::techniques
