@@ -16,7 +16,7 @@
 
 // Every GL entry point the engine names, as epoxy spells them.
 #define ATRIUM_GL_ENTRY_POINTS(X) \
-  X(glActiveTexture) X(glAttachShader) X(glBeginQuery) X(glBindBuffer) X(glBindBufferBase) X(glBindFramebuffer) \
+  X(glActiveTexture) X(glAttachShader) X(glBeginQuery) X(glBindBuffer) X(glBindBufferBase) X(glBindBufferRange) X(glBindFramebuffer) \
   X(glBindImageTexture) X(glBindSampler) X(glBindSamplers) X(glBindTexture) X(glBindTextureUnit) X(glBindTextures) \
   X(glBindVertexArray) X(glBlendFunc) X(glBlitFramebuffer) X(glBlitNamedFramebuffer) X(glBufferData) \
   X(glBufferSubData) X(glCheckFramebufferStatus) X(glCheckNamedFramebufferStatus) X(glClear) X(glClearBufferfi) \

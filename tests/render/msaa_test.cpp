@@ -39,7 +39,7 @@ TEST_P(MsaaMatchesForward, FromEveryView) {
   testing::expect_forward_picture_from_every_view(world, mode, "msaa_" + testing::test_name(mode, layout), 0.002);
 }
 
-INSTANTIATE_TEST_SUITE_P(Modes, MsaaMatchesForward, ::testing::ValuesIn(testing::mode_layouts()),
+INSTANTIATE_TEST_SUITE_P(Modes, MsaaMatchesForward, ::testing::ValuesIn(testing::mode_layouts({.msaa = kSamples})),
                          [](const auto& info) { return testing::test_name(std::get<0>(info.param), std::get<1>(info.param)); });
 
 using Msaa = testing::GlTest;

@@ -26,10 +26,11 @@ inline std::vector<GBufferLayout> gbuffer_layouts() {
 // Each non-forward mode with every --gbuffer layout where the layout changes
 // its G-buffer (GBufferUse::Chosen), and once elsewhere: a second run of a mode
 // the layout does not touch would only repeat the first.
-inline std::vector<std::tuple<std::string, GBufferLayout>> mode_layouts() {
+// Only the modes that run with `options` (techniques::refusal).
+inline std::vector<std::tuple<std::string, GBufferLayout>> mode_layouts(const TechniqueOptions& options = {}) {
   std::vector<std::tuple<std::string, GBufferLayout>> pairs;
   for (const techniques::TechniqueInfo& info : techniques::technique_table()) {
-    if (info.name == "forward") continue;
+    if (info.name == "forward" || !techniques::refusal(info, options).empty()) continue;
     if (info.gbuffer != techniques::GBufferUse::Chosen) {
       pairs.emplace_back(std::string(info.name), GBufferLayout::Full);
       continue;

@@ -76,14 +76,10 @@ void gbuffer_target(DebugViews& views, const DebugViewFrame& frame, const PassRe
 }
 // Only the passes that shade each pixel once (deferred lighting, the
 // visibility buffer's resolve) write the sums apart: a forward mode's stay grey.
-bool written(const FrameGraph& graph, std::string_view name) {
-  const std::vector<ViewableResource> resources = graph.viewable();
-  return std::any_of(resources.begin(), resources.end(), [&](const ViewableResource& r) { return r.name == name && !r.written_by.empty(); });
-}
 template <const char* kName>
 void split_sum(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2 origin, glm::vec2 scale) {
   const ResourceId sum = frame.graph.find(kName);
-  if (sum.valid() && written(frame.graph, kName)) views.show_light_sum(sum, res, origin, scale);
+  if (sum.valid() && shades_pixels_once(frame.graph, {})) views.show_light_sum(sum, res, origin, scale);
   else views.show_nothing();
 }
 constexpr char kPosition[] = "POSITION", kNormal[] = "NORMAL", kAlbedo[] = "ALBEDO", kMetallicRoughness[] = "METALLIC_ROUGHNESS",
@@ -95,7 +91,9 @@ constexpr char kDiffuseLight[] = "diffuse-light", kSpecularLight[] = "specular-l
 // primitive instance that drew it) or per material (the classification's).
 template <DebugViews::Identify kWhat>
 void identifiers(DebugViews& views, const DebugViewFrame& frame, const PassResources& res, glm::vec2, glm::vec2) {
-  views.show_identifiers(frame.graph.find(kVisibilityIdsTarget), res, kWhat);
+  const ResourceId ids = frame.graph.find(kVisibilityIdsTarget);
+  if (ids.valid()) views.show_identifiers(ids, res, kWhat);
+  else views.show_nothing();
 }
 
 constexpr DebugViewNeeds kGBuffer{.gbuffer = true};
