@@ -1,8 +1,7 @@
 // The material classification's output: per material, an indirect dispatch
-// (x counts the tiles that hold it) and the list of those tiles, kTileSize
-// pixels square, each packed as x | y << 16. C++ twin: MaterialTiles in
-// src/render/techniques/visibility/material_tiles.hpp.
-const int kTileSize = 8;
+// (x counts the tiles that hold it) and the list of those tiles, each the
+// size of classify.comp's work group and packed as x | y << 16. C++ twin:
+// DispatchCommand in src/render/techniques/visibility/visibility.hpp.
 
 struct Dispatch {
   uint x, y, z;

@@ -20,7 +20,8 @@ uniform uint u_material;
 
 void main() {
   uint tile = u_tiles[u_material * u_tile_capacity + gl_WorkGroupID.x];
-  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * kTileSize + ivec2(gl_LocalInvocationID.xy);
+  // Its work group is classify.comp's: one group a tile.
+  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   uint id = texelFetch(u_visibility, pixel, 0).r;
   if (id == 0u) return;

@@ -28,7 +28,8 @@ VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const Technique
 
 void VisibilityTechnique::resize(const render::FrameTargets& targets) {
   clusters_.resize(targets.size);
-  tiles_ = (glm::uvec2(glm::max(targets.size, glm::ivec2(0))) + glm::uvec2(kMaterialTileSize - 1)) / glm::uvec2(kMaterialTileSize);
+  const glm::uvec2 tile(classify_.work_group_size());
+  tiles_ = (glm::uvec2(glm::max(targets.size, glm::ivec2(0))) + tile - 1u) / tile;
   tile_materials_ = 0;  // the lists are sized by tile count: remade at the next frame
 }
 

@@ -23,17 +23,12 @@ struct DispatchCommand {
 };
 static_assert(sizeof(DispatchCommand) == 12, "GL reads indirect dispatches as three 32-bit words");
 
-// Pixels per side of the tiles the classification lists (kTileSize in
-// shaders/visibility/material_tiles.glsl; its compute work groups).
-inline constexpr int kMaterialTileSize = 8;
-
 class VisibilityTechnique final : public LightingTechnique {
  public:
   VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const render::FrameTargets& targets) override;
   void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
   [[nodiscard]] ListStats light_lists() override { return cluster_list_stats(clusters_); }
-  [[nodiscard]] const lighting::ClusterGrid& grid() const { return clusters_.grid(); }
 
  private:
   // The geometry pass's body: identifiers and depth, through draw_first_pass.
@@ -55,7 +50,7 @@ class VisibilityTechnique final : public LightingTechnique {
   gfx::ShaderProgram& resolve_;
   gfx::ShaderProgram& blended_;  // forward+ shading of blended surfaces (clustered/shade.frag)
   lighting::ClusterLights clusters_;
-  glm::uvec2 tiles_{0};  // tiles per row and column
+  glm::uvec2 tiles_{0};  // tiles per row and column, each a work group of classify_ (its layout is the one fact)
   std::size_t tile_materials_ = 0;  // materials the tile lists hold room for
   gfx::Buffer dispatch_, tile_lists_;
   gfx::StreamBuffer units_;
