@@ -41,6 +41,14 @@ std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage) {
   return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / std::max<std::uint64_t>(pixels, 1), 1, kMostLightsPerRun));
 }
 
+void bind_lit_images(const render::PassResources& res, const render::FrameContext& frame, GLenum access) {
+  glBindImageTexture(render::kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, access, GL_RGBA16F);
+  if (frame.diffuse_light.valid()) {
+    glBindImageTexture(render::kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
+    glBindImageTexture(render::kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
+  }
+}
+
 LightingPass::LightingPass(gfx::ShaderLibrary& shaders, const std::string& file, std::vector<gfx::ShaderDefine> defines,
                            const TechniqueOptions& options, Write write)
     : write_(write) {
@@ -79,12 +87,7 @@ void LightingPass::run(const render::PassResources& res, const GBuffer& gbuffer,
     return;
   }
   gbuffer.bind_textures(res);
-  const GLenum access = add ? GL_READ_WRITE : GL_WRITE_ONLY;
-  glBindImageTexture(render::kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, access, GL_RGBA16F);
-  if (frame.diffuse_light.valid()) {
-    glBindImageTexture(render::kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
-    glBindImageTexture(render::kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, access, GL_RGBA16F);
-  }
+  bind_lit_images(res, frame, add ? GL_READ_WRITE : GL_WRITE_ONLY);
   // The run before stored these pixels: its stores must land before this run reads them.
   if (add) glMemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
   dispatch_per_pixel(*compute_, targets.size);

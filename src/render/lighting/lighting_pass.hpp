@@ -50,6 +50,10 @@ inline constexpr std::uint64_t kFragmentEvaluationsPerRun = std::uint64_t{1} << 
 inline constexpr std::uint32_t kMostLightsPerRun = 16384;
 [[nodiscard]] std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage);
 
+// Binds the lit targets a compute lighting pass stores to (the HDR colour and,
+// with the split on, the two light sums) at their image units with `access`.
+void bind_lit_images(const render::PassResources& res, const render::FrameContext& frame, GLenum access);
+
 class LightingPass {
  public:
   // How a run writes the lit targets: Store replaces them; Add (a later run

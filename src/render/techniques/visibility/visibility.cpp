@@ -6,6 +6,7 @@
 #include "gfx/limits.hpp"
 #include "render/frame/frame_draws.hpp"
 #include "render/frame/scene_passes.hpp"
+#include "render/lighting/lighting_pass.hpp"
 
 namespace atrium::techniques {
 namespace {
@@ -110,14 +111,6 @@ void VisibilityTechnique::draw_identifiers(const render::PassResources& res, con
   });
 }
 
-void VisibilityTechnique::bind_lit_targets(const render::PassResources& res, const render::FrameContext& frame) const {
-  glBindImageTexture(render::kLitColorImageUnit, res.texture(frame.scene_color), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  if (frame.diffuse_light.valid()) {
-    glBindImageTexture(render::kDiffuseLightImageUnit, res.texture(frame.diffuse_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-    glBindImageTexture(render::kSpecularLightImageUnit, res.texture(frame.specular_light), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-  }
-}
-
 void VisibilityTechnique::bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const {
   // Bound to the units' size: the binary search takes its end from the block's length.
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, render::kVisibilityUnitsBinding, units_.buffer.id(), 0,
@@ -127,7 +120,7 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
   glBindTextureUnit(render::kVisibilityUnit, res.texture(identifiers_target_));
-  bind_lit_targets(res, frame);
+  lighting::bind_lit_images(res, frame, GL_WRITE_ONLY);
 }
 
 void VisibilityTechnique::classify(const render::PassResources& res, const render::FrameContext& frame) {

@@ -39,7 +39,6 @@ class VisibilityTechnique final : public LightingTechnique {
   void resolve(const render::PassResources& res, const render::FrameContext& frame) const;
   // Grows the tile lists to hold `materials` lists of every tile.
   void reserve_tiles(std::size_t materials);
-  void bind_lit_targets(const render::PassResources& res, const render::FrameContext& frame) const;
   // The units, the geometry pools, the tile lists, the identifiers and the lit targets.
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
