@@ -14,9 +14,10 @@
 namespace atrium {
 namespace {
 
+// Seconds `positive` was down this frame less those `negative` was: a key
+// held all frame gives the frame's length, a tap its own.
 float axis(const InputState& input, int positive, int negative) {
-  return (input.held.test(static_cast<std::size_t>(positive)) ? 1.0f : 0.0f) -
-         (input.held.test(static_cast<std::size_t>(negative)) ? 1.0f : 0.0f);
+  return static_cast<float>(input.down(positive) - input.down(negative));
 }
 
 }  // namespace
@@ -26,7 +27,6 @@ void register_fly_camera(ecs::Scheduler& scheduler) {
     const InputState* state = registry.try_resource<InputState>();
     if (!state) return;
     const InputState& input = *state;
-    const auto dt = static_cast<float>(registry.resource<ecs::FrameClock>().delta_seconds);
     registry.view<Transform, CameraAngles, FlyCamera>().each([&](Transform& transform, CameraAngles& angles, FlyCamera& fly) {
       if (!input.ui_wants_mouse) {
         if (input.looking) {
@@ -37,18 +37,22 @@ void register_fly_camera(ecs::Scheduler& scheduler) {
       }
       glm::vec3 move(0.0f);
       if (!input.ui_wants_keyboard) {
-        angles.yaw_degrees += axis(input, GLFW_KEY_RIGHT, GLFW_KEY_LEFT) * fly.turn_degrees_per_second * dt;
-        angles.pitch_degrees += axis(input, GLFW_KEY_UP, GLFW_KEY_DOWN) * fly.turn_degrees_per_second * dt;
+        angles.yaw_degrees += axis(input, GLFW_KEY_RIGHT, GLFW_KEY_LEFT) * fly.turn_degrees_per_second;
+        angles.pitch_degrees += axis(input, GLFW_KEY_UP, GLFW_KEY_DOWN) * fly.turn_degrees_per_second;
         move = {axis(input, GLFW_KEY_D, GLFW_KEY_A), axis(input, GLFW_KEY_E, GLFW_KEY_Q), axis(input, GLFW_KEY_S, GLFW_KEY_W)};
       }
       angles.yaw_degrees = std::fmod(angles.yaw_degrees, 360.0f);
       angles.pitch_degrees = std::clamp(angles.pitch_degrees, -kMaxPitchDegrees, kMaxPitchDegrees);
       transform.rotation = camera_rotation(angles.yaw_degrees, angles.pitch_degrees);
       // Forward and sideways follow the view; q and e move straight down and up.
+      // Keys held together move diagonally at the same speed, for the
+      // longest time any of them was down.
       const glm::vec3 direction = transform.rotation * glm::vec3(move.x, 0.0f, move.z) + glm::vec3(0.0f, move.y, 0.0f);
+      const float seconds = std::max({std::abs(move.x), std::abs(move.y), std::abs(move.z)});
       if (glm::length(direction) == 0.0f) return;
-      const bool fast = input.held.test(GLFW_KEY_LEFT_SHIFT) || input.held.test(GLFW_KEY_RIGHT_SHIFT);
-      transform.position += glm::normalize(direction) * fly.speed * (fast ? fly.fast_factor : 1.0f) * dt;
+      const bool fast = input.held.test(GLFW_KEY_LEFT_SHIFT) || input.held.test(GLFW_KEY_RIGHT_SHIFT) ||
+                        input.down(GLFW_KEY_LEFT_SHIFT) > 0.0 || input.down(GLFW_KEY_RIGHT_SHIFT) > 0.0;
+      transform.position += glm::normalize(direction) * fly.speed * (fast ? fly.fast_factor : 1.0f) * seconds;
     });
   });
 }

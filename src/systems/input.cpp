@@ -1,23 +1,36 @@
 #include "systems/input.hpp"
 
+#include <algorithm>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 
 namespace atrium {
 
-void apply_input_events(InputState& state, std::span<const InputEvent> events) {
+void apply_input_events(InputState& state, std::span<const InputEvent> events, double now) {
   state.pressed.clear();
   state.cursor_delta = glm::dvec2(0.0);
   state.scroll = 0.0;
+  // A key held from before this frame's span counts from its start; one
+  // pressed within it, from its press.
+  const double since = state.seconds;
+  std::array<double, 512> down_from{};
+  for (std::size_t key = 0; key < state.held.size(); ++key) {
+    state.down_seconds[key] = 0.0;
+    down_from[key] = since;
+  }
   for (const InputEvent& event : events) {
     switch (event.kind) {
       case InputEvent::Kind::Key: {
         if (event.code < 0 || static_cast<std::size_t>(event.code) >= state.held.size()) break;  // GLFW_KEY_UNKNOWN
         const auto key = static_cast<std::size_t>(event.code);
+        const double at = std::clamp(event.seconds, since, now);
         if (event.action == GLFW_PRESS) {
           state.pressed.push_back({event.code, event.mods});
+          if (!state.held.test(key)) down_from[key] = at;
           state.held.set(key);
         } else if (event.action == GLFW_RELEASE) {
+          if (state.held.test(key)) state.down_seconds[key] += at - down_from[key];
           state.held.reset(key);
         }
         break;
@@ -34,10 +47,17 @@ void apply_input_events(InputState& state, std::span<const InputEvent> events) {
         break;
     }
   }
+  for (std::size_t key = 0; key < state.held.size(); ++key) {
+    if (state.held.test(key)) state.down_seconds[key] += now - down_from[key];
+  }
+  state.seconds = now;
 }
 
 namespace {
-void queue(GLFWwindow* window, const InputEvent& event) {
+// Each event is stamped when the window system hands it over, which is when
+// it happened to within the event loop's latency, not when the frame reads it.
+void queue(GLFWwindow* window, InputEvent event) {
+  event.seconds = glfwGetTime();
   static_cast<ecs::Registry*>(glfwGetWindowUserPointer(window))->resource<InputEvents>().queue.push_back(event);
 }
 }  // namespace
@@ -48,6 +68,7 @@ void register_input(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwind
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(window, &x, &y);
   registry.resource<InputState>().cursor = {x, y};
+  registry.resource<InputState>().seconds = glfwGetTime();
   glfwSetWindowUserPointer(window, &registry);
   glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
     queue(w, {InputEvent::Kind::Key, key, action, mods, {}});
@@ -59,7 +80,7 @@ void register_input(ecs::Scheduler& scheduler, ecs::Registry& registry, GLFWwind
   glfwSetScrollCallback(window, [](GLFWwindow* w, double sx, double sy) { queue(w, {InputEvent::Kind::Scroll, 0, 0, 0, {sx, sy}}); });
   scheduler.add(ecs::Phase::Input, "input", [](ecs::Registry& r) {
     auto& events = r.resource<InputEvents>();
-    apply_input_events(r.resource<InputState>(), events.queue);
+    apply_input_events(r.resource<InputState>(), events.queue, glfwGetTime());
     events.queue.clear();
   });
 }

@@ -22,6 +22,7 @@ struct InputEvent {
   int action = 0;  // GLFW_PRESS, GLFW_RELEASE, GLFW_REPEAT
   int mods = 0;
   glm::dvec2 value{0.0};  // Cursor: position; Scroll: offsets
+  double seconds = 0.0;   // when it happened (glfwGetTime's clock)
 };
 
 // Queued by the callbacks, drained once per frame (a registry resource).
@@ -29,8 +30,9 @@ struct InputEvents {
   std::vector<InputEvent> queue;
 };
 
-// Starts a new frame of `state` and applies `events` in order.
-void apply_input_events(InputState& state, std::span<const InputEvent> events);
+// Starts a new frame of `state` taken at `now` and applies `events` (which
+// happened since the previous frame's `now`) in order.
+void apply_input_events(InputState& state, std::span<const InputEvent> events, double now);
 
 // Installs GLFW callbacks on `window` that queue into the registry's
 // InputEvents, and the system that applies them. Install before the overlay,

@@ -31,7 +31,7 @@ TEST(InputSystem, TurnsEventsIntoPressesHeldKeysAndMouseMotion) {
       {InputEvent::Kind::Cursor, 0, 0, 0, {14.0, 17.0}},
       {InputEvent::Kind::Scroll, 0, 0, 0, {0.0, 2.0}},
   };
-  apply_input_events(state, frame1);
+  apply_input_events(state, frame1, 0.0);
   ASSERT_EQ(state.pressed.size(), 2u) << "a repeat is not a press; unknown keys are dropped";
   EXPECT_EQ(state.pressed[0].key, GLFW_KEY_T);
   EXPECT_EQ(state.pressed[0].mods, GLFW_MOD_SHIFT);
@@ -41,7 +41,7 @@ TEST(InputSystem, TurnsEventsIntoPressesHeldKeysAndMouseMotion) {
   EXPECT_EQ(state.cursor_delta, glm::dvec2(14.0, 17.0));
   EXPECT_EQ(state.scroll, 2.0);
 
-  apply_input_events(state, {});  // the next frame: nothing happened
+  apply_input_events(state, {}, 0.0);  // the next frame: nothing happened
   EXPECT_TRUE(state.pressed.empty());
   EXPECT_TRUE(state.held.test(GLFW_KEY_W)) << "held until released";
   EXPECT_EQ(state.cursor_delta, glm::dvec2(0.0));
@@ -64,15 +64,57 @@ struct FlyRig {
   InputState& input() { return registry.resource<InputState>(); }
   Transform& transform() { return registry.get<Transform>(camera); }
   CameraAngles& angles() { return registry.get<CameraAngles>(camera); }
+  // `key` down for `seconds` of the coming frame.
+  void hold(int key, double seconds) {
+    input().held.set(static_cast<std::size_t>(key));
+    input().down_seconds[static_cast<std::size_t>(key)] = seconds;
+  }
 };
+
+// Key events carry their own times: at 0.5 fps a tap between two frames acts
+// once and moves the camera for as long as it lasted, and a hold that spans a
+// frame counts on each side of it for its own part.
+TEST(InputSystem, TapsAndHoldsBetweenSlowFramesCountForTheirOwnLength) {
+  FlyRig rig;
+  InputState& input = rig.input();
+  apply_input_events(input, {}, 10.0);
+  const std::vector<InputEvent> taps{
+      {InputEvent::Kind::Key, GLFW_KEY_T, GLFW_PRESS, 0, {}, 10.4},
+      {InputEvent::Kind::Key, GLFW_KEY_T, GLFW_RELEASE, 0, {}, 10.48},
+      {InputEvent::Kind::Key, GLFW_KEY_W, GLFW_PRESS, 0, {}, 10.7},
+      {InputEvent::Kind::Key, GLFW_KEY_W, GLFW_RELEASE, 0, {}, 10.78},
+      {InputEvent::Kind::Key, GLFW_KEY_D, GLFW_PRESS, 0, {}, 11.5},
+  };
+  apply_input_events(input, taps, 12.0);
+  ASSERT_EQ(input.pressed.size(), 3u);
+  EXPECT_EQ(input.pressed[0].key, GLFW_KEY_T) << "a tap between frames is one press";
+  EXPECT_NEAR(input.down(GLFW_KEY_W), 0.08, 1e-9);
+  EXPECT_NEAR(input.down(GLFW_KEY_D), 0.5, 1e-9);
+  EXPECT_FALSE(input.held.test(GLFW_KEY_W));
+  rig.scheduler.run_frame(rig.registry, 2.0);
+  // At 2 m/s, w (-Z) for 0.08 s and d (+X) for 0.5 s: towards (0.5, 0, -0.08),
+  // as far as the longer key went (1 m), not for the frame's 2 s.
+  const glm::vec3 expected = glm::normalize(glm::vec3(0.5f, 0.0f, -0.08f)) * 1.0f;
+  EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, expected, 1e-5f)));
+  const glm::vec3 after_first = rig.transform().position;
+
+  const std::vector<InputEvent> release{{InputEvent::Kind::Key, GLFW_KEY_D, GLFW_RELEASE, 0, {}, 12.3}};
+  apply_input_events(input, release, 14.0);
+  EXPECT_TRUE(input.pressed.empty());
+  EXPECT_NEAR(input.down(GLFW_KEY_D), 0.3, 1e-9) << "from the frame's start to the release";
+  rig.scheduler.run_frame(rig.registry, 2.0);
+  EXPECT_NEAR(rig.transform().position.x - after_first.x, 0.6f, 1e-5f);
+  apply_input_events(input, {}, 16.0);
+  EXPECT_EQ(input.down(GLFW_KEY_D), 0.0);
+}
 
 TEST(FlyCameraSystem, WMovesForwardAlongTheViewAtItsSpeedAndShiftIsFaster) {
   FlyRig rig;
-  rig.input().held.set(GLFW_KEY_W);
+  rig.hold(GLFW_KEY_W, 0.5);
   rig.scheduler.run_frame(rig.registry, 0.5);
   EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(0, 0, -1), 1e-5f)));  // yaw 0 looks along -Z
   rig.angles().yaw_degrees = 90.0f;  // now along +X
-  rig.input().held.set(GLFW_KEY_LEFT_SHIFT);
+  rig.hold(GLFW_KEY_LEFT_SHIFT, 0.5);
   rig.scheduler.run_frame(rig.registry, 0.5);
   EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(4, 0, -1), 1e-4f)));
 }
@@ -80,7 +122,7 @@ TEST(FlyCameraSystem, WMovesForwardAlongTheViewAtItsSpeedAndShiftIsFaster) {
 TEST(FlyCameraSystem, QAndEMoveStraightDownAndUpWhateverThePitch) {
   FlyRig rig;
   rig.angles().pitch_degrees = 60.0f;
-  rig.input().held.set(GLFW_KEY_E);
+  rig.hold(GLFW_KEY_E, 1.0);
   rig.scheduler.run_frame(rig.registry, 1.0);
   EXPECT_TRUE(glm::all(glm::epsilonEqual(rig.transform().position, glm::vec3(0, 2, 0), 1e-5f)));
 }
@@ -93,7 +135,7 @@ TEST(FlyCameraSystem, MouseDragAndArrowsTurnAndPitchStopsShortOfVertical) {
   EXPECT_NEAR(rig.angles().yaw_degrees, 15.0f, 1e-4f);
   EXPECT_EQ(rig.angles().pitch_degrees, kMaxPitchDegrees);
   rig.input().looking = false;
-  rig.input().held.set(GLFW_KEY_LEFT);
+  rig.hold(GLFW_KEY_LEFT, 0.5);
   rig.scheduler.run_frame(rig.registry, 0.5);
   EXPECT_NEAR(rig.angles().yaw_degrees, 15.0f - 45.0f, 1e-4f);
   const glm::quat expected = camera_rotation(rig.angles().yaw_degrees, rig.angles().pitch_degrees);
@@ -111,7 +153,7 @@ TEST(FlyCameraSystem, ScrollScalesTheSpeedWithinLimitsAndTheOverlayKeepsItsEvent
   // While the overlay has the keyboard, w does not move the camera.
   rig.input().scroll = 0.0;
   rig.input().ui_wants_keyboard = true;
-  rig.input().held.set(GLFW_KEY_W);
+  rig.hold(GLFW_KEY_W, 1.0);
   rig.scheduler.run_frame(rig.registry, 1.0);
   EXPECT_EQ(rig.transform().position, glm::vec3(0.0f));
 }
