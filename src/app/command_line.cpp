@@ -17,11 +17,11 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli.hpp"
+#include "app/demo_keys.hpp"
 #include "assets/model_import.hpp"
 #include "render/debug/debug_views.hpp"
 #include "render/lighting/shading_model.hpp"
 #include "render/techniques/technique.hpp"
-#include "systems/overlay.hpp"
 #include "render/lighting/gbuffer.hpp"
 #include "render/lighting/lighting_pass.hpp"
 #include "gfx/limits.hpp"
@@ -579,7 +579,7 @@ std::string help_text(Command command) {
       const std::size_t padding = info.name.size() + 2 < kColumn ? kColumn - info.name.size() : 2;
       modes += "  " + std::string(info.name) + std::string(padding, ' ') + std::string(info.description) + "\n";
     }
-    return text + "\nModes:\n" + modes + "\nWindow keys:\n" + key_help() +
+    return text + "\nModes:\n" + modes + "\nWindow keys:\n" + window_key_help() +
            "\nExit codes: 0 success, 1 runtime failure (no GL context, shader error, a frame the\n"
            "driver cannot hold: the message names the limit), 2 bad usage or bad input.\n";
   }

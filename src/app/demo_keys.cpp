@@ -34,33 +34,33 @@ void set_debug_view(World& world, const std::string& view) {
 void request_view(World& world, int view) { world.registry().resource<DemoRequests>().view = view; }
 
 constexpr std::array kDemoKeys{
-    DemoKey{{GLFW_KEY_T, 0},
+    DemoKey{{GLFW_KEY_T, 0}, "t / Shift+t", "next / previous lighting mode",
             [](World& world, bool shift) {
               world.registry().resource<DemoRequests>().mode = step_name(world.modes(), world.mode(), shift ? -1 : 1);
             }},
-    DemoKey{{GLFW_KEY_1, 0}, [](World& world, bool) { request_view(world, 1); }},
-    DemoKey{{GLFW_KEY_2, 0}, [](World& world, bool) { request_view(world, 2); }},
-    DemoKey{{GLFW_KEY_3, 0}, [](World& world, bool) { request_view(world, 3); }},
-    DemoKey{{GLFW_KEY_4, 0}, [](World& world, bool) { request_view(world, 4); }},
-    DemoKey{{GLFW_KEY_5, 0}, [](World& world, bool) { request_view(world, 5); }},
-    DemoKey{{GLFW_KEY_G, 0},
+    DemoKey{{GLFW_KEY_1, 0}, "1..5", "stored views", [](World& world, bool) { request_view(world, 1); }},
+    DemoKey{{GLFW_KEY_2, 0}, "", "", [](World& world, bool) { request_view(world, 2); }},
+    DemoKey{{GLFW_KEY_3, 0}, "", "", [](World& world, bool) { request_view(world, 3); }},
+    DemoKey{{GLFW_KEY_4, 0}, "", "", [](World& world, bool) { request_view(world, 4); }},
+    DemoKey{{GLFW_KEY_5, 0}, "", "", [](World& world, bool) { request_view(world, 5); }},
+    DemoKey{{GLFW_KEY_G, 0}, "g / Shift+g", "cycle debug views (G-buffer targets, depth, heatmaps, light lists)",
             [](World& world, bool shift) {
               std::vector<std::string> views{""};
               for (const render::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
               set_debug_view(world, step_name(views, world.registry().resource<RendererSettings>().debug_view, shift ? -1 : 1));
             }},
-    DemoKey{{GLFW_KEY_L, 0},
+    DemoKey{{GLFW_KEY_L, 0}, "l", "light-volume outlines on/off",
             [](World& world, bool) {
               const bool on = world.registry().resource<RendererSettings>().debug_view == "light-volumes";
               set_debug_view(world, on ? "" : "light-volumes");
             }},
-    DemoKey{{GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD},
+    DemoKey{{GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD}, "+ / -", "double / halve the light count",
             [](World& world, bool) {
               world.registry().resource<DemoRequests>().light_count = std::min(std::max(1u, world.light_count() * 2), kMaxLights);
             }},
-    DemoKey{{GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT},
+    DemoKey{{GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT}, "", "",
             [](World& world, bool) { world.registry().resource<DemoRequests>().light_count = world.light_count() / 2; }},
-    DemoKey{{GLFW_KEY_P, 0},
+    DemoKey{{GLFW_KEY_P, 0}, "p", "pause / resume the light animation",
             [](World& world, bool) {
               bool& paused = world.registry().resource<LightAnimationSettings>().paused;
               paused = !paused;
@@ -68,7 +68,7 @@ constexpr std::array kDemoKeys{
             }},
     // Where the camera is, as a scene-file view line and a --camera value, so
     // that users can author views by flying to them.
-    DemoKey{{GLFW_KEY_C, 0},
+    DemoKey{{GLFW_KEY_C, 0}, "c", "the camera as a scene-file view line and a --camera value",
             [](World& world, bool) {
               world.registry().view<Transform, Camera, CameraAngles>().each(
                   [](const Transform& t, const Camera&, const CameraAngles& angles) {
@@ -81,6 +81,30 @@ constexpr std::array kDemoKeys{
 }  // namespace
 
 std::span<const DemoKey> demo_keys() { return kDemoKeys; }
+
+std::string key_help_line(std::string_view keys, std::string_view help) {
+  std::string line(keys);
+  line.resize(std::max<std::size_t>(line.size() + 1, 14), ' ');
+  return line + std::string(help) + "\n";
+}
+
+const std::string& window_key_help() {
+  static const std::string kHelp = demo_key_help() + key_help_line("b", "quick benchmark of every mode from here (printed to stdout)") +
+                                   key_help_line("F12", "screenshot (PNG in the working folder)") +
+                                   key_help_line("r", "reload shaders (a failing one keeps its old version)") +
+                                   key_help_line("v", "vsync on/off") + key_help_line("F1", "hide / show this overlay") +
+                                   key_help_line("h", "key help") + key_help_line("Esc", "quit");
+  return kHelp;
+}
+
+std::string demo_key_help() {
+  std::string text = key_help_line("w/s a/d q/e", "fly forward/back, left/right, down/up (Shift: faster)") +
+                     key_help_line("mouse drag", "look around (arrow keys: turn); scroll: flying speed");
+  for (const DemoKey& row : kDemoKeys) {
+    if (!row.label.empty()) text += key_help_line(row.label, row.help);
+  }
+  return text;
+}
 
 void say(const std::string& line) {
   std::printf("%s\n", line.c_str());

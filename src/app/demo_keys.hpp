@@ -16,9 +16,20 @@ namespace atrium {
 
 struct DemoKey {
   std::array<int, 2> keys;  // GLFW key codes; 0 where a row has one
+  std::string_view label;   // the keys as the help names them; empty where the row before covers this one
+  std::string_view help;
   void (*act)(World& world, bool shift);
 };
 [[nodiscard]] std::span<const DemoKey> demo_keys();
+
+// The help lines of the fly camera and the demo keys ("t / Shift+t   next /
+// previous lighting mode"); each front end adds its own keys' lines.
+[[nodiscard]] std::string demo_key_help();
+// The window's keys (demo_key_help and the window's own): `h`, --help and
+// the overlay's help window.
+[[nodiscard]] const std::string& window_key_help();
+// One help line, aligned as demo_key_help's.
+[[nodiscard]] std::string key_help_line(std::string_view keys, std::string_view help);
 
 // Prints one line on standard output (the terminal, or the page's console).
 void say(const std::string& line);

@@ -44,7 +44,7 @@ void handle_keys(World& world, gfx::WindowContext& context) {
       case GLFW_KEY_R: requests.reload_shaders = true; break;
       case GLFW_KEY_H:
         overlay.show_help = !overlay.show_help;
-        std::printf("%s", key_help().c_str());
+        std::printf("%s", window_key_help().c_str());
         std::fflush(stdout);
         break;
       case GLFW_KEY_V:
@@ -138,6 +138,7 @@ int run_window(const CliOptions& options) {
   register_fly_camera(world.scheduler());
   register_light_animation(world.scheduler());
   register_overlay(world.registry(), window);
+  world.registry().resource<OverlayState>().key_help = window_key_help();
   say("renderer: " + context->info().renderer);
   say("mode: " + world.mode());
   say("view: " + std::to_string(world.view()) + " " + world.scene().views[static_cast<std::size_t>(world.view() - 1)].name);

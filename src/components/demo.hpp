@@ -24,6 +24,7 @@ struct OverlayState {
   bool show_help = false;  // h
   bool vsync = true;       // v
   std::string message;     // the last shader error, bench table or screenshot path
+  std::string key_help;    // what h shows: the front end's keys, one per line
 };
 
 }  // namespace atrium

@@ -24,27 +24,6 @@
 
 namespace atrium {
 
-const std::string& key_help() {
-  static const std::string kHelp =
-      "w/s a/d q/e   fly forward/back, left/right, down/up (Shift: faster)\n"
-      "mouse drag    look around (arrow keys: turn); scroll: flying speed\n"
-      "t / Shift+t   next / previous lighting mode\n"
-      "1..5          stored views\n"
-      "g             cycle debug views (G-buffer targets, depth, heatmaps, light lists)\n"
-      "l             light-volume outlines on/off\n"
-      "+ / -         double / halve the light count\n"
-      "p             pause / resume the light animation\n"
-      "b             quick benchmark of every mode from here (printed to stdout)\n"
-      "F12           screenshot (PNG in the working folder)\n"
-      "c             print the camera as a scene-file view line and a --camera value\n"
-      "r             reload shaders (a failing one keeps its old version)\n"
-      "v             vsync on/off\n"
-      "F1            hide / show this overlay\n"
-      "h             key help\n"
-      "Esc           quit\n";
-  return kHelp;
-}
-
 namespace {
 
 // Owns the Dear ImGui context and backends for the window's lifetime.
@@ -304,7 +283,7 @@ void Overlay::draw(ecs::Registry& registry) {
   ImGui::End();
   if (state.show_help) {
     ImGui::Begin("keys", &state.show_help, ImGuiWindowFlags_AlwaysAutoResize);
-    ImGui::TextUnformatted(key_help().c_str());
+    ImGui::TextUnformatted(state.key_help.c_str());
     ImGui::End();
   }
   ImGui::Render();

@@ -14,8 +14,6 @@ struct GLFWwindow;
 
 namespace atrium {
 
-// One line per key, for `h`, --help and the overlay's help window.
-[[nodiscard]] const std::string& key_help();
 
 // Sets up Dear ImGui on `window` (after register_input: ImGui's GLFW backend
 // chains to the input system's callbacks) and adds its pass. The ImGui
