@@ -8,6 +8,7 @@ gives WebGL2 on SwiftShader; it needs --no-sandbox when run as root, and
 --disable-dev-shm-usage keeps it off a container's small /dev/shm.
 """
 import http.server
+import os
 import json
 import queue
 import shutil
@@ -17,11 +18,23 @@ import tempfile
 import threading
 
 
-def serve(site, results):
-    """A server for `site` that puts each POSTed JSON body on `results`."""
+def serve(site, results, mounts=None):
+    """A server for `site` that puts each POSTed JSON body on `results`;
+    `mounts` maps URL prefixes ("/checks/") to folders served beside it."""
+    mounts = mounts or {}
+
     class Handler(http.server.SimpleHTTPRequestHandler):
         def __init__(self, *args, **kwargs):
             super().__init__(*args, directory=site, **kwargs)
+
+        def translate_path(self, path):
+            for prefix, folder in mounts.items():
+                if path.startswith(prefix):
+                    relative = path[len(prefix):].split("?", 1)[0]
+                    full = os.path.realpath(os.path.join(folder, relative))
+                    if full.startswith(os.path.realpath(folder) + os.sep):
+                        return full
+            return super().translate_path(path)
 
         def do_POST(self):
             body = self.rfile.read(int(self.headers["Content-Length"]))
@@ -37,14 +50,16 @@ def serve(site, results):
     return server
 
 
-def open_page(port, query, results, timeout=180):
-    """What the page at ?QUERY POSTs (capture or bench), with Chromium's console errors."""
+def open_page(port, query, results, timeout=180, window=None):
+    """What the page at ?QUERY POSTs (capture, bench, layout or a check), with
+    Chromium's console errors; `window` is the window's (width, height)."""
     profile = tempfile.mkdtemp(prefix="atrium-chromium-")
     url = f"http://127.0.0.1:{port}/atrium.html?{query}"
+    size = [f"--window-size={window[0]},{window[1]}"] if window else []
     chromium = subprocess.Popen(
         ["chromium", "--headless=new", "--use-angle=swiftshader", "--enable-unsafe-swiftshader", "--no-sandbox",
          "--no-first-run", "--disable-extensions", "--disable-dev-shm-usage", "--enable-logging=stderr", "--v=0",
-         f"--user-data-dir={profile}", url],
+         f"--user-data-dir={profile}"] + size + [url],
         stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     try:
         result = results.get(timeout=timeout)

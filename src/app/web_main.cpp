@@ -1,13 +1,18 @@
 // The page's main (the WebAssembly build, web/): the same World the window
-// runs, on a WebGL2 canvas through GLFW. The page turns its URL parameters
-// into command-line options (web/shell.html: ?mode=x&view=3 is --mode x
-// --view 3), which go through the command line's own parser: same values,
-// same messages. The HTML panel drives the world through the atrium_*
-// functions below, and twice a second each frame hands it fps and pass times.
+// runs, on a WebGL2 canvas through GLFW. The page's state is a command line:
+// its URL parameters become options (web/shell.html: ?mode=x&view=3 is --mode
+// x --view 3), and every panel control sets one option of that list, which
+// the command line's own parser reads again whole: the same values and the
+// same one-line messages from the URL, the panel and the terminal. The panel
+// itself is the table of rows below; the page reads it, with the world's
+// state, from atrium_state() twice a second.
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -26,9 +31,14 @@
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
+#include "components/camera.hpp"
+#include "components/system_options.hpp"
 #include "components/transform.hpp"
 #include "gfx/context.hpp"
+#include "gfx/gl_object.hpp"
 #include "gfx/limits.hpp"
+#include "render/lighting/shading_model.hpp"
+#include "render/shadows/shadow_selection.hpp"
 #include "render/techniques/technique.hpp"
 #include "systems/fly_camera.hpp"
 #include "systems/input.hpp"
@@ -40,47 +50,266 @@ namespace {
 struct Page {
   std::unique_ptr<gfx::WindowContext> context;
   std::unique_ptr<World> world;
+  // The scene, then the options the world runs with: the URL's, with the
+  // panel's changes (and, synced before each change, what keys changed).
+  std::vector<std::string> args;
+  std::string confirm;  // a change refused as too slow once: asked again, it is carried out
   double last_seconds = 0.0;
   double stats_seconds = 0.0;
   int frames_since_stats = 0;
+  double fps = 0.0, frame_ms = 0.0;  // over the last half second
+  std::uint64_t memory_bytes = 0;    // estimated, twice a second (asking the driver is not free)
   std::string reply;       // what the last atrium_* call returns to the page
   std::string last_error;  // what the last frame failed with
 };
 Page* g_page = nullptr;
+
+// A change that would make one frame take longer than this, judged by the
+// last frames' cost per light, is refused until asked for again: a frame is
+// not interruptible, and a software renderer at 2^20 lights takes minutes.
+constexpr double kSlowFrameMs = 5000.0;
 
 void show_error(const std::string& message) {
   std::fprintf(stderr, "atrium: %s\n", message.c_str());
   EM_ASM({ atriumShowError(UTF8ToString($0)); }, message.c_str());
 }
 
-// fps over the last half second and the latest frame's pass times, as JSON.
-std::string stats_json(World& world, double fps, const std::string& refused) {
+CliOptions parse_args(const std::vector<std::string>& args) {
+  const std::vector<std::string_view> views(args.begin(), args.end());
+  return parse_cli(views);
+}
+
+// Where `option` stands in `args` (after the scene), or args.size().
+std::size_t find_option(const std::vector<std::string>& args, std::string_view option) {
+  for (std::size_t i = 1; i < args.size(); ++i) {
+    if (args[i] == option) return i;
+  }
+  return args.size();
+}
+
+// `args` without `option` (and its value, when it has one: an argument after
+// it that is not an option; "-5" is a value).
+std::vector<std::string> without(std::vector<std::string> args, std::string_view option) {
+  const std::size_t at = find_option(args, option);
+  if (at == args.size()) return args;
+  const bool has_value = at + 1 < args.size() && args[at + 1].rfind("--", 0) != 0;
+  args.erase(args.begin() + static_cast<std::ptrdiff_t>(at), args.begin() + static_cast<std::ptrdiff_t>(at + (has_value ? 2 : 1)));
+  return args;
+}
+
+std::vector<std::string> with(std::vector<std::string> args, const std::string& option, const std::string& value) {
+  args = without(std::move(args), option);
+  args.push_back(option);
+  args.push_back(value);
+  return args;
+}
+
+std::string number_text(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%g", value);
+  return text;
+}
+
+// The page's controls: each row is one option of the command line, shown as a
+// choice, a number or a check box, with what the world runs now in the
+// option's own words. Keys and refusals change the world; the panel shows it.
+enum class Control { Choice, Number, Flag, FlagOff };  // FlagOff: checked while the option is absent
+struct PanelRow {
+  std::string_view option, label;
+  Control control;
+  double min, max, step;                             // Number rows
+  std::vector<std::string> (*choices)(World& world);  // Choice rows
+  std::string (*value)(World& world);
+};
+
+RendererSettings& settings(World& world) { return world.registry().resource<RendererSettings>(); }
+std::string system_value(World& world, const char* name, double fallback) {
+  return number_text(world.registry().resource<SystemOptions>().value(name, fallback));
+}
+template <std::size_t N>
+std::vector<std::string> names(const std::array<std::string_view, N>& table) {
+  return {table.begin(), table.end()};
+}
+
+const std::array kPanel{
+    PanelRow{"--mode", "mode", Control::Choice, 0, 0, 0, [](World& w) { return w.modes(); }, [](World& w) { return w.mode(); }},
+    PanelRow{"--view", "view", Control::Choice, 0, 0, 0,
+             [](World& w) {
+               std::vector<std::string> views;
+               for (std::size_t i = 1; i <= w.scene().views.size(); ++i) views.push_back(std::to_string(i));
+               return views;
+             },
+             [](World& w) { return std::to_string(w.view()); }},
+    PanelRow{"--lights", "lights", Control::Number, 0, kMaxLights, 1, nullptr, [](World& w) { return std::to_string(w.light_count()); }},
+    PanelRow{"--light-radius", "light radius (m; 0: each light's own)", Control::Number, 0, 1000, 0.5, nullptr,
+             [](World& w) { return number_text(w.light_radius().value_or(0.0f)); }},
+    PanelRow{"--debug-view", "debug view", Control::Choice, 0, 0, 0,
+             [](World& w) {
+               std::vector<std::string> views{""};
+               for (const render::OfferedView& view : w.renderer().offered_views()) views.push_back(view.name);
+               // A view the frame refused is listed too: the list shows what was asked.
+               if (std::find(views.begin(), views.end(), settings(w).debug_view) == views.end()) views.push_back(settings(w).debug_view);
+               return views;
+             },
+             [](World& w) { return settings(w).debug_view; }},
+    PanelRow{"--shading", "shading", Control::Choice, 0, 0, 0, [](World&) { return names(lighting::kShadingModels); },
+             [](World& w) { return settings(w).shading; }},
+    PanelRow{"--msaa", "MSAA samples", Control::Choice, 0, 0, 0,
+             [](World&) {
+               std::vector<std::string> counts{"1"};
+               for (int samples = 2; samples <= std::min(8, gfx::max_msaa_samples()); samples *= 2) counts.push_back(std::to_string(samples));
+               return counts;
+             },
+             [](World& w) { return std::to_string(settings(w).technique_options.msaa); }},
+    PanelRow{"--shadows", "shadowed lights", Control::Number, 0, shadows::kMaxShadowedLights, 1, nullptr,
+             [](World& w) { return std::to_string(settings(w).shadows); }},
+    PanelRow{"--no-occlusion-culling", "occlusion culling", Control::FlagOff, 0, 0, 0, nullptr,
+             [](World& w) { return std::string(settings(w).occlusion_culling ? "on" : "off"); }},
+    PanelRow{"--z-slicing", "depth slicing (clustered modes)", Control::Choice, 0, 0, 0, [](World&) { return names(kZSlicingNames); },
+             [](World& w) { return std::string(kZSlicingNames[static_cast<std::size_t>(settings(w).technique_options.z_slicing)]); }},
+    PanelRow{"--split-lighting", "diffuse and specular apart", Control::Flag, 0, 0, 0, nullptr,
+             [](World& w) { return std::string(settings(w).technique_options.split_lighting ? "on" : "off"); }},
+    PanelRow{"--fireflies", "fireflies", Control::Number, 0, 4096, 1, nullptr, [](World& w) { return system_value(w, "fireflies", 0.0); }},
+    PanelRow{"--bloom", "bloom (0: off)", Control::Number, 0, 1, 0.01, nullptr, [](World& w) { return system_value(w, "bloom", 0.0); }},
+    PanelRow{"--bloom-radius", "bloom radius (of the height)", Control::Number, 0.02, 1, 0.01, nullptr,
+             [](World& w) { return system_value(w, "bloom-radius", 0.2); }},
+};
+
+const PanelRow* panel_row(std::string_view option) {
+  for (const PanelRow& row : kPanel) {
+    if (row.option == option) return &row;
+  }
+  return nullptr;
+}
+
+// The keys change mode, view, lights and debug view without the panel: the
+// arguments take them from the world before a change is made to them.
+void sync_args(Page& page) {
+  World& world = *page.world;
+  for (const char* option : {"--mode", "--view", "--lights", "--debug-view"}) {
+    const std::string value = panel_row(option)->value(world);
+    page.args = value.empty() ? without(page.args, option) : with(page.args, option, value);
+  }
+}
+
+std::string duration_text(double ms) {
+  if (ms < 120'000.0) return number_text(std::round(ms / 1000.0)) + " s";
+  return number_text(std::round(ms / 60'000.0)) + " minutes";
+}
+
+// Refuses, once, a light count whose frames the last frames' cost per light
+// says would take over kSlowFrameMs.
+void refuse_slow_lights(Page& page, std::uint32_t lights, const std::string& change) {
+  World& world = *page.world;
+  const double per_light = page.frame_ms / std::max(world.light_count(), 1u);
+  const double estimate = per_light * lights;
+  if (page.frame_ms <= 0.0 || lights <= world.light_count() || estimate <= kSlowFrameMs || page.confirm == change) {
+    page.confirm.clear();
+    return;
+  }
+  page.confirm = change;
+  throw InputError("--lights " + std::to_string(lights) + ": a frame would take about " + duration_text(estimate) + " on this renderer (" +
+                   number_text(std::round(page.frame_ms)) + " ms a frame now, with " + std::to_string(world.light_count()) +
+                   " lights); set it again to draw it anyway");
+}
+
+// Sets `option` to `value` (a flag: "on" or "off") in the page's arguments,
+// checks the whole list with the command line's parser and carries out what
+// changed. Throws UsageError or InputError with the one-line message.
+void set_option(Page& page, const std::string& option, const std::string& value) {
+  World& world = *page.world;
+  const PanelRow* row = panel_row(option);
+  if (!row) throw InputError("the panel has no option " + option);
+  sync_args(page);
+  std::vector<std::string> args = without(page.args, option);
+  const bool flag = row->control == Control::Flag || row->control == Control::FlagOff;
+  if (flag) {
+    if (value != "on" && value != "off") throw InputError(option + " expects on or off, got '" + value + "'");
+    if ((value == "on") == (row->control == Control::Flag)) args.push_back(option);
+  } else if (!(value.empty() && (option == "--debug-view")) && !((value.empty() || value == "0") && option == "--light-radius")) {
+    args = with(args, option, value);
+  }
+  const WorldOptions before = world_options(parse_args(page.args));
+  const WorldOptions after = world_options(parse_args(args));
+  if (after.lights && after.lights != before.lights) refuse_slow_lights(page, *after.lights, option + " " + value);
+  world.apply_settings(after);
+  if (after.lights && after.lights != before.lights) world.set_light_count(*after.lights);
+  if (after.light_radius != before.light_radius) world.set_light_radius(after.light_radius);
+  if (after.view != before.view) world.set_view(after.view);
+  page.args = std::move(args);
+}
+
+// A new World for `args` (the scene first), with the systems a window has;
+// it replaces the page's only once it has loaded.
+void start_world(Page& page, std::vector<std::string> args) {
+  const CliOptions options = parse_args(args);
+  auto world = std::make_unique<World>(world_options(options));
+  world->registry().resource<RendererSettings>().present_to_window = true;
+  register_input(world->scheduler(), world->registry(), page.context->window());
+  register_fly_camera(world->scheduler());
+  register_light_animation(world->scheduler());
+  world->registry().set_resource<DemoRequests>();
+  page.world = std::move(world);
+  page.args = std::move(args);
+  page.last_error.clear();
+  page.confirm.clear();
+  page.frame_ms = 0.0;
+}
+
+std::string camera_line(World& world) {
+  std::string line;
+  world.registry().view<Transform, Camera, CameraAngles>().each([&](const Transform& t, const Camera&, const CameraAngles& angles) {
+    line = assets::camera_argument({"here", t.position, angles.yaw_degrees, angles.pitch_degrees});
+  });
+  return line;
+}
+
+// What the panel shows, as JSON: fps, the latest frame's pass times and counts,
+// memory, the camera, and each panel row with its choices and value now.
+std::string state_json(Page& page) {
+  World& world = *page.world;
   const gfx::PassTimer& timer = world.renderer().timer();
-  nlohmann::ordered_json passes = nlohmann::ordered_json::array(), views = nlohmann::ordered_json::array();
+  nlohmann::ordered_json passes = nlohmann::ordered_json::array(), panel = nlohmann::ordered_json::array();
   double total = 0.0;
   for (const gfx::PassTime& pass : timer.latest()) {
     passes.push_back({{"name", pass.name}, {"ms", pass.milliseconds}});
     total += pass.milliseconds;
   }
-  for (const render::OfferedView& view : world.renderer().offered_views()) views.push_back(view.name);
-  const nlohmann::ordered_json stats{
-      {"fps", fps},
-      {"refused", refused},  // why the latest frame drew nothing; empty when it drew
+  for (const PanelRow& row : kPanel) {
+    static constexpr const char* kControls[] = {"choice", "number", "flag", "flag"};
+    nlohmann::ordered_json json{{"option", row.option}, {"label", row.label}, {"control", kControls[static_cast<int>(row.control)]},
+                                {"value", row.value(world)}};
+    if (row.choices) json["choices"] = row.choices(world);
+    if (row.control == Control::Number) json["range"] = {row.min, row.max, row.step};
+    panel.push_back(std::move(json));
+  }
+  const render::FrameStats& stats = world.renderer().stats();
+  const nlohmann::ordered_json state{
+      {"fps", page.fps},
+      {"frame_ms", page.frame_ms},
+      {"refused", page.last_error},  // why the latest frame drew nothing; empty when it drew
       {"mode", world.mode()},
       {"lights", world.light_count()},
-      {"view", world.view()},
-      {"debug_view", world.registry().resource<RendererSettings>().debug_view},
       {"paused", world.registry().resource<LightAnimationSettings>().paused},
       {"timing", timer.method_name()},
       {"passes_ms", total},
       {"passes", passes},
-      {"views", views},
-      {"modes", world.modes()}};
-  return stats.dump();
+      {"counts",
+       {{"triangles", stats.triangles},
+        {"triangles_drawn", stats.triangles_drawn},
+        {"draw_calls", stats.draw_calls},
+        {"objects", stats.objects},
+        {"objects_drawn", stats.objects_drawn}}},
+      {"memory_bytes", page.memory_bytes},
+      {"camera", camera_line(world)},
+      {"args", page.args},
+      {"panel", panel}};
+  return state.dump();
 }
 
 void frame() {
   Page& page = *g_page;
+  if (!page.world) return;
   World& world = *page.world;
   const double now = emscripten_get_now() / 1000.0;
   int width = 0, height = 0;
@@ -96,11 +325,15 @@ void frame() {
     if (page.last_error != e.what()) show_error(e.what());
     page.last_error = e.what();
   }
+  // The first frame's time is what a newcomer waits for: the page shows it.
+  if (page.last_seconds == 0.0) EM_ASM({ atriumFirstFrame(); });
   page.last_seconds = now;
   ++page.frames_since_stats;
   if (now - page.stats_seconds >= 0.5) {
-    const double fps = page.frames_since_stats / (now - page.stats_seconds);
-    const std::string json = stats_json(world, fps, page.last_error);
+    page.fps = page.frames_since_stats / (now - page.stats_seconds);
+    page.frame_ms = 1000.0 / page.fps;
+    page.memory_bytes = gfx::estimated_gpu_memory_bytes();
+    const std::string json = state_json(page);
     EM_ASM({ atriumShowStats(UTF8ToString($0)); }, json.c_str());
     page.stats_seconds = now;
     page.frames_since_stats = 0;
@@ -128,11 +361,14 @@ const char* apply(Change change) {
   return g_page->reply.c_str();
 }
 
-// A value from the panel, parsed by the command line's own row for `option`
-// (--lights, --light-radius), so that it is refused with the URL's message.
-CliOptions parse_panel_value(const char* option, const char* value) {
-  const std::string_view args[] = {option, value};
-  return parse_cli(args);
+// The page's default arguments (web/shell.html's atriumDefaults: the built-in
+// scene in clustered-deferred at a size that fits the window).
+std::vector<std::string> page_defaults() {
+  // wasm32: a pointer is an int.
+  char* json = reinterpret_cast<char*>(EM_ASM_INT({ return stringToNewUTF8(JSON.stringify(atriumDefaults())); }));
+  std::vector<std::string> args = nlohmann::json::parse(json).get<std::vector<std::string>>();
+  std::free(json);
+  return args;
 }
 
 }  // namespace
@@ -140,34 +376,55 @@ CliOptions parse_panel_value(const char* option, const char* value) {
 
 extern "C" {
 
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_mode(const char* mode) {
-  return atrium::apply([&](atrium::World& world) { world.set_mode(mode); });
+EMSCRIPTEN_KEEPALIVE const char* atrium_state() {
+  atrium::g_page->reply = atrium::g_page->world ? atrium::state_json(*atrium::g_page) : "{}";
+  return atrium::g_page->reply.c_str();
 }
 
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_view(int view) {
-  return atrium::apply([&](atrium::World& world) { world.set_view(view); });
-}
-
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_lights(const char* count) {
-  return atrium::apply([&](atrium::World& world) { world.set_light_count(*atrium::parse_panel_value("--lights", count).lights); });
-}
-
-// "0" (or nothing): each light keeps its own radius.
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_radius(const char* radius) {
-  return atrium::apply([&](atrium::World& world) {
-    const std::string_view text(radius);
-    world.set_light_radius(text.empty() || text == "0" ? std::nullopt : atrium::parse_panel_value("--light-radius", radius).light_radius);
-  });
-}
-
-EMSCRIPTEN_KEEPALIVE const char* atrium_set_debug_view(const char* view) {
-  return atrium::apply([&](atrium::World& world) { world.registry().resource<atrium::RendererSettings>().debug_view = view; });
+// One panel row's option set to `value` ("on"/"off" for a check box).
+EMSCRIPTEN_KEEPALIVE const char* atrium_set(const char* option, const char* value) {
+  return atrium::apply([&](atrium::World&) { atrium::set_option(*atrium::g_page, option, value); });
 }
 
 EMSCRIPTEN_KEEPALIVE const char* atrium_set_paused(int paused) {
   return atrium::apply([&](atrium::World& world) {
     world.registry().resource<atrium::LightAnimationSettings>().paused = paused != 0;
   });
+}
+
+// Loads `scene` (the built-in scene, a scene file or a model in the page's
+// file system: fetched or dropped files) with the page's options, less the
+// view and camera of the scene before (a model with no lights of its own is
+// lit by the light count the page has); the old world runs on until the new
+// one has loaded, and stays if it fails.
+EMSCRIPTEN_KEEPALIVE const char* atrium_open_scene(const char* scene) {
+  atrium::Page& page = *atrium::g_page;
+  page.reply.clear();
+  try {
+    if (page.world) atrium::sync_args(page);
+    std::vector<std::string> args = page.args.empty() ? atrium::page_defaults() : page.args;
+    for (const char* option : {"--view", "--camera"}) args = atrium::without(std::move(args), option);
+    args[0] = scene;
+    const bool paused = page.world && page.world->registry().resource<atrium::LightAnimationSettings>().paused;
+    atrium::start_world(page, std::move(args));
+    page.world->registry().resource<atrium::LightAnimationSettings>().paused = paused;
+  } catch (const std::exception& e) {
+    page.reply = e.what();
+  }
+  return page.reply.c_str();
+}
+
+// The frame as the canvas shows it, as a PNG in the page's file system at
+// `path` (the page offers it as a download).
+EMSCRIPTEN_KEEPALIVE const char* atrium_screenshot(const char* path) {
+  return atrium::apply([&](atrium::World& world) { atrium::assets::write_png(path, world.renderer().read_output()); });
+}
+
+// The help lines of the keys the canvas takes.
+EMSCRIPTEN_KEEPALIVE const char* atrium_key_help() {
+  atrium::g_page->reply = atrium::demo_key_help() + atrium::key_help_line("F12", "screenshot (a PNG download)") +
+                          atrium::key_help_line("h", "key help");
+  return atrium::g_page->reply.c_str();
 }
 
 // Draws every mode once from the current view and writes each picture to
@@ -220,25 +477,28 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_bench_modes(int frames, int warmup) {
 int main(int argc, char** argv) {
   using namespace atrium;
   g_page = new Page();
+  std::vector<std::string> args(argv + 1, argv + argc);
   try {
-    const std::vector<std::string_view> args(argv + 1, argv + argc);
-    const CliOptions options = parse_cli(args);
+    const CliOptions options = parse_args(args);
     g_page->context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y, {.api = options.gl_api});
-    g_page->world = std::make_unique<World>(world_options(options));
-    World& world = *g_page->world;
-    world.registry().resource<RendererSettings>().present_to_window = true;
-    register_input(world.scheduler(), world.registry(), g_page->context->window());
-    register_fly_camera(world.scheduler());
-    register_light_animation(world.scheduler());
-    world.registry().set_resource<DemoRequests>();
-    std::printf("Atrium on %s (%s), %s, %u lights\n", g_page->context->info().api.c_str(),
-                g_page->context->info().renderer.c_str(), world.mode().c_str(), world.light_count());
+    start_world(*g_page, std::move(args));
   } catch (const std::exception& e) {
+    // A bad URL parameter: the message stays on the page, which runs its defaults.
     show_error(e.what());
-    EM_ASM({ atriumShowRefused(UTF8ToString($0)); }, e.what());
-    g_page->world.reset();
-    return kExitUsage;
+    try {
+      std::vector<std::string> defaults = page_defaults();
+      const CliOptions options = parse_args(defaults);
+      if (!g_page->context) g_page->context = gfx::WindowContext::create("Atrium", options.size.x, options.size.y, {.api = options.gl_api});
+      start_world(*g_page, std::move(defaults));
+    } catch (const std::exception& fallback) {
+      show_error(fallback.what());
+      EM_ASM({ atriumShowRefused(UTF8ToString($0)); }, fallback.what());
+      g_page->world.reset();
+      return kExitUsage;
+    }
   }
+  std::printf("Atrium on %s (%s), %s, %u lights\n", g_page->context->info().api.c_str(), g_page->context->info().renderer.c_str(),
+              g_page->world->mode().c_str(), g_page->world->light_count());
   g_page->stats_seconds = emscripten_get_now() / 1000.0;
   emscripten_set_main_loop(frame, 0, false);
   return kExitOk;

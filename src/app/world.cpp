@@ -157,27 +157,12 @@ void World::start(const WorldOptions& options) {
   registry_.set_resource<LightAnimationSettings>();
   auto& system_options = registry_.set_resource<SystemOptions>();
   for (const auto& [name, value] : scene_.system_options) system_options.set(name, value);
-  for (const auto& [name, value] : options.system_options) system_options.set(name, value);
   registry_.set_resource<render::FrameModules>();
   registry_.set_resource<render::MeshRenderer>(registry_.resource<render::GpuAssets>());
   light_radius_ = options.light_radius;
   spawn(registry_, scene_, light_radius_);
 
-  set_mode(options.mode.value_or(scene_.default_mode));
-  auto& settings = registry_.resource<RendererSettings>();
-  settings.shading = options.shading;
-  settings.debug_view = options.debug_view;
-  settings.technique_options = options.technique_options;
-  settings.technique_options.lighting_stage = options.lighting_stage.value_or(scene_lighting_stage(scene_));
-  if (const gfx::GlFeatures& gl = gfx::gl_features(); !gl.full_tier() && !settings.technique_options.compute_free) {
-    settings.technique_options.compute_free = true;
-    std::fprintf(stderr, "note: %s has %s: running on the compute-free tier\n", gl.api_name().c_str(),
-                 gl.missing_for_full_tier().c_str());
-  }
-  settings.frustum_culling = options.frustum_culling;
-  settings.occlusion_culling = options.occlusion_culling;
-  settings.culling_device = options.culling_device;
-  settings.shadows = options.shadows;
+  apply_settings(options);
   set_view(options.view);
 
   register_bounds(scheduler_);
@@ -187,6 +172,29 @@ void World::start(const WorldOptions& options) {
   render::register_bloom(registry_);
   render::register_light_buffer(scheduler_);
   render::register_mesh_renderer(scheduler_);
+}
+
+void World::apply_settings(const WorldOptions& options) {
+  set_mode(options.mode.value_or(scene_.default_mode));
+  auto& settings = registry_.resource<RendererSettings>();
+  settings.shading = options.shading;
+  settings.debug_view = options.debug_view;
+  settings.technique_options = options.technique_options;
+  settings.technique_options.lighting_stage = options.lighting_stage.value_or(scene_lighting_stage(scene_));
+  if (const gfx::GlFeatures& gl = gfx::gl_features(); !gl.full_tier() && !settings.technique_options.compute_free) {
+    settings.technique_options.compute_free = true;
+    if (!compute_free_noted_) {
+      std::fprintf(stderr, "note: %s has %s: running on the compute-free tier\n", gl.api_name().c_str(),
+                   gl.missing_for_full_tier().c_str());
+      compute_free_noted_ = true;
+    }
+  }
+  settings.frustum_culling = options.frustum_culling;
+  settings.occlusion_culling = options.occlusion_culling;
+  settings.culling_device = options.culling_device;
+  settings.shadows = options.shadows;
+  auto& system_options = registry_.resource<SystemOptions>();
+  for (const auto& [name, value] : options.system_options) system_options.set(name, value);
 }
 
 void World::frame(double delta_seconds) { scheduler_.run_frame(registry_, delta_seconds); }

@@ -73,6 +73,11 @@ class World {
   // Moves the camera to stored view `index` (1-based). Throws InputError.
   void set_view(int index);
   void set_mode(const std::string& mode);
+  // The settings a running world can change without loading its scene again:
+  // mode, shading, debug view, technique options, culling, shadows and the
+  // options of systems (what the page's panel sets; the scene, lights, view,
+  // size and camera have calls of their own).
+  void apply_settings(const WorldOptions& options);
   void set_size(glm::ivec2 size);
   // Replaces the light entities with the scene's first `count` lights
   // (assets::resize_lights: generated lights fill up, growing keeps the rest).
@@ -81,6 +86,7 @@ class World {
   // Respawns the lights with one radius for all (WorldOptions::light_radius) or
   // their own (nullopt).
   void set_light_radius(std::optional<float> radius);
+  [[nodiscard]] std::optional<float> light_radius() const { return light_radius_; }
   // Recompiles every shader; a failing program keeps its old version and its
   // error comes back (one string per failing program).
   std::vector<std::string> reload_shaders();
@@ -109,6 +115,7 @@ class World {
   std::optional<float> light_radius_;
   assets::LoadReport report_;
   double upload_seconds_ = 0.0;
+  bool compute_free_noted_ = false;
 
   void start(const WorldOptions& options);
 };

@@ -3,10 +3,15 @@
 build-web/site/atrium.html from a server on 127.0.0.1, every mode's picture
 comes back from the page (?capture: the page POSTs them with every error it
 saw), and each is compared with the native build's compute-free render of the
-same options (atrium render --no-compute) by PSNR. The canvas must show the
-frame's aspect (a frame wider than the window scaled down to fit), and a bad
-URL parameter must show the command line's own one-line message on the page,
-where the frame rate would be.
+same options (atrium render --no-compute) by PSNR; Sponza's files are fetched
+by the page when asked for, not packaged with it. The canvas must show the
+frame's aspect in three window sizes, a bad URL parameter must leave a working
+page with the command line's own one-line message shown, and a scripted check
+(tests/web/checks/page.js) drives the page as a user: panel values refused
+with the URL's words, a light count too slow for this renderer refused until
+asked again, a refused view shown as refused, taps of t at one frame a second
+acting once each, holds of w moving for their own length, and a dropped .glb
+drawn as the native build draws it.
 
 usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--out DIR]
 """
@@ -78,6 +83,64 @@ def compare(args, port, results, tag, page_scene, native_scene, options):
     return failures
 
 
+def check_page(args, port, results, url_message):
+    """tests/web/checks/page.js: the page driven as a user drives it."""
+    result, console = open_page(port, f"check=page&size={SIZE}&lights={LIGHTS}&pause=1", results, timeout=300)
+    failures = [f"page check: {error}" for error in result["errors"] if error.startswith("check failed")]
+    if console:
+        failures.append(f"page check: console errors {console}")
+    print(f"page check: first frame after {result.get('first_frame_ms', 0) / 1000:.1f} s")
+    if result.get("panel_negative_lights") != url_message:
+        failures.append(f"the panel refused lights -3 with {result.get('panel_negative_lights')!r}, the URL with {url_message!r}")
+    slow = result.get("slow_lights", "")
+    print(f"page check: lights 1048576 -> {slow!r}")
+    if "a frame would take about" not in slow or result.get("lights_after_slow") != result.get("lights_before"):
+        failures.append(f"1048576 lights were not refused as too slow: {slow!r}, lights {result.get('lights_after_slow')}")
+    if not result.get("refused_status", "").startswith("refused: ") or result.get("refused_list") != "heatmap":
+        failures.append(f"a refused view shows {result.get('refused_status')!r} with the list at {result.get('refused_list')!r}")
+    modes = result.get("modes", [])
+    if result.get("mode_before") in modes:
+        i = modes.index(result["mode_before"])
+        taps = [result.get("mode_after_one_tap"), result.get("mode_after_two_taps")]
+        print(f"page check: taps of t at ~1 fps: {result['mode_before']} -> {taps[0]} -> {taps[1]}")
+        if taps != [modes[(i + 1) % len(modes)], modes[(i + 2) % len(modes)]]:
+            failures.append(f"two taps of t went {result['mode_before']} -> {taps}, not one mode each")
+    else:
+        failures.append(f"page check: mode {result.get('mode_before')!r} is not among {modes}")
+    holds = result.get("holds", [])
+    for hold in holds:
+        print(f"page check: w held {hold['seconds']:.2f} s at ~1 fps moved {hold['metres']:.3f} m")
+    if len(holds) == 2 and holds[1]["metres"] > 0:
+        moved, held = holds[0]["metres"] / holds[1]["metres"], holds[0]["seconds"] / holds[1]["seconds"]
+        if abs(moved / held - 1.0) > 0.1:
+            failures.append(f"holds of w moved {moved:.2f} times as far for {held:.2f} times as long")
+    else:
+        failures.append(f"holds of w: {holds}")
+    if args.sponza and os.path.exists(args.sponza):
+        print(f"page check: Sponza from the picker: {result.get('sponza_progress_shown')!r}, then {result.get('sponza_status')!r}")
+        if not result.get("sponza_progress_shown") or not result.get("sponza_picker_free"):
+            failures.append("choosing Sponza showed no progress bar, or blocked the picker")
+        if " fps, " not in result.get("sponza_status", ""):
+            failures.append(f"after choosing Sponza the page says {result.get('sponza_status')!r}")
+    images = result.get("images", {})
+    if "dropped.png" not in images:
+        failures.append(f"the dropped .glb gave no picture ({result.get('dropped_status')!r})")
+    else:
+        page_png = os.path.join(args.out, "web-dropped-blender-colors.png")
+        native_png = os.path.join(args.out, "native-dropped-blender-colors.png")
+        with open(page_png, "wb") as f:
+            f.write(base64.b64decode(images["dropped.png"]))
+        dropped = result["dropped_args"]
+        model = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "gltf-tools", "blender-colors.glb")
+        mode = dropped[dropped.index("--mode") + 1]
+        native_render(args.atrium, model, mode, [], native_png)
+        psnr = subprocess.run([args.psnr, native_png, page_png], check=True, capture_output=True, text=True).stdout.strip()
+        print(f"dropped blender-colors.glb ({mode}): {psnr} dB against the native build")
+        if float(psnr) < MIN_PSNR:
+            failures.append(f"the dropped .glb: {psnr} dB against the native build, under {MIN_PSNR}")
+    return failures
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--site", required=True)
@@ -90,7 +153,9 @@ def main():
         sys.exit(f"browser_test: {args.site}/atrium.html is missing: build the page with scripts/build-web.sh")
     os.makedirs(args.out, exist_ok=True)
     results = queue.Queue()
-    server = serve(args.site, results)
+    here = os.path.dirname(os.path.abspath(__file__))
+    server = serve(args.site, results, {"/checks/": os.path.join(here, "checks"),
+                                        "/testdata/": os.path.join(here, "..", "data")})
     port = server.server_address[1]
     failures = compare(args, port, results, "builtin", "atrium", "atrium", ["--view", "1"])
     failures += compare(args, port, results, "builtin-gallery", "atrium", "atrium", ["--view", "3"])
@@ -106,13 +171,27 @@ def main():
     if result["canvas"]["shown_width"] > result["canvas"]["window_width"]:
         failures.append(f"wide: the canvas is {result['canvas']['shown_width']:.0f} pixels wide in a "
                         f"{result['canvas']['window_width']}-pixel window")
+    # The page's own size in three windows (a narrow one puts the panel below):
+    # the frame's aspect within a pixel, and the first frame's time.
+    for width, height in ((480, 800), (1024, 700), (1600, 900)):
+        tag = f"window {width}x{height}"
+        result, _ = open_page(port, f"layout&pause=1", results, window=(width, height))
+        canvas = result["canvas"]
+        failures += check_aspect(tag, canvas)
+        if abs(canvas["shown_height"] - canvas["shown_width"] * canvas["height"] / canvas["width"]) > 1.0:
+            failures.append(f"{tag}: shown {canvas['shown_width']:.1f}x{canvas['shown_height']:.1f}, not the frame's aspect within a pixel")
+        if canvas["shown_width"] > canvas["window_width"]:
+            failures.append(f"{tag}: the canvas is wider than the window")
+        print(f"{tag}: first frame after {result['first_frame_ms'] / 1000:.1f} s ({result['status']})")
 
-    result, _ = open_page(port, "capture&mode=deferred-ish", results)
-    expected = "unknown mode 'deferred-ish' (modes: forward"
-    if not any(error.startswith(expected) for error in result["errors"]):
-        failures.append(f"a bad URL parameter showed {result['errors']}, not the line starting {expected!r}")
-    if not result["status"].startswith("not started: " + expected):
-        failures.append(f"after a bad URL parameter the panel says {result['status']!r}, not that the page did not start")
+    # A bad URL parameter: the message shown, the page running its defaults.
+    result, _ = open_page(port, "layout&lights=-3", results)
+    url_message = "--lights expects a whole number from 0 to 1048576, got '-3'"
+    if url_message not in result["errors"]:
+        failures.append(f"a bad URL parameter showed {result['errors']}, not {url_message!r}")
+    if " fps, clustered-deferred, " not in result["status"]:
+        failures.append(f"after a bad URL parameter the page says {result['status']!r}, not that it runs its defaults")
+    failures += check_page(args, port, results, url_message)
     server.shutdown()
     for failure in failures:
         print("FAILED:", failure)
