@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "support/build_kind.hpp"
 #include "assets/gltf_import.hpp"
 #include "assets/model_import.hpp"
 #include "assets/scene_file.hpp"
@@ -73,7 +74,8 @@ TEST(FuzzRegressions, ModelFilesImportOrAreRefused) {
     }
   }
   std::filesystem::remove_all(folder);
-  EXPECT_GE(imported, 3u);
+  // The browser build has no libassimp: it refuses every one, naming the file.
+  EXPECT_GE(imported, atrium::testing::kBrowserBuild ? 0u : 3u);
   EXPECT_GE(refused, 5u);
 }
 
