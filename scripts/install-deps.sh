@@ -13,7 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool python3 python3-matplotlib python3-numpy
   clang libclang-rt-14-dev
-  emscripten chromium
+  emscripten nodejs googletest chromium
 )
 mesa_packages=(libgl1-mesa-dri libegl-mesa0 libglx-mesa0 libgbm1)
 
