@@ -11,9 +11,9 @@ page with the command line's own one-line message shown, and a scripted check
 with the URL's words, a light count too slow for this renderer refused until
 asked again, a refused view shown as refused, taps of t at one frame a second
 acting once each, holds of w moving for their own length, and a dropped .glb
-drawn as the native build draws it.
+and a .gltf dropped with its files drawn as the native build draws them.
 
-usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--out DIR]
+usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--testdata DIR] [--out DIR]
 """
 import argparse
 import base64
@@ -123,21 +123,26 @@ def check_page(args, port, results, url_message):
         if " fps, " not in result.get("sponza_status", ""):
             failures.append(f"after choosing Sponza the page says {result.get('sponza_status')!r}")
     images = result.get("images", {})
-    if "dropped.png" not in images:
-        failures.append(f"the dropped .glb gave no picture ({result.get('dropped_status')!r})")
-    else:
-        page_png = os.path.join(args.out, "web-dropped-blender-colors.png")
-        native_png = os.path.join(args.out, "native-dropped-blender-colors.png")
+    here = os.path.dirname(os.path.abspath(__file__))
+    dropped = [("dropped_glb", os.path.join(here, "..", "data", "gltf-tools", "blender-colors.glb"))]
+    if args.testdata and os.path.isdir(args.testdata):
+        dropped.append(("dropped_gltf", os.path.join(args.testdata, "gltf", "tinygltf", "Cube", "Cube.gltf")))
+    for key, model in dropped:
+        name = os.path.basename(model)
+        if name + ".png" not in images:
+            failures.append(f"the dropped {name} gave no picture ({result.get(key)!r})")
+            continue
+        page_png = os.path.join(args.out, f"web-dropped-{name}.png")
+        native_png = os.path.join(args.out, f"native-dropped-{name}.png")
         with open(page_png, "wb") as f:
-            f.write(base64.b64decode(images["dropped.png"]))
-        dropped = result["dropped_args"]
-        model = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "data", "gltf-tools", "blender-colors.glb")
-        mode = dropped[dropped.index("--mode") + 1]
+            f.write(base64.b64decode(images[name + ".png"]))
+        page_args = result[key]["args"]
+        mode = page_args[page_args.index("--mode") + 1]
         native_render(args.atrium, model, mode, [], native_png)
         psnr = subprocess.run([args.psnr, native_png, page_png], check=True, capture_output=True, text=True).stdout.strip()
-        print(f"dropped blender-colors.glb ({mode}): {psnr} dB against the native build")
+        print(f"dropped {name} ({mode}): {psnr} dB against the native build")
         if float(psnr) < MIN_PSNR:
-            failures.append(f"the dropped .glb: {psnr} dB against the native build, under {MIN_PSNR}")
+            failures.append(f"the dropped {name}: {psnr} dB against the native build, under {MIN_PSNR}")
     return failures
 
 
@@ -147,6 +152,7 @@ def main():
     parser.add_argument("--atrium", required=True)
     parser.add_argument("--psnr", required=True)
     parser.add_argument("--sponza")
+    parser.add_argument("--testdata", help="../shared/testdata: files other tools wrote, which the page may fetch")
     parser.add_argument("--out", default=tempfile.mkdtemp(prefix="atrium-web-"))
     args = parser.parse_args()
     if not os.path.exists(os.path.join(args.site, "atrium.html")):
@@ -154,8 +160,10 @@ def main():
     os.makedirs(args.out, exist_ok=True)
     results = queue.Queue()
     here = os.path.dirname(os.path.abspath(__file__))
-    server = serve(args.site, results, {"/checks/": os.path.join(here, "checks"),
-                                        "/testdata/": os.path.join(here, "..", "data")})
+    mounts = {"/checks/": os.path.join(here, "checks"), "/testdata/": os.path.join(here, "..", "data")}
+    if args.testdata:
+        mounts["/shared/"] = args.testdata
+    server = serve(args.site, results, mounts)
     port = server.server_address[1]
     failures = compare(args, port, results, "builtin", "atrium", "atrium", ["--view", "1"])
     failures += compare(args, port, results, "builtin-gallery", "atrium", "atrium", ["--view", "3"])

@@ -97,17 +97,28 @@
       result.sponza_status = $("fps").textContent;
     }
 
-    // A .glb dropped onto the page is drawn (web/shell.html's drop handler).
-    const bytes = await (await fetch("testdata/gltf-tools/blender-colors.glb")).arrayBuffer();
-    const transfer = new DataTransfer();
-    transfer.items.add(new File([bytes], "blender-colors.glb"));
-    document.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer, bubbles: true }));
-    while (state().args[0] !== "/dropped/blender-colors.glb") await sleep(100);
-    await frames(3);
-    result.dropped_status = $("fps").textContent;
-    result.dropped_args = state().args;
-    const reply = Module.ccall("atrium_screenshot", "string", ["string"], ["/shots/dropped.png"].map((p) => (FS.mkdirTree("/shots"), p)));
-    if (reply) errors.push(reply);
+    // Files dropped onto the page are drawn (web/shell.html's drop handler):
+    // a .gltf with its .bin and textures, then a .glb.
+    FS.mkdirTree("/shots");
+    const drop = async (urls, model) => {
+      const transfer = new DataTransfer();
+      for (const url of urls) {
+        const bytes = await (await fetch(url)).arrayBuffer();
+        transfer.items.add(new File([bytes], url.substring(url.lastIndexOf("/") + 1)));
+      }
+      document.dispatchEvent(new DragEvent("drop", { dataTransfer: transfer, bubbles: true }));
+      while (state().args[0] !== "/dropped/" + model) await sleep(100);
+      await frames(3);
+      const reply = Module.ccall("atrium_screenshot", "string", ["string"], ["/shots/" + model + ".png"]);
+      if (reply) errors.push(reply);
+      return { status: $("fps").textContent, args: state().args };
+    };
+    if ((await fetch("shared/gltf/tinygltf/Cube/Cube.gltf")).ok) {
+      const cube = "shared/gltf/tinygltf/Cube/";
+      result.dropped_gltf = await drop(["Cube.gltf", "Cube.bin", "Cube_BaseColor.png", "Cube_MetallicRoughness.png"].map((f) => cube + f),
+                                       "Cube.gltf");
+    }
+    result.dropped_glb = await drop(["testdata/gltf-tools/blender-colors.glb"], "blender-colors.glb");
     result.images = pngs("/shots");
   } catch (e) {
     errors.push("check failed: " + (e.stack || e));
