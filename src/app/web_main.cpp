@@ -123,9 +123,6 @@ struct PanelRow {
 };
 
 RendererSettings& settings(World& world) { return world.registry().resource<RendererSettings>(); }
-std::string system_value(World& world, const char* name, double fallback) {
-  return number_text(world.registry().resource<SystemOptions>().value(name, fallback));
-}
 template <std::size_t N>
 std::vector<std::string> names(const std::array<std::string_view, N>& table) {
   return {table.begin(), table.end()};
@@ -169,17 +166,39 @@ const std::array kPanel{
              [](World& w) { return std::string(kZSlicingNames[static_cast<std::size_t>(settings(w).technique_options.z_slicing)]); }},
     PanelRow{"--split-lighting", "diffuse and specular apart", Control::Flag, 0, 0, 0, nullptr,
              [](World& w) { return std::string(settings(w).technique_options.split_lighting ? "on" : "off"); }},
-    PanelRow{"--fireflies", "fireflies", Control::Number, 0, 4096, 1, nullptr, [](World& w) { return system_value(w, "fireflies", 0.0); }},
-    PanelRow{"--bloom", "bloom (0: off)", Control::Number, 0, 1, 0.01, nullptr, [](World& w) { return system_value(w, "bloom", 0.0); }},
-    PanelRow{"--bloom-radius", "bloom radius (of the height)", Control::Number, 0.02, 1, 0.01, nullptr,
-             [](World& w) { return system_value(w, "bloom-radius", 0.2); }},
 };
 
-const PanelRow* panel_row(std::string_view option) {
+// A control as the page shows it now: a row of kPanel evaluated on the
+// world, or a slider of an optional system (components/system_options.hpp:
+// each system declares its own, as the overlay shows them; its command-line
+// option is its name with two dashes).
+struct PanelControl {
+  std::string option, label;
+  Control control;
+  double min = 0.0, max = 0.0, step = 0.0;
+  std::vector<std::string> choices;
+  std::string value;
+};
+
+std::vector<PanelControl> panel(World& world) {
+  std::vector<PanelControl> controls;
   for (const PanelRow& row : kPanel) {
-    if (row.option == option) return &row;
+    controls.push_back({std::string(row.option), std::string(row.label), row.control, row.min, row.max, row.step,
+                        row.choices ? row.choices(world) : std::vector<std::string>{}, row.value(world)});
   }
-  return nullptr;
+  for (const auto& [name, option] : world.registry().resource<SystemOptions>().options) {
+    if (!option.declared) continue;
+    controls.push_back({"--" + name, option.label, Control::Number, option.min, option.max,
+                        option.step == SystemOption::Step::Whole ? 1.0 : 0.01, {}, number_text(option.value)});
+  }
+  return controls;
+}
+
+std::optional<PanelControl> panel_control(World& world, std::string_view option) {
+  for (PanelControl& control : panel(world)) {
+    if (control.option == option) return std::move(control);
+  }
+  return std::nullopt;
 }
 
 // The keys change mode, view, lights and debug view without the panel: the
@@ -187,7 +206,7 @@ const PanelRow* panel_row(std::string_view option) {
 void sync_args(Page& page) {
   World& world = *page.world;
   for (const char* option : {"--mode", "--view", "--lights", "--debug-view"}) {
-    const std::string value = panel_row(option)->value(world);
+    const std::string value = panel_control(world, option)->value;
     page.args = value.empty() ? without(page.args, option) : with(page.args, option, value);
   }
 }
@@ -218,7 +237,7 @@ void refuse_slow_lights(Page& page, std::uint32_t lights, const std::string& cha
 // changed. Throws UsageError or InputError with the one-line message.
 void set_option(Page& page, const std::string& option, const std::string& value) {
   World& world = *page.world;
-  const PanelRow* row = panel_row(option);
+  const std::optional<PanelControl> row = panel_control(world, option);
   if (!row) throw InputError("the panel has no option " + option);
   sync_args(page);
   std::vector<std::string> args = without(page.args, option);
@@ -269,19 +288,19 @@ std::string camera_line(World& world) {
 std::string state_json(Page& page) {
   World& world = *page.world;
   const gfx::PassTimer& timer = world.renderer().timer();
-  nlohmann::ordered_json passes = nlohmann::ordered_json::array(), panel = nlohmann::ordered_json::array();
+  nlohmann::ordered_json passes = nlohmann::ordered_json::array(), controls = nlohmann::ordered_json::array();
   double total = 0.0;
   for (const gfx::PassTime& pass : timer.latest()) {
     passes.push_back({{"name", pass.name}, {"ms", pass.milliseconds}});
     total += pass.milliseconds;
   }
-  for (const PanelRow& row : kPanel) {
+  for (const PanelControl& control : panel(world)) {
     static constexpr const char* kControls[] = {"choice", "number", "flag", "flag"};
-    nlohmann::ordered_json json{{"option", row.option}, {"label", row.label}, {"control", kControls[static_cast<int>(row.control)]},
-                                {"value", row.value(world)}};
-    if (row.choices) json["choices"] = row.choices(world);
-    if (row.control == Control::Number) json["range"] = {row.min, row.max, row.step};
-    panel.push_back(std::move(json));
+    nlohmann::ordered_json json{{"option", control.option}, {"label", control.label}, {"control", kControls[static_cast<int>(control.control)]},
+                                {"value", control.value}};
+    if (control.control == Control::Choice) json["choices"] = control.choices;
+    if (control.control == Control::Number) json["range"] = {control.min, control.max, control.step};
+    controls.push_back(std::move(json));
   }
   const render::FrameStats& stats = world.renderer().stats();
   const nlohmann::ordered_json state{
@@ -303,7 +322,7 @@ std::string state_json(Page& page) {
       {"memory_bytes", page.memory_bytes},
       {"camera", camera_line(world)},
       {"args", page.args},
-      {"panel", panel}};
+      {"panel", controls}};
   return state.dump();
 }
 

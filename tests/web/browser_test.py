@@ -96,6 +96,9 @@ def check_page(args, port, results, url_message):
     print(f"page check: lights 1048576 -> {slow!r}")
     if "a frame would take about" not in slow or result.get("lights_after_slow") != result.get("lights_before"):
         failures.append(f"1048576 lights were not refused as too slow: {slow!r}, lights {result.get('lights_after_slow')}")
+    fireflies = (result.get("fireflies_bad"), result.get("fireflies_reply"), result.get("fireflies_value"))
+    if fireflies != ("--fireflies expects a whole number from 0 to 4096, got '-1'", "", "8"):
+        failures.append(f"the panel's fireflies row: refused -1 with {fireflies[0]!r}, set 8 with {fireflies[1]!r}, shows {fireflies[2]!r}")
     if not result.get("refused_status", "").startswith("refused: ") or result.get("refused_list") != "heatmap":
         failures.append(f"a refused view shows {result.get('refused_status')!r} with the list at {result.get('refused_list')!r}")
     modes = result.get("modes", [])

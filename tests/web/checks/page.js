@@ -32,6 +32,12 @@
     result.lights_after_slow = state().lights;
     result.lights_before = lights;
 
+    // An optional system's option (declared by the system, not listed by the page).
+    result.fireflies_bad = setOption("--fireflies", "-1");
+    result.fireflies_reply = setOption("--fireflies", "8");
+    result.fireflies_value = state().panel.filter((row) => row.option === "--fireflies").map((row) => row.value)[0];
+    setOption("--fireflies", "0");
+
     // A refused view shows as refused: no frame rate, the list showing what was asked.
     setOption("--debug-view", "heatmap");
     await frames(3);
