@@ -169,7 +169,6 @@ def main():
     server = serve(args.site, results, mounts)
     port = server.server_address[1]
     failures = compare(args, port, results, "builtin", "atrium", "atrium", ["--view", "1"])
-    failures += compare(args, port, results, "builtin-gallery", "atrium", "atrium", ["--view", "3"])
     if args.sponza and os.path.exists(args.sponza):
         # The nave of scenes/sponza.json, on the model file itself (the page
         # packages it where that scene file looks).
