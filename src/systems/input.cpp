@@ -13,7 +13,7 @@ void apply_input_events(InputState& state, std::span<const InputEvent> events, d
   state.scroll = 0.0;
   // A key held from before this frame's span counts from its start; one
   // pressed within it, from its press.
-  const double since = state.seconds;
+  const double since = std::min(state.seconds, now);  // a clock set back starts afresh
   std::array<double, 512> down_from{};
   for (std::size_t key = 0; key < state.held.size(); ++key) {
     state.down_seconds[key] = 0.0;
