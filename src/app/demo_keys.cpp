@@ -70,17 +70,23 @@ constexpr std::array kDemoKeys{
     // that users can author views by flying to them.
     DemoKey{{GLFW_KEY_C, 0}, "c", "the camera as a scene-file view line and a --camera value",
             [](World& world, bool) {
-              world.registry().view<Transform, Camera, CameraAngles>().each(
-                  [](const Transform& t, const Camera&, const CameraAngles& angles) {
-                    const assets::NamedView here{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
-                    say("camera: --camera " + assets::camera_argument(here) + "  view: " + assets::view_json(here));
-                  });
+              if (const auto here = camera_here(world)) {
+                say("camera: --camera " + assets::camera_argument(*here) + "  view: " + assets::view_json(*here));
+              }
             }},
 };
 
 }  // namespace
 
 std::span<const DemoKey> demo_keys() { return kDemoKeys; }
+
+std::optional<assets::NamedView> camera_here(World& world) {
+  std::optional<assets::NamedView> here;
+  world.registry().view<Transform, Camera, CameraAngles>().each([&](const Transform& t, const Camera&, const CameraAngles& angles) {
+    here = assets::NamedView{"here", t.position, angles.yaw_degrees, angles.pitch_degrees};
+  });
+  return here;
+}
 
 std::string key_help_line(std::string_view keys, std::string_view help) {
   std::string line(keys);

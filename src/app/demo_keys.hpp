@@ -7,10 +7,12 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <span>
 #include <string>
 
 #include "app/world.hpp"
+#include "assets/scene_file.hpp"
 
 namespace atrium {
 
@@ -30,6 +32,10 @@ struct DemoKey {
 [[nodiscard]] const std::string& window_key_help();
 // One help line, aligned as demo_key_help's.
 [[nodiscard]] std::string key_help_line(std::string_view keys, std::string_view help);
+
+// Where the camera is, as a view named "here" (what `c` prints); none
+// without a camera.
+[[nodiscard]] std::optional<assets::NamedView> camera_here(World& world);
 
 // Prints one line on standard output (the terminal, or the page's console).
 void say(const std::string& line);

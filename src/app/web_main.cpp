@@ -120,6 +120,9 @@ struct PanelRow {
   double min, max, step;                             // Number rows
   std::vector<std::string> (*choices)(World& world);  // Choice rows
   std::string (*value)(World& world);
+  // The value (or an empty one) that means the option is left out: no debug
+  // view, each light's own radius. nullptr: every value is given to the option.
+  const char* absent = nullptr;
 };
 
 RendererSettings& settings(World& world) { return world.registry().resource<RendererSettings>(); }
@@ -139,7 +142,7 @@ const std::array kPanel{
              [](World& w) { return std::to_string(w.view()); }},
     PanelRow{"--lights", "lights", Control::Number, 0, kMaxLights, 1, nullptr, [](World& w) { return std::to_string(w.light_count()); }},
     PanelRow{"--light-radius", "light radius (m; 0: each light's own)", Control::Number, 0, 1000, 0.5, nullptr,
-             [](World& w) { return number_text(w.light_radius().value_or(0.0f)); }},
+             [](World& w) { return number_text(w.light_radius().value_or(0.0f)); }, "0"},
     PanelRow{"--debug-view", "debug view", Control::Choice, 0, 0, 0,
              [](World& w) {
                std::vector<std::string> views{""};
@@ -148,7 +151,7 @@ const std::array kPanel{
                if (std::find(views.begin(), views.end(), settings(w).debug_view) == views.end()) views.push_back(settings(w).debug_view);
                return views;
              },
-             [](World& w) { return settings(w).debug_view; }},
+             [](World& w) { return settings(w).debug_view; }, ""},
     PanelRow{"--shading", "shading", Control::Choice, 0, 0, 0, [](World&) { return names(lighting::kShadingModels); },
              [](World& w) { return settings(w).shading; }},
     PanelRow{"--msaa", "MSAA samples", Control::Choice, 0, 0, 0,
@@ -178,13 +181,16 @@ struct PanelControl {
   double min = 0.0, max = 0.0, step = 0.0;
   std::vector<std::string> choices;
   std::string value;
+  const char* absent = nullptr;
+
+  [[nodiscard]] bool leaves_out(const std::string& given) const { return absent && (given.empty() || given == absent); }
 };
 
 std::vector<PanelControl> panel(World& world) {
   std::vector<PanelControl> controls;
   for (const PanelRow& row : kPanel) {
     controls.push_back({std::string(row.option), std::string(row.label), row.control, row.min, row.max, row.step,
-                        row.choices ? row.choices(world) : std::vector<std::string>{}, row.value(world)});
+                        row.choices ? row.choices(world) : std::vector<std::string>{}, row.value(world), row.absent});
   }
   for (const auto& [name, option] : world.registry().resource<SystemOptions>().options) {
     if (!option.declared) continue;
@@ -194,20 +200,20 @@ std::vector<PanelControl> panel(World& world) {
   return controls;
 }
 
-std::optional<PanelControl> panel_control(World& world, std::string_view option) {
-  for (PanelControl& control : panel(world)) {
-    if (control.option == option) return std::move(control);
+const PanelControl* find_control(const std::vector<PanelControl>& controls, std::string_view option) {
+  for (const PanelControl& control : controls) {
+    if (control.option == option) return &control;
   }
-  return std::nullopt;
+  return nullptr;
 }
 
 // The keys change mode, view, lights and debug view without the panel: the
-// arguments take them from the world before a change is made to them.
-void sync_args(Page& page) {
-  World& world = *page.world;
+// arguments take them from the world (`controls`, the panel now) before a
+// change is made to them.
+void sync_args(Page& page, const std::vector<PanelControl>& controls) {
   for (const char* option : {"--mode", "--view", "--lights", "--debug-view"}) {
-    const std::string value = panel_control(world, option)->value;
-    page.args = value.empty() ? without(page.args, option) : with(page.args, option, value);
+    const PanelControl& control = *find_control(controls, option);
+    page.args = control.leaves_out(control.value) ? without(page.args, option) : with(page.args, option, control.value);
   }
 }
 
@@ -237,15 +243,16 @@ void refuse_slow_lights(Page& page, std::uint32_t lights, const std::string& cha
 // changed. Throws UsageError or InputError with the one-line message.
 void set_option(Page& page, const std::string& option, const std::string& value) {
   World& world = *page.world;
-  const std::optional<PanelControl> row = panel_control(world, option);
+  const std::vector<PanelControl> controls = panel(world);
+  const PanelControl* row = find_control(controls, option);
   if (!row) throw InputError("the panel has no option " + option);
-  sync_args(page);
+  sync_args(page, controls);
   std::vector<std::string> args = without(page.args, option);
   const bool flag = row->control == Control::Flag || row->control == Control::FlagOff;
   if (flag) {
     if (value != "on" && value != "off") throw InputError(option + " expects on or off, got '" + value + "'");
     if ((value == "on") == (row->control == Control::Flag)) args.push_back(option);
-  } else if (!(value.empty() && (option == "--debug-view")) && !((value.empty() || value == "0") && option == "--light-radius")) {
+  } else if (!row->leaves_out(value)) {
     args = with(args, option, value);
   }
   const WorldOptions before = world_options(parse_args(page.args));
@@ -275,14 +282,6 @@ void start_world(Page& page, std::vector<std::string> args) {
   page.frame_ms = 0.0;
 }
 
-std::string camera_line(World& world) {
-  std::string line;
-  world.registry().view<Transform, Camera, CameraAngles>().each([&](const Transform& t, const Camera&, const CameraAngles& angles) {
-    line = assets::camera_argument({"here", t.position, angles.yaw_degrees, angles.pitch_degrees});
-  });
-  return line;
-}
-
 // What the panel shows, as JSON: fps, the latest frame's pass times and counts,
 // memory, the camera, and each panel row with its choices and value now.
 std::string state_json(Page& page) {
@@ -303,6 +302,7 @@ std::string state_json(Page& page) {
     controls.push_back(std::move(json));
   }
   const render::FrameStats& stats = world.renderer().stats();
+  const std::optional<assets::NamedView> here = camera_here(world);
   const nlohmann::ordered_json state{
       {"fps", page.fps},
       {"frame_ms", page.frame_ms},
@@ -320,7 +320,7 @@ std::string state_json(Page& page) {
         {"objects", stats.objects},
         {"objects_drawn", stats.objects_drawn}}},
       {"memory_bytes", page.memory_bytes},
-      {"camera", camera_line(world)},
+      {"camera", here ? assets::camera_argument(*here) : std::string()},
       {"args", page.args},
       {"panel", controls}};
   return state.dump();
@@ -420,7 +420,7 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_open_scene(const char* scene) {
   atrium::Page& page = *atrium::g_page;
   page.reply.clear();
   try {
-    if (page.world) atrium::sync_args(page);
+    if (page.world) atrium::sync_args(page, atrium::panel(*page.world));
     std::vector<std::string> args = page.args.empty() ? atrium::page_defaults() : page.args;
     for (const char* option : {"--view", "--camera"}) args = atrium::without(std::move(args), option);
     args[0] = scene;
