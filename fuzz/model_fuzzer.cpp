@@ -1,7 +1,8 @@
-// libFuzzer target: the model files libassimp reads, through Atrium's own file
-// access (assets/assimp_file_access.hpp). Binary FBX when the input starts with
-// its magic, else OBJ; the same bytes are also written as the OBJ's material
-// library `input.mtl`, so an input that names it is parsed both ways. Any input
+// libFuzzer target: OBJ (tinyobjloader, compiled in) and FBX (libassimp,
+// through Atrium's own file access, assets/assimp_file_access.hpp). Binary FBX
+// when the input starts with its magic, else OBJ; the same bytes are also
+// written as the OBJ's material library `input.mtl`, so an input that names it
+// is parsed both ways. Any input
 // must import or be refused with ImportError; anything else is a bug.
 #include <cstring>
 

@@ -5,7 +5,6 @@
 #include <assimp/MemoryIOWrapper.h>
 
 #include "assets/fbx_sizes.hpp"
-#include "assets/mtl_check.hpp"
 #include "assets/file_lookup.hpp"
 
 namespace atrium::assets {
@@ -31,8 +30,7 @@ struct OwnedMemoryStream : OwnedBytes, Assimp::MemoryIOStream {
 AssimpFileAccess::AssimpFileAccess(fs::path model, std::size_t limit)
     : model_(std::move(model)),
       folder_(model_.parent_path().empty() ? fs::path(".") : model_.parent_path()),
-      limit_(limit),
-      is_obj_(lowercase_extension(model_) == ".obj") {}
+      limit_(limit) {}
 
 AssimpFileAccess::Access AssimpFileAccess::resolve(const std::string& asked) const {
   Access access{asked, {}, {}, {}};
@@ -74,8 +72,6 @@ Assimp::IOStream* AssimpFileAccess::Open(const char* file, const char* mode) {
   if (access.problem.empty()) {
     read = read_file_within(access.read, limit_);
     access.problem = read.problem.empty() ? fbx_array_size_problem(read.bytes, limit_) : read.problem;
-    // What an OBJ opens besides itself is a material library.
-    if (access.problem.empty() && is_obj_ && fs::path(access.asked) != model_) access.problem = mtl_texture_before_material_problem(read.bytes);
   }
   if (!access.problem.empty()) access.read.clear();
   const bool ok = access.problem.empty();
@@ -90,7 +86,6 @@ void AssimpFileAccess::Close(Assimp::IOStream* stream) { delete stream; }
 std::vector<std::string> AssimpFileAccess::warnings() const {
   std::vector<std::string> lines;
   std::vector<std::string> told;
-  const std::string stem = (folder_ / model_.stem()).string();
   for (std::size_t i = 0; i < accesses_.size(); ++i) {
     const Access& a = accesses_[i];
     if (fs::path(a.asked) == model_) continue;  // the model itself: a failure there refuses the file
@@ -102,9 +97,6 @@ std::vector<std::string> AssimpFileAccess::warnings() const {
       if (!a.how.empty()) lines.push_back("'" + name + "' " + a.how + "; " + a.read.lexically_relative(folder_).generic_string() + " is used");
       continue;
     }
-    // assimp's OBJ reader, missing the library a file names, tries
-    // <model>.mtl on its own: not a file the user wrote, so no word of it.
-    if (i > 0 && !accesses_[i - 1].problem.empty() && a.asked.starts_with(stem) && a.asked.size() == stem.size() + 4) continue;
     std::string line = "'" + name + "', which it names, cannot be read (" + a.problem + ")";
     if (i + 1 < accesses_.size() && accesses_[i + 1].problem.empty() && fs::path(accesses_[i + 1].asked) != model_) {
       line += "; '" + accesses_[i + 1].read.lexically_relative(folder_).generic_string() + "' is used instead";

@@ -1,5 +1,5 @@
 // libassimp's file access, Atrium's way: every file assimp opens (the model,
-// an OBJ's material library, the parts a format keeps beside the model) is
+// the parts a format keeps beside the model) is
 // found as texture paths are (assets/file_lookup.hpp), checked (a regular
 // file, within the load budget) and read whole into memory, so no handle stays
 // open and nothing assimp opens escapes the budget. What could not be opened
@@ -37,7 +37,7 @@ class AssimpFileAccess : public Assimp::IOSystem {
   [[nodiscard]] const std::vector<Access>& accesses() const { return accesses_; }
 
   // One line per file the model named that could not be read, and per file
-  // found elsewhere than its path says: "'x.mtl', which it names, cannot be
+  // found elsewhere than its path says: "'x.bin', which it names, cannot be
   // read (no such file); what it holds is left out".
   [[nodiscard]] std::vector<std::string> warnings() const;
 
@@ -47,7 +47,6 @@ class AssimpFileAccess : public Assimp::IOSystem {
 
   std::filesystem::path model_, folder_;
   std::size_t limit_;
-  bool is_obj_ = false;  // the model is an OBJ: the other files it opens are material libraries (assets/mtl_check.hpp)
   std::vector<Access> accesses_;
 };
 

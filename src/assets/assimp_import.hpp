@@ -1,7 +1,7 @@
-// Model files other than glTF (OBJ with its MTL, FBX, and the rest Debian's
-// libassimp reads) into the same MeshAsset, materials and instances glTF import
-// fills. Units become metres (FBX files say theirs; OBJ has none and is read as
-// metres). Materials follow the convention asked for (model_import.hpp).
+// Model files other than glTF and OBJ (FBX and the rest Debian's libassimp
+// reads) into the same MeshAsset, materials and instances glTF import fills.
+// Units become metres (FBX files say theirs). Materials follow the convention
+// asked for (model_import.hpp, classic_materials.hpp).
 // Texture paths as exporters write them are found: Windows separators, another
 // letter case than on disk, absolute paths from the author's machine (looked
 // up beside the model and in the folders below it), each with one warning.

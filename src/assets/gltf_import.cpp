@@ -22,7 +22,6 @@ namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 using gltf::Accessor;
 
-double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 std::string accessor_name(int index) { return gltf::element("accessors", static_cast<std::size_t>(index)).str(); }
 

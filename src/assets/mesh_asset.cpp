@@ -86,6 +86,16 @@ void generate_tangents(std::span<Vertex> vertices, std::span<const std::uint32_t
   }
 }
 
+std::vector<std::string> dropped_triangle_lines(const DroppedTriangles& dropped, std::size_t read) {
+  std::vector<std::string> lines;
+  const auto line = [&](std::size_t count, const char* reason) {
+    if (count > 0) lines.push_back(std::to_string(count) + " of " + std::to_string(read) + " triangles " + reason + "; they are skipped");
+  };
+  line(dropped.non_finite, "have a NaN or infinite corner");
+  line(dropped.zero_area, "have zero area");
+  return lines;
+}
+
 DroppedTriangles drop_unusable_triangles(std::span<const Vertex> vertices, std::vector<std::uint32_t>& indices) {
   auto finite = [](glm::vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); };
   DroppedTriangles dropped;

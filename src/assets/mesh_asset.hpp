@@ -155,8 +155,16 @@ inline void generate_tangents(Geometry& g) { generate_tangents(g.vertices, g.ind
 // vector. Real exports have the latter (the teapot's lid has 8).
 struct DroppedTriangles {
   std::size_t non_finite = 0, zero_area = 0;
+  DroppedTriangles& operator+=(const DroppedTriangles& more) {
+    non_finite += more.non_finite;
+    zero_area += more.zero_area;
+    return *this;
+  }
 };
 DroppedTriangles drop_unusable_triangles(std::span<const Vertex> vertices, std::vector<std::uint32_t>& indices);
+// One line per reason that dropped any of a file's `read` triangles: "2 of 40
+// triangles have zero area; they are skipped".
+[[nodiscard]] std::vector<std::string> dropped_triangle_lines(const DroppedTriangles& dropped, std::size_t read);
 // Normalises given normals; where one is zero-length or not finite, uses the
 // smooth normal of the triangles instead. Returns whether any was bad.
 bool repair_normals(std::span<Vertex> vertices, std::span<const std::uint32_t> triangles);

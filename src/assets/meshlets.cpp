@@ -43,6 +43,17 @@ void build(const std::vector<Vertex>& vertices, bool cones, Primitive& primitive
 
 }  // namespace
 
+double vertex_sharing(std::span<const std::uint32_t> indices, std::size_t vertex_count) {
+  if (indices.size() < 3) return 0.0;
+  std::vector<std::uint32_t> uses(vertex_count, 0);
+  for (const std::uint32_t i : indices) {
+    if (i < vertex_count) ++uses[i];
+  }
+  double squares = 0.0;
+  for (const std::uint32_t n : uses) squares += static_cast<double>(n) * n;
+  return squares / static_cast<double>(indices.size() / 3);
+}
+
 void build_meshlets(MeshAsset& asset) {
   for (Mesh& mesh : asset.meshes) {
     for (Primitive& primitive : mesh.primitives) {
@@ -52,6 +63,7 @@ void build_meshlets(MeshAsset& asset) {
       if (material.alpha_mode == AlphaMode::Blend || primitive.vertex_buffer >= asset.vertex_buffers.size()) continue;
       const std::vector<Vertex>& vertices = asset.vertex_buffers[primitive.vertex_buffer];
       if (std::any_of(primitive.indices.begin(), primitive.indices.end(), [&](std::uint32_t i) { return i >= vertices.size(); })) continue;
+      if (vertex_sharing(primitive.indices, vertices.size()) > kMeshletMaxSharing) continue;
       build(vertices, !material.double_sided, primitive);
     }
   }

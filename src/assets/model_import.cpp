@@ -6,6 +6,7 @@
 #include "assets/assimp_import.hpp"
 #include "assets/file_lookup.hpp"
 #include "assets/gltf_import.hpp"
+#include "assets/obj_import.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -23,10 +24,10 @@ const ModelFormat* format_of(const std::filesystem::path& path) {
 std::span<const ModelFormat> model_formats() {
   // libassimp reads more than its row lists: these are the ones tested or
   // common among the scenes users bring.
-  static const std::array<ModelFormat, 2> formats{
+  static const std::array<ModelFormat, 3> formats{
       ModelFormat{"glTF", {".gltf", ".glb"}, import_gltf},
-      ModelFormat{"OBJ, FBX and the other formats libassimp reads",
-                  {".obj", ".fbx", ".dae", ".3ds", ".ply", ".stl", ".x", ".lwo", ".ase", ".off"},
+      ModelFormat{"OBJ with its MTL", {".obj"}, import_obj},
+      ModelFormat{"FBX and the other formats libassimp reads", {".fbx", ".dae", ".3ds", ".ply", ".stl", ".x", ".lwo", ".ase", ".off"},
                   import_assimp},
   };
   return formats;

@@ -1,13 +1,15 @@
 // What importing a model file gives, whatever its format: a MeshAsset in the
 // AssetManager plus instances and lights for a scene, and what loading cost.
 // import_model picks the importer by extension from one table, model_formats():
-// glTF (.gltf, .glb) through gltf_import.hpp, what Debian's libassimp reads
-// (.obj with .mtl, .fbx, ...) through assimp_import.hpp. A new format is its
+// glTF (.gltf, .glb) through gltf_import.hpp, OBJ with its MTL through
+// obj_import.hpp, what Debian's libassimp reads (.fbx, .dae, ...) through
+// assimp_import.hpp. A new format is its
 // importer's file pair and one row; help and messages are built from the table.
 #pragma once
 
 #include "base/box.hpp"
 
+#include <chrono>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -38,6 +40,10 @@ enum class MaterialConvention : std::uint8_t {
 // directional ones, so a 100 W isotropic Blender light (683*100/4pi cd in its
 // glTF) arrives as 100/4pi = 7.96.
 inline constexpr float kLumensPerWatt = 683.0f;
+
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 struct ImportTimings {
   double parse_seconds = 0.0;   // the file, its buffers and meshes
@@ -77,7 +83,7 @@ struct ModelFormat {
   ModelImport (*import)(const std::filesystem::path& path, AssetManager& assets, const ImportOptions& options);
 };
 [[nodiscard]] std::span<const ModelFormat> model_formats();
-// "glTF (.gltf, .glb); OBJ, FBX and the other formats libassimp reads (.obj, ...)".
+// "glTF (.gltf, .glb); OBJ with its MTL (.obj); FBX and the other formats libassimp reads (.fbx, ...)".
 [[nodiscard]] std::string model_formats_text();
 
 // Whether the extension (in any letter case) is one of model_formats()'.

@@ -1,7 +1,9 @@
 // Meshlets: a large primitive's triangles are regrouped, not changed (the same
 // triangles, each once, in contiguous runs); every meshlet's sphere holds its
 // vertices; a normal cone that says "faces away" from a point is never wrong;
-// small, blended and double-sided primitives are left as they were.
+// small, blended and double-sided primitives are left as they were, as are
+// primitives whose vertices are shared far beyond a real mesh's (the builder's
+// cost grows with the sharing).
 #include "assets/meshlets.hpp"
 
 #include <algorithm>
@@ -103,6 +105,30 @@ TEST(Meshlets, SmallBlendedAndDoubleSidedPrimitivesAreLeftUncutOrUncone) {
   build_meshlets(two_sided);
   ASSERT_FALSE(two_sided.meshes[0].primitives[0].meshlets.empty());
   for (const Meshlet& m : two_sided.meshes[0].primitives[0].meshlets) EXPECT_GT(m.cone_cutoff, 1.0f) << "both sides show";
+}
+
+TEST(Meshlets, VerticesSharedFarBeyondARealMeshLeaveThePrimitiveWhole) {
+  // A hostile OBJ's shape: one 1,024-gon, cut into a fan, repeated 100 times.
+  MeshAsset hostile = sphere_asset();
+  Primitive& p = hostile.meshes[0].primitives[0];
+  const std::size_t vertices = hostile.vertex_buffers[p.vertex_buffer].size();
+  ASSERT_GE(vertices, 1024u);
+  p.indices.clear();
+  for (int copy = 0; copy < 100; ++copy) {
+    for (std::uint32_t i = 1; i + 1 < 1024; ++i) p.indices.insert(p.indices.end(), {0, i, i + 1});
+  }
+  const std::vector<std::uint32_t> before = p.indices;
+  EXPECT_GT(vertex_sharing(p.indices, vertices), kMeshletMaxSharing);
+  build_meshlets(hostile);
+  EXPECT_TRUE(p.meshlets.empty());
+  EXPECT_EQ(p.indices, before);
+
+  // A sphere's poles are fans of 64: far within the limit, and cut.
+  MeshAsset sphere = sphere_asset();
+  const Primitive& s = sphere.meshes[0].primitives[0];
+  EXPECT_LT(vertex_sharing(s.indices, sphere.vertex_buffers[s.vertex_buffer].size()), kMeshletMaxSharing / 4);
+  build_meshlets(sphere);
+  EXPECT_FALSE(s.meshlets.empty());
 }
 
 }  // namespace

@@ -10,8 +10,9 @@ page with the command line's own one-line message shown, and a scripted check
 (tests/web/checks/page.js) drives the page as a user: panel values refused
 with the URL's words, a light count too slow for this renderer refused until
 asked again, a refused view shown as refused, taps of t at one frame a second
-acting once each, holds of w moving for their own length, and a dropped .glb
-and a .gltf dropped with its files drawn as the native build draws them.
+acting once each, holds of w moving for their own length, and a dropped .glb,
+a .gltf dropped with its files and an .obj with its .mtl and texture drawn as
+the native build draws them.
 
 usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--testdata DIR] [--out DIR]
 """
@@ -127,7 +128,8 @@ def check_page(args, port, results, url_message):
             failures.append(f"after choosing Sponza the page says {result.get('sponza_status')!r}")
     images = result.get("images", {})
     here = os.path.dirname(os.path.abspath(__file__))
-    dropped = [("dropped_glb", os.path.join(here, "..", "data", "gltf-tools", "blender-colors.glb"))]
+    dropped = [("dropped_glb", os.path.join(here, "..", "data", "gltf-tools", "blender-colors.glb")),
+               ("dropped_obj", os.path.join(here, "..", "data", "model-tools", "mirror-f.plain.obj"))]
     if args.testdata and os.path.isdir(args.testdata):
         dropped.append(("dropped_gltf", os.path.join(args.testdata, "gltf", "tinygltf", "Cube", "Cube.gltf")))
     for key, model in dropped:

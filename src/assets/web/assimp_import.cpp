@@ -1,5 +1,5 @@
-// import_assimp for the WebAssembly build, which has no libassimp: OBJ, FBX
-// and the other formats it reads are refused with one line naming the way out.
+// import_assimp for the WebAssembly build, which has no libassimp: FBX and
+// the other formats it reads are refused with one line naming the way out.
 #include "assets/assimp_import.hpp"
 
 #include "assets/model_import.hpp"
@@ -7,8 +7,8 @@
 namespace atrium::assets {
 
 ModelImport import_assimp(const std::filesystem::path& path, AssetManager&, const ImportOptions&) {
-  throw ImportError(path.string() + ": the browser build reads glTF only (libassimp is native); convert the model to "
-                    "glTF (`assimp export model.obj model.gltf`)");
+  throw ImportError(path.string() + ": the browser build reads glTF and OBJ only (libassimp is native); convert the model to "
+                    "glTF (`assimp export model.fbx model.gltf`)");
 }
 
 }  // namespace atrium::assets

@@ -104,7 +104,8 @@
     }
 
     // Files dropped onto the page are drawn (web/shell.html's drop handler):
-    // a .gltf with its .bin and textures, then a .glb.
+    // a .gltf with its .bin and textures, a .glb, and an .obj with its .mtl
+    // and texture (Blender's export), all loose.
     FS.mkdirTree("/shots");
     const drop = async (urls, model) => {
       const transfer = new DataTransfer();
@@ -125,6 +126,8 @@
                                        "Cube.gltf");
     }
     result.dropped_glb = await drop(["testdata/gltf-tools/blender-colors.glb"], "blender-colors.glb");
+    result.dropped_obj = await drop(["mirror-f.plain.obj", "mirror-f.plain.mtl", "mirror-f-bumps.png"].map((f) => "testdata/model-tools/" + f),
+                                    "mirror-f.plain.obj");
     result.images = pngs("/shots");
   } catch (e) {
     errors.push("check failed: " + (e.stack || e));
