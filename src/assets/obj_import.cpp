@@ -174,7 +174,7 @@ class ObjImporter {
     {
       std::istringstream stream(std::move(text));
       if (!tinyobj::LoadObj(&attrib, &shapes, &materials, &warning, &error, &stream, &libraries, true, false)) {
-        fail(first_line(error, "not an OBJ file Atrium can read"));
+        fail(parse_problem(error));
       }
     }
     for (std::string& line : libraries.warnings) warn(std::move(line));
@@ -208,10 +208,18 @@ class ObjImporter {
   [[noreturn]] void fail(const std::string& problem) const { throw ImportError(name_ + ": " + problem); }
   void warn(const std::string& problem) { result_.warnings.push_back(name_ + ": " + problem); }
 
-  static std::string first_line(std::string text, const char* otherwise) {
-    text = text.substr(0, text.find('\n'));
-    while (!text.empty() && (text.back() == '\r' || text.back() == ' ')) text.pop_back();
-    return text.empty() ? otherwise : text;
+  // tinyobjloader's refusal in Atrium's words: it stops at a face, line or
+  // point ('f', 'l', 'p', 'vw') with an index of zero or not a number, and
+  // says on which line.
+  static std::string parse_problem(const std::string& error) {
+    const std::size_t quote = error.find('`'), at = error.find("line ", error.find('('));
+    if (error.rfind("Failed parse `", 0) != 0 || quote == std::string::npos || at == std::string::npos) {
+      const std::string first = error.substr(0, error.find('\n'));
+      return first.empty() ? "not an OBJ file Atrium can read" : first;
+    }
+    const std::string statement = error.substr(quote + 1, error.find('\'', quote) - quote - 1);
+    const std::string line = error.substr(at + 5, error.find_first_not_of("0123456789", at + 5) - at - 5);
+    return "line " + line + ": an '" + statement + "' statement with an index of zero or not a number";
   }
 
   // An MTL material as the shared conventions read it; `stated`: the

@@ -282,6 +282,8 @@ TEST_F(ObjText, BadFilesFailInOneLineNamingTheFileAndWhere) {
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf -5 1 2\n"), file + ": shape 0: triangle 0 names a vertex before the first");
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//4\n"), file + ": shape 0: triangle 0 names normal 4 of 1");
   EXPECT_EQ(refusal("o box\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/7 2/1 3/1\n"), file + ": shape 0 'box': triangle 0 names texture coordinate 7 of 0");
+  EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 0\n"), file + ": line 5: an 'f' statement with an index of zero or not a number");
+  EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n"), file + ": line 4: an 'f' statement with an index of zero or not a number");
   EXPECT_EQ(refusal(""), file + ": it has no vertices ('v' lines)");
   EXPECT_EQ(refusal("v 0 0 0\nv 1 0 0\nl 1 2\n"), file + ": it has no faces ('f' lines) with three or more corners");
   EXPECT_EQ(refusal(std::string("\x89PNG\r\n\x1a\n\0\0\0\rIHDR", 16)), file + ": it has no vertices ('v' lines)");
