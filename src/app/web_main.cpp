@@ -54,10 +54,19 @@ struct Page {
   // panel's changes (and, synced before each change, what keys changed).
   std::vector<std::string> args;
   std::string confirm;  // a change refused as too slow once: asked again, it is carried out
+  // A panel change on trial for its first frames (check_trial), with the
+  // arguments to return to.
+  struct Trial {
+    std::vector<std::string> before;
+    std::string change;
+    int frames = 0;
+  };
+  std::optional<Trial> trial;
   double last_seconds = 0.0;
   double stats_seconds = 0.0;
   int frames_since_stats = 0;
   double fps = 0.0, frame_ms = 0.0;  // over the last half second
+  double last_frame_ms = 0.0;         // the latest frame's, before the first half second has passed
   std::uint64_t memory_bytes = 0;    // estimated, twice a second (asking the driver is not free)
   std::string reply;       // what the last atrium_* call returns to the page
   std::string last_error;  // what the last frame failed with
@@ -67,7 +76,10 @@ Page* g_page = nullptr;
 // A change that would make one frame take longer than this, judged by the
 // last frames' cost per light, is refused until asked for again: a frame is
 // not interruptible, and a software renderer at 2^20 lights takes minutes.
+// Changes whose cost cannot be judged beforehand (a mode, MSAA, shadows) are
+// undone when one of their first kTrialFrames frames took longer.
 constexpr double kSlowFrameMs = 5000.0;
+constexpr int kTrialFrames = 3;
 
 void show_error(const std::string& message) {
   std::fprintf(stderr, "atrium: %s\n", message.c_str());
@@ -226,16 +238,29 @@ std::string duration_text(double ms) {
 // says would take over kSlowFrameMs.
 void refuse_slow_lights(Page& page, std::uint32_t lights, const std::string& change) {
   World& world = *page.world;
-  const double per_light = page.frame_ms / std::max(world.light_count(), 1u);
+  const double frame_ms = page.frame_ms > 0.0 ? page.frame_ms : page.last_frame_ms;
+  const double per_light = frame_ms / std::max(world.light_count(), 1u);
   const double estimate = per_light * lights;
-  if (page.frame_ms <= 0.0 || lights <= world.light_count() || estimate <= kSlowFrameMs || page.confirm == change) {
+  if (frame_ms <= 0.0 || lights <= world.light_count() || estimate <= kSlowFrameMs || page.confirm == change) {
     page.confirm.clear();
     return;
   }
   page.confirm = change;
   throw InputError("--lights " + std::to_string(lights) + ": a frame would take about " + duration_text(estimate) + " on this renderer (" +
-                   number_text(std::round(page.frame_ms)) + " ms a frame now, with " + std::to_string(world.light_count()) +
+                   number_text(std::round(frame_ms)) + " ms a frame now, with " + std::to_string(world.light_count()) +
                    " lights); set it again to draw it anyway");
+}
+
+// Runs the world with `args`, carrying out what differs from the page's.
+void carry_out(Page& page, std::vector<std::string> args) {
+  World& world = *page.world;
+  const WorldOptions before = world_options(parse_args(page.args));
+  const WorldOptions after = world_options(parse_args(args));
+  world.apply_settings(after);
+  if (after.lights && after.lights != before.lights) world.set_light_count(*after.lights);
+  if (after.light_radius != before.light_radius) world.set_light_radius(after.light_radius);
+  if (after.view != before.view) world.set_view(after.view);
+  page.args = std::move(args);
 }
 
 // Sets `option` to `value` (a flag: "on" or "off") in the page's arguments,
@@ -255,14 +280,36 @@ void set_option(Page& page, const std::string& option, const std::string& value)
   } else if (!row->leaves_out(value)) {
     args = with(args, option, value);
   }
+  const std::string change = option + " " + value;
+  const bool insisted = !page.confirm.empty() && page.confirm == change;
   const WorldOptions before = world_options(parse_args(page.args));
   const WorldOptions after = world_options(parse_args(args));
-  if (after.lights && after.lights != before.lights) refuse_slow_lights(page, *after.lights, option + " " + value);
-  world.apply_settings(after);
-  if (after.lights && after.lights != before.lights) world.set_light_count(*after.lights);
-  if (after.light_radius != before.light_radius) world.set_light_radius(after.light_radius);
-  if (after.view != before.view) world.set_view(after.view);
-  page.args = std::move(args);
+  if (after.lights && after.lights != before.lights) refuse_slow_lights(page, *after.lights, change);
+  std::vector<std::string> previous = page.args;
+  carry_out(page, std::move(args));
+  page.confirm.clear();
+  if (insisted) {
+    page.trial.reset();
+  } else {
+    page.trial = Page::Trial{std::move(previous), change};
+  }
+}
+
+// A change on trial whose frame took over kSlowFrameMs is undone, with the
+// reason, and carried out when asked again (the light count's estimate
+// cannot judge a mode or MSAA); after kTrialFrames quick frames it stays.
+void check_trial(Page& page, double frame_ms) {
+  Page::Trial& trial = *page.trial;
+  if (frame_ms <= kSlowFrameMs) {
+    if (++trial.frames >= kTrialFrames) page.trial.reset();
+    return;
+  }
+  const std::string change = trial.change;
+  carry_out(page, std::move(trial.before));
+  page.trial.reset();
+  page.confirm = change;
+  show_error(change + ": a frame took " + duration_text(frame_ms) + " on this renderer, over " + duration_text(kSlowFrameMs) +
+             "; it is undone (set it again to draw it anyway)");
 }
 
 // A new World for `args` (the scene first), with the systems a window has;
@@ -279,7 +326,8 @@ void start_world(Page& page, std::vector<std::string> args) {
   page.args = std::move(args);
   page.last_error.clear();
   page.confirm.clear();
-  page.frame_ms = 0.0;
+  page.trial.reset();
+  page.frame_ms = page.last_frame_ms = 0.0;
 }
 
 // What the panel shows, as JSON: fps, the latest frame's pass times and counts,
@@ -346,6 +394,8 @@ void frame() {
   }
   // The first frame's time is what a newcomer waits for: the page shows it.
   if (page.last_seconds == 0.0) EM_ASM({ atriumFirstFrame(); });
+  if (page.last_seconds > 0.0) page.last_frame_ms = (now - page.last_seconds) * 1000.0;
+  if (page.trial && page.last_seconds > 0.0) check_trial(page, page.last_frame_ms);
   page.last_seconds = now;
   ++page.frames_since_stats;
   if (now - page.stats_seconds >= 0.5) {

@@ -9,7 +9,8 @@ frame's aspect in three window sizes, a bad URL parameter must leave a working
 page with the command line's own one-line message shown, and a scripted check
 (tests/web/checks/page.js) drives the page as a user: panel values refused
 with the URL's words, a light count too slow for this renderer refused until
-asked again, a refused view shown as refused, taps of t at one frame a second
+asked again, a mode change whose frame took over 5 s undone until asked again,
+a refused view shown as refused, taps of t at one frame a second
 acting once each, holds of w moving for their own length, and a dropped .glb,
 a .gltf dropped with its files and an .obj with its .mtl and texture drawn as
 the native build draws them.
@@ -111,6 +112,13 @@ def check_page(args, port, results, url_message):
             failures.append(f"two taps of t went {result['mode_before']} -> {taps}, not one mode each")
     else:
         failures.append(f"page check: mode {result.get('mode_before')!r} is not among {modes}")
+    print(f"page check: a mode change with a 5.5 s frame: {result.get('trial_message')!r}")
+    trial = (result.get("trial_set"), result.get("trial_mode_after") == result.get("trial_mode_before"),
+             "it is undone (set it again to draw it anyway)" in (result.get("trial_message") or ""), result.get("trial_again"),
+             result.get("trial_mode_kept") not in (None, result.get("trial_mode_before")))
+    if trial != ("", True, True, "", True):
+        failures.append(f"a mode change with a 5.5 s frame: set {trial[0]!r}, back to {result.get('trial_mode_after')!r} "
+                        f"({result.get('trial_message')!r}), again {trial[3]!r}, kept {result.get('trial_mode_kept')!r}")
     holds = result.get("holds", [])
     for hold in holds:
         print(f"page check: w held {hold['seconds']:.2f} s at ~1 fps moved {hold['metres']:.3f} m")
