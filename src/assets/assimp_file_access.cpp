@@ -94,10 +94,10 @@ std::vector<std::string> AssimpFileAccess::warnings() const {
     const fs::path shown = fs::path(a.asked).lexically_relative(folder_);
     const std::string name = shown.empty() || shown.string().starts_with("..") ? a.asked : shown.generic_string();
     if (a.problem.empty()) {
-      if (!a.how.empty()) lines.push_back("'" + name + "' " + a.how + "; " + a.read.lexically_relative(folder_).generic_string() + " is used");
+      if (!a.how.empty()) lines.push_back(found_elsewhere_warning(name, a.how, a.read, folder_));
       continue;
     }
-    std::string line = "'" + name + "', which it names, cannot be read (" + a.problem + ")";
+    std::string line = unreadable_warning(name, a.problem);
     if (i + 1 < accesses_.size() && accesses_[i + 1].problem.empty() && fs::path(accesses_[i + 1].asked) != model_) {
       line += "; '" + accesses_[i + 1].read.lexically_relative(folder_).generic_string() + "' is used instead";
     } else {

@@ -133,10 +133,7 @@ std::uint32_t ClassicMaterials::default_material(MeshAsset& asset) {
 std::optional<fs::path> ClassicMaterials::find_texture(const std::string& written) {
   if (const auto known = found_.find(written); known != found_.end()) return known->second;
   const FoundFile found = find_named_file(model_.parent_path(), written);
-  if (found.path && !found.how.empty()) {
-    std::error_code ec;
-    warn("texture '" + written + "' " + found.how + "; " + fs::relative(*found.path, model_.parent_path(), ec).generic_string() + " is used");
-  }
+  if (found.path && !found.how.empty()) warn("texture " + found_elsewhere_warning(written, found.how, *found.path, model_.parent_path()));
   found_[written] = found.path;
   return found.path;
 }

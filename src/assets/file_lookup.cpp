@@ -60,6 +60,14 @@ FoundFile find_named_file(const fs::path& folder, const std::string& written) {
   return result;
 }
 
+std::string found_elsewhere_warning(const std::string& written, const std::string& how, const fs::path& used, const fs::path& folder) {
+  return "'" + written + "' " + how + "; " + used.lexically_relative(folder).generic_string() + " is used";
+}
+
+std::string unreadable_warning(const std::string& written, const std::string& problem) {
+  return "'" + written + "', which it names, cannot be read (" + problem + ")";
+}
+
 std::string not_a_file(const fs::path& path) {
   std::error_code ec;
   const fs::file_status status = fs::status(path, ec);

@@ -29,6 +29,15 @@ struct FoundFile {
 
 [[nodiscard]] FoundFile find_named_file(const std::filesystem::path& folder, const std::string& written);
 
+// The warnings every importer gives for a file a model names, in one wording:
+// found elsewhere than its path says ("'textures\\a.png' has Windows separators;
+// textures/a.png is used", `used` shown relative to the model's folder), and
+// not readable ("'a.mtl', which it names, cannot be read (no such file)", to
+// which the caller adds what happens instead).
+[[nodiscard]] std::string found_elsewhere_warning(const std::string& written, const std::string& how, const std::filesystem::path& used,
+                                                  const std::filesystem::path& folder);
+[[nodiscard]] std::string unreadable_warning(const std::string& written, const std::string& problem);
+
 // What a path names when it is not a regular file, in a few words: "no such
 // file", "a directory", "not a regular file".
 [[nodiscard]] std::string not_a_file(const std::filesystem::path& path);

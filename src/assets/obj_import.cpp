@@ -113,21 +113,12 @@ class MaterialLibraries : public tinyobj::MaterialReader {
   bool operator()(const std::string& written, std::vector<tinyobj::material_t>* materials, std::map<std::string, int>* names, std::string*,
                   std::string*) override {
     const FoundFile found = find_named_file(folder_, written);
-    std::error_code ec;
-    std::string problem = found.path ? (fs::is_regular_file(*found.path, ec) ? std::string() : not_a_file(*found.path))
-                                     : not_a_file(folder_ / written);
-    FileBytes read;
-    if (problem.empty()) {
-      read = read_file_within(*found.path, limit_);
-      problem = read.problem;
-    }
-    if (!problem.empty()) {
-      warnings.push_back("'" + written + "', which it names, cannot be read (" + problem + "); what it holds is left out");
+    const FileBytes read = found.path ? read_file_within(*found.path, limit_) : FileBytes{{}, not_a_file(folder_ / written)};
+    if (!read.problem.empty()) {
+      warnings.push_back(unreadable_warning(written, read.problem) + "; what it holds is left out");
       return false;
     }
-    if (!found.how.empty()) {
-      warnings.push_back("'" + written + "' " + found.how + "; " + found.path->lexically_relative(folder_).generic_string() + " is used");
-    }
+    if (!found.how.empty()) warnings.push_back(found_elsewhere_warning(written, found.how, *found.path, folder_));
     const std::string text(read.bytes.begin(), read.bytes.end());
     read_stated_keys(text, stated);
     std::istringstream stream(text);
@@ -157,8 +148,6 @@ class ObjImporter {
 
   ModelImport run() {
     const auto start = Clock::now();
-    std::error_code ec;
-    if (!fs::is_regular_file(path_, ec)) fail(not_a_file(path_));
     FileBytes file = read_file_within(path_, budget_.limit());
     if (!file.problem.empty()) fail(file.problem);
     budget_.require(budget_.bytes(file.bytes.size(), kParseBytesPerFileByte, "parsing its text"), "parsing its text");
@@ -330,7 +319,9 @@ class ObjImporter {
   // A file without normals is smooth where its faces share a position ('v'),
   // across texture seams too, as modelling tools draw it.
   static void smooth_normals_by_position(Geometry& geometry, const std::vector<int>& position_of_vertex, std::size_t positions) {
-    generate_normals(geometry);  // per vertex, for those no triangle reaches too
+    // Per vertex first: where a position's faces cancel out (a zero sum), its
+    // vertices keep the normal of their own faces.
+    generate_normals(geometry);
     std::unordered_map<int, glm::vec3> sum;
     sum.reserve(std::min(positions, geometry.vertices.size()));
     for (std::size_t t = 0; t + 2 < geometry.indices.size(); t += 3) {
