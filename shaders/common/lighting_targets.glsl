@@ -17,25 +17,39 @@
 #else
 #define LIT_ACCESS writeonly
 #endif
-layout(rgba16f, binding = 2) uniform LIT_ACCESS image2D u_lit_color;
+// With MSAA the targets are multisampled and a store writes the samples that
+// g_shaded_samples names (all of them unless the pass says otherwise: the
+// visibility buffer's resolve shades each triangle of an edge pixel once, for
+// the samples that show it). EACH_SHADED_SAMPLE runs a statement per such
+// sample, LIT_AT is the sample's address in a lit image.
+#ifdef MSAA_SAMPLES
+#define LIT_IMAGE image2DMS
+uint g_shaded_samples = (1u << MSAA_SAMPLES) - 1u;
+#define EACH_SHADED_SAMPLE(statement) for (int lit_sample = 0; lit_sample < MSAA_SAMPLES; ++lit_sample) { if ((g_shaded_samples & (1u << lit_sample)) != 0u) { statement; } }
+#define LIT_AT g_shaded_pixel, lit_sample
+#else
+#define LIT_IMAGE image2D
+#define EACH_SHADED_SAMPLE(statement) { statement; }
+#define LIT_AT g_shaded_pixel
+#endif
+layout(rgba16f, binding = 2) uniform LIT_ACCESS LIT_IMAGE u_lit_color;
 #ifdef SPLIT_LIGHTING
-layout(rgba16f, binding = 3) uniform LIT_ACCESS image2D u_lit_diffuse;
-layout(rgba16f, binding = 4) uniform LIT_ACCESS image2D u_lit_specular;
+layout(rgba16f, binding = 3) uniform LIT_ACCESS LIT_IMAGE u_lit_diffuse;
+layout(rgba16f, binding = 4) uniform LIT_ACCESS LIT_IMAGE u_lit_specular;
 #endif
 
 void write_lighting(vec3 unlit, LightSum sum) {
-  imageStore(u_lit_color, g_shaded_pixel, vec4(unlit + light_total(sum), 1.0));
+  EACH_SHADED_SAMPLE(imageStore(u_lit_color, LIT_AT, vec4(unlit + light_total(sum), 1.0)))
 #ifdef SPLIT_LIGHTING
-  imageStore(u_lit_diffuse, g_shaded_pixel, vec4(sum.diffuse, 1.0));
-  imageStore(u_lit_specular, g_shaded_pixel, vec4(sum.specular, 1.0));
+  EACH_SHADED_SAMPLE(imageStore(u_lit_diffuse, LIT_AT, vec4(sum.diffuse, 1.0)); imageStore(u_lit_specular, LIT_AT, vec4(sum.specular, 1.0)))
 #endif
 }
 #ifdef ADD_LIGHTS
 void add_lighting(LightSum sum) {
-  imageStore(u_lit_color, g_shaded_pixel, imageLoad(u_lit_color, g_shaded_pixel) + vec4(light_total(sum), 0.0));
+  EACH_SHADED_SAMPLE(imageStore(u_lit_color, LIT_AT, imageLoad(u_lit_color, LIT_AT) + vec4(light_total(sum), 0.0)))
 #ifdef SPLIT_LIGHTING
-  imageStore(u_lit_diffuse, g_shaded_pixel, imageLoad(u_lit_diffuse, g_shaded_pixel) + vec4(sum.diffuse, 0.0));
-  imageStore(u_lit_specular, g_shaded_pixel, imageLoad(u_lit_specular, g_shaded_pixel) + vec4(sum.specular, 0.0));
+  EACH_SHADED_SAMPLE(imageStore(u_lit_diffuse, LIT_AT, imageLoad(u_lit_diffuse, LIT_AT) + vec4(sum.diffuse, 0.0));
+                     imageStore(u_lit_specular, LIT_AT, imageLoad(u_lit_specular, LIT_AT) + vec4(sum.specular, 0.0)))
 #endif
 }
 void leave_pixel() {}

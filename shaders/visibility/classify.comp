@@ -2,8 +2,9 @@
 // Material classification of the visibility buffer: one work group per 8x8
 // tile finds the materials its pixels show and appends the tile to each one's
 // list (material_tiles.glsl), so that each material's resolve runs over the
-// tiles that hold it with its own textures bound. Pixels that show no geometry
-// get the background here, as a lighting pass's would.
+// tiles that hold it with its own textures bound. Samples that show no
+// geometry get the background here, as a lighting pass's would. With MSAA
+// every sample's identifier counts: an edge pixel may show several materials.
 #define COMPUTE_STAGE
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -14,29 +15,44 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "visibility/material_tiles.glsl"
 
 const uint kNone = 0xffffffffu;
-shared uint s_material[64];
+// Each sample's material (kNone: no geometry, or its pixel names it at an earlier sample).
+shared uint s_material[64 * kSamples];
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  uint slot = gl_LocalInvocationIndex;
-  uint material = kNone;
-  if (all(lessThan(pixel, ivec2(u_viewport_size)))) {
-    uint id = texelFetch(u_visibility, pixel, 0).r;
-    if (id == 0u) {
-      g_shaded_pixel = pixel;
-      write_background();
-    } else {
-      uint triangle;
-      material = visible_instance(id, triangle).material.x;
+  uint first = gl_LocalInvocationIndex * uint(kSamples);
+  bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
+  uint background = 0u;  // the samples without geometry, a bit each
+  for (int i = 0; i < kSamples; ++i) {
+    uint material = kNone;
+    if (inside) {
+      uint id = fetch_sample(u_visibility, pixel, i).r;
+      if (id == 0u) {
+        background |= 1u << i;
+      } else {
+        uint triangle;
+        material = visible_instance(id, triangle).material.x;
+        for (int j = 0; j < i; ++j) material = s_material[first + uint(j)] == material ? kNone : material;
+      }
     }
+    s_material[first + uint(i)] = material;
   }
-  s_material[slot] = material;
+  if (background != 0u) {
+    g_shaded_pixel = pixel;
+#ifdef MSAA_SAMPLES
+    g_shaded_samples = background;
+#endif
+    write_background();
+  }
   barrier();
-  if (material == kNone) return;
-  // The first pixel of the tile to show a material lists the tile for it.
-  for (uint i = 0u; i < slot; ++i) {
-    if (s_material[i] == material) return;
+  // The first sample of the tile to show a material lists the tile for it.
+  for (int i = 0; i < kSamples; ++i) {
+    uint material = s_material[first + uint(i)];
+    if (material == kNone) continue;
+    bool listed = false;
+    for (uint k = 0u; k < first && !listed; ++k) listed = s_material[k] == material;
+    if (listed) continue;
+    uint index = atomicAdd(u_dispatch[material].x, 1u);
+    u_tiles[material * u_tile_capacity + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
   }
-  uint index = atomicAdd(u_dispatch[material].x, 1u);
-  u_tiles[material * u_tile_capacity + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
 }

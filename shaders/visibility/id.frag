@@ -3,9 +3,12 @@
 // triangle (its record's first identifier plus gl_PrimitiveID, which counts
 // from 0 in every draw and instance) and nothing else. Alpha-masked materials
 // (ALPHA_TEST) test their alpha here, and only here: the resolve trusts that
-// what the buffer holds was kept.
+// what the buffer holds was kept. With MSAA it also writes the shading depth
+// (common/shading_depth.glsl), from which light assignment marks clusters.
 #include "common/frame.glsl"
 #include "common/fragment_count.glsl"
+#define SHADING_DEPTH_LOCATION 1
+#include "common/shading_depth.glsl"
 #ifdef ALPHA_TEST
 #include "common/material.glsl"
 #include "common/mesh_inputs.glsl"
@@ -21,4 +24,5 @@ void main() {
   if (s.alpha < material_alpha_cutoff()) discard;
 #endif
   out_id = v_first_triangle_id + uint(gl_PrimitiveID);
+  write_shading_depth();
 }

@@ -5,6 +5,9 @@
 // its surface from the triangle it shows, evaluates the material with explicit
 // gradients and shades it with its cluster's lights, storing the lit result
 // (common/lighting_targets.glsl) once: no G-buffer between geometry and light.
+// With MSAA each triangle a pixel's samples show is shaded once, at the pixel
+// centre as a raster pass shades it, and stored to the samples that show it:
+// a pixel inside a triangle costs one shading, an edge one per triangle.
 #define COMPUTE_STAGE
 #define EXPLICIT_GRADIENTS
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -18,18 +21,38 @@ layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform uint u_material;
 
+// Shades the triangle `id` names where `pixel` shows it, if its material is
+// u_material, storing to the samples lighting_targets.glsl is told.
+void shade_triangle(ivec2 pixel, uint id) {
+  uint triangle;
+  Instance instance = visible_instance(id, triangle);
+  if (instance.material.x != u_material) return;
+  VisibleSurface v = visible_surface(pixel, instance, triangle);
+  Surface s = evaluate_material(v.material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+}
+
 void main() {
   uint tile = u_tiles[u_material * u_tile_capacity + gl_WorkGroupID.x];
   // Its work group is classify.comp's: one group a tile.
   ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
-  uint id = texelFetch(u_visibility, pixel, 0).r;
-  if (id == 0u) return;
-  uint triangle;
-  Instance instance = visible_instance(id, triangle);
-  if (instance.material.x != u_material) return;
-  VisibleSurface v = visible_surface(pixel, instance, triangle);
   g_shaded_pixel = pixel;
-  Surface s = evaluate_material(v.material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
-  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+#ifdef MSAA_SAMPLES
+  // Each identifier once, for every sample that holds it.
+  uint ids[kSamples];
+  for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
+  for (int i = 0; i < kSamples; ++i) {
+    bool shaded = ids[i] == 0u;
+    for (int j = 0; j < i; ++j) shaded = shaded || ids[j] == ids[i];
+    if (shaded) continue;
+    g_shaded_samples = 0u;
+    for (int j = i; j < kSamples; ++j) g_shaded_samples |= ids[j] == ids[i] ? 1u << j : 0u;
+    shade_triangle(pixel, ids[i]);
+  }
+#else
+  // A loop of one sample measured 10-15% slower on llvmpipe: the pixel's one identifier, straight.
+  uint id = texelFetch(u_visibility, pixel, 0).r;
+  if (id != 0u) shade_triangle(pixel, id);
+#endif
 }

@@ -9,6 +9,7 @@
 // EXPLICIT_GRADIENTS (the resolve's) included first.
 #include "common/instances.glsl"
 #include "common/material_table.glsl"
+#include "common/msaa.glsl"
 
 // C++ twin: VisibilityUnit.
 struct Unit {
@@ -20,7 +21,8 @@ layout(std430, binding = 24) readonly buffer Units { Unit u_units[]; };
 // uv1 12-13, colour 14-15 (four 16-bit unorms). C++ twin: the pools of GpuAssets.
 layout(std430, binding = 25) readonly buffer VertexPool { uint u_vertex_words[]; };
 layout(std430, binding = 26) readonly buffer IndexPool { uint u_index_pool[]; };
-layout(binding = 5) uniform usampler2D u_visibility;
+// One identifier a sample with MSAA.
+layout(binding = 5) uniform utarget2D u_visibility;
 
 const uint kVertexWords = 16u;
 

@@ -83,8 +83,6 @@ struct ModeNeeds {
   // Compute shaders and storage buffers, which the compute-free tier (OpenGL
   // 4.1, ES 3.0, WebGL2) lacks.
   bool compute = false;
-  // One sample a pixel: the mode refuses MSAA.
-  bool single_sample = false;
 };
 
 struct TechniqueInfo {

@@ -36,7 +36,7 @@ constexpr TechniqueInfo kTechniques[] = {
     {"light-prepass", "thin G-buffer, light volumes sum BRDF factors into a light buffer, a second geometry pass applies materials",
      {false, true}, GBufferUse::Own, {}, &make<LightPrepassTechnique>},
     {"visibility-buffer", "depth and triangle identifiers only, then per material a compute pass rebuilds each pixel's surface and shades its cluster's lights",
-     {}, GBufferUse::None, {.compute = true, .single_sample = true}, &make<VisibilityTechnique>},
+     {}, GBufferUse::None, {.compute = true}, &make<VisibilityTechnique>},
 };
 
 }  // namespace
@@ -68,10 +68,6 @@ std::string refusal(const TechniqueInfo& info, const TechniqueOptions& options) 
   if (info.needs.compute && options.compute_free) {
     return std::string(info.name) + " needs compute shaders and storage buffers, which this context's tier (OpenGL 4.1, ES 3.0, " +
            "WebGL2) lacks; use another mode";
-  }
-  if (info.needs.single_sample && options.msaa > 1) {
-    return std::string(info.name) + " with --msaa " + std::to_string(options.msaa) +
-           ": it resolves one triangle identifier per pixel; use --msaa 1, or another mode for MSAA";
   }
   return {};
 }

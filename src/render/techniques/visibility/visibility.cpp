@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "gfx/depth.hpp"
 #include "gfx/limits.hpp"
 #include "render/frame/frame_draws.hpp"
 #include "render/frame/scene_passes.hpp"
@@ -11,17 +12,19 @@
 namespace atrium::techniques {
 namespace {
 
-std::vector<gfx::ShaderDefine> identifier_defines(bool masked) {
-  if (masked) return {{"VISIBILITY_ID"}, {"ALPHA_TEST"}};
-  return {{"VISIBILITY_ID"}, {"POSITION_ONLY"}};
+// With MSAA the geometry pass also writes the shading depth (common/shading_depth.glsl).
+std::vector<gfx::ShaderDefine> identifier_defines(bool masked, int samples) {
+  std::vector<gfx::ShaderDefine> defines{{"VISIBILITY_ID"}, {masked ? "ALPHA_TEST" : "POSITION_ONLY"}};
+  if (samples > 1) defines.push_back({"SHADING_DEPTH"});
+  return defines;
 }
 
 }  // namespace
 
 VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options)
     : gpu_(gpu),
-      identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false))),
-      identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true))),
+      identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false, options.msaa))),
+      identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true, options.msaa))),
       classify_(gpu.shaders().get({"visibility/classify.comp"})),
       resolve_(gpu.shaders().get({"visibility/resolve.comp"})),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
@@ -58,17 +61,24 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
   graph.add_pass("visibility", [&](render::PassBuilder& pass) {
     render::read_draws(pass, frame);
     pass.write(frame.scene_depth, render::Access::Attachment);
-    identifiers_target_ = pass.create(render::kVisibilityIdsTarget, render::TextureDesc{GL_R32UI, targets.size, 1}, render::ViewKind::Identifiers);
+    identifiers_target_ =
+        pass.create(render::kVisibilityIdsTarget, render::TextureDesc{GL_R32UI, targets.size, targets.samples}, render::ViewKind::Identifiers);
+    // With MSAA the depth buffer holds each sample's own depth; the resolve
+    // shades at the pixel centre, whose depth marks the clusters.
+    shading_depth_ = targets.samples > 1
+                         ? pass.create("shading-depth", render::TextureDesc{GL_R32F, targets.size, targets.samples}, render::ViewKind::Depth)
+                         : render::ResourceId{};
   }, [this, &frame, &targets](const render::PassResources& res) { draw_identifiers(res, frame, targets); });
 
   const render::ResourceId lists = clusters_.begin_frame(graph, frame);
+  const render::ResourceId marked_depth = shading_depth_.valid() ? shading_depth_ : frame.scene_depth;
   graph.add_pass("light assignment", [&](render::PassBuilder& pass) {
-    pass.read(frame.scene_depth, render::Access::Sampled);
+    pass.read(marked_depth, render::Access::Sampled);
     pass.read(frame.light_buffer, render::Access::Storage);
     if (!frame.draws.list().blended.empty()) render::read_draws(pass, frame);
     pass.write(lists, render::Access::Storage);
-  }, [this, &frame, &targets](const render::PassResources& res) {
-    clusters_.assign(res, frame, targets, [&] { glBindTextureUnit(0, res.texture(frame.scene_depth)); });
+  }, [this, &frame, &targets, marked_depth](const render::PassResources& res) {
+    clusters_.assign(res, frame, targets, [&] { glBindTextureUnit(0, res.texture(marked_depth)); });
   });
 
   auto write_lit = [&frame](render::PassBuilder& pass) {
@@ -100,11 +110,16 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
 }
 
 void VisibilityTechnique::draw_identifiers(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
-  const GLuint framebuffer = res.framebuffer({identifiers_target_}, frame.scene_depth);
+  const GLuint framebuffer = shading_depth_.valid() ? res.framebuffer({identifiers_target_, shading_depth_}, frame.scene_depth)
+                                                    : res.framebuffer({identifiers_target_}, frame.scene_depth);
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
   const GLuint none[] = {0, 0, 0, 0};
   glClearNamedFramebufferuiv(framebuffer, GL_COLOR, 0, none);
+  if (shading_depth_.valid()) {
+    const float far = gfx::kDepthFar;
+    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 1, &far);
+  }
   render::begin_depth(framebuffer);
   frame.draw_first_pass(res, [this](std::span<const render::DrawBatch> batches, const render::CommandSource& source) {
     render::draw_depth(batches, source, identifiers_, identifiers_masked_);

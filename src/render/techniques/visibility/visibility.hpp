@@ -7,8 +7,9 @@
 // shades it with the clustered light lists, storing the lit HDR result. The
 // raster pipeline touches a pixel's material once, not once per overdraw, and
 // no G-buffer travels between geometry and light. Blended surfaces are shaded
-// forward+ from the same lists afterwards, as in clustered-deferred. Needs
-// compute shaders and refuses MSAA (the technique table's ModeNeeds).
+// forward+ from the same lists afterwards, as in clustered-deferred. With
+// MSAA it stores an identifier a sample and shades each triangle a pixel
+// shows once. Needs compute shaders (the technique table's ModeNeeds).
 #pragma once
 
 #include "render/lighting/cluster_lights.hpp"
@@ -55,6 +56,7 @@ class VisibilityTechnique final : public LightingTechnique {
   gfx::StreamBuffer units_;
   std::size_t unit_count_ = 0;  // of this frame, at the start of units_
   render::ResourceId identifiers_target_;
+  render::ResourceId shading_depth_;  // with MSAA: each sample's depth at its pixel centre
 };
 
 }  // namespace atrium::techniques
