@@ -182,6 +182,11 @@ for bloom in 0 0.04; do
   step "bloom $bloom, built-in" 30 "$out/.bloom-$bloom.md" "$atrium" bench --modes clustered-deferred,deferred --views 1 --size "$size" \
     --frames "$frames" --warmup "$warmup" --frame-limit 1000 --lights 1024 --bloom "$bloom" --lighting-stage compute
 done
+# MSAA 4x in both lighting stages: the fragment stage's per-pixel and
+# per-sample draws against the compute stage's shared-out edge samples, and
+# the visibility buffer, which shades each triangle of a pixel once.
+step "msaa 4x, built-in" 40 "$out/.msaa.md" "$atrium" bench --modes tiled-deferred,clustered-deferred,visibility-buffer --views 1 \
+  --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --lights 1024 --msaa 4 --lighting-stage fragment,compute
 gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
@@ -248,6 +253,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   for scene in built-in sponza grid; do
     section "Visibility buffer against clustered-deferred and forward, $scene, 1,024 lights, compute stage" "$out/.visibility-$scene.md"
   done
+  section "MSAA 4x, both lighting stages, built-in scene, 1,024 lights" "$out/.msaa.md"
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
   section "Pictures" "$out/.render-sponza.txt"

@@ -123,7 +123,7 @@ int run_compare(const CliOptions& options) {
   compared.lighting_stage = LightingStage::Fragment;
   World world(compared);
   TechniqueOptions& technique_options = world.registry().resource<RendererSettings>().technique_options;
-  // By default both stages, less one this context or --msaa cannot run (said once).
+  // By default both stages, less one this context cannot run (said once).
   std::vector<LightingStage> stages = options.lighting_stages;
   if (stages.empty()) {
     for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute}) {

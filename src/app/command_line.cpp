@@ -389,13 +389,13 @@ const std::vector<OptionSpec>& option_table() {
        }},
       {"--lighting-stage", "S", kWindow | kRender,
        "where the full-screen passes run (the deferred modes' lighting, every mode's tone map): fragment (full-screen "
-       "triangles), compute (one invocation per pixel, stored with imageStore; not with --msaa or --no-compute) or auto "
-       "(default, or the scene file's \"lighting_stage\": compute on GPUs, fragment on software renderers, with MSAA and "
-       "on the compute-free tier)",
+       "triangles), compute (one invocation per pixel, stored with imageStore, with MSAA the edges' samples shared out "
+       "over the work group; not with --no-compute) or auto (default, or the scene file's \"lighting_stage\": compute on "
+       "GPUs, fragment on software renderers and on the compute-free tier)",
        [](std::string_view value, CliOptions& o) { o.lighting_stage = parse_lighting_stage(value); }},
       {"--lighting-stage", "LIST", kCompare | kBench,
        "measure each of these stages (fragment, compute, auto; compare: default fragment,compute, leaving out a stage the "
-       "context or --msaa cannot run; bench: default auto)",
+       "context cannot run; bench: default auto)",
        [](std::string_view value, CliOptions& o) {
          o.lighting_stages = parse_list<LightingStage>("--lighting-stage", value, "stages", parse_lighting_stage);
        }},

@@ -39,6 +39,8 @@ grep -q "^compute .* ms, .* Gflop/s" "$report" || fail "no stage probe in the re
 grep -q "^## 256 lights, compute stage" "$report" || fail "no million-light step (256 in --quick)"
 [ "$(grep -c "^## Clustered and tiled lists, compute stage" "$report")" = 5 ] || fail "not every cluster grid measured"
 [ "$(grep -c "^## Light assignment \(scatter\|gather\), compute stage" "$report")" = 4 ] || fail "not every light assignment measured"
+grep -q "^| lights | tiled-deferred/fragment | clustered-deferred/fragment | visibility-buffer/fragment | tiled-deferred/compute | clustered-deferred/compute | visibility-buffer/compute |" "$report" ||
+  fail "no MSAA table of both stages in the report"
 grep -q "^| clustered-deferred | 16 | 1 .*| 16x9x32 clusters, gather at density [0-9.]* | [^|]* |$" "$report" || fail "no gathered clustered row at 160x90: $(cat "$report")"
 for scene in atrium sponza shadows; do
   csv=$work/out/bench-$scene.csv

@@ -17,8 +17,9 @@ std::span<const GBuffer::Target> GBuffer::targets(GBufferLayout layout) {
   return kFullLayout;
 }
 
-GBuffer::GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples) : layout_(layout), samples_(samples) {
-  if (samples_ > 1) edges_ = &shaders.get({"post/fullscreen.vert", "deferred/edges.frag"}, defines());
+GBuffer::GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples, EdgeMarks marks)
+    : layout_(layout), samples_(samples) {
+  if (samples_ > 1 && marks == EdgeMarks::Stencil) edges_ = &shaders.get({"post/fullscreen.vert", "deferred/edges.frag"}, defines());
 }
 
 std::vector<gfx::ShaderDefine> GBuffer::defines(GBufferLayout layout) {

@@ -47,9 +47,14 @@ class GBuffer {
   // distance to the camera.
   static constexpr std::array<Target, 2> kThinLayout{{{"normal-roughness", GL_RGBA16}, {"distance", GL_R32F}}};
 
+  // With MSAA, whether the geometry pass then marks the edges in the stencil
+  // (deferred/edges.frag): fragment lighting passes and light volumes test
+  // it; the compute lighting stage finds the edges itself (common/lighting_main.glsl).
+  enum class EdgeMarks : std::uint8_t { Stencil, None };
+
   // `samples` > 1: multisampled targets (the renderer's --msaa), edges marked
-  // after the geometry pass.
-  GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples);
+  // after the geometry pass as `marks` says.
+  GBuffer(gfx::ShaderLibrary& shaders, GBufferLayout layout, int samples, EdgeMarks marks = EdgeMarks::Stencil);
 
   // The frame's targets as "gbuffer.<target>" transients of `pass`, which
   // writes them first, `size` pixels with samples(); the scene depth
@@ -60,8 +65,8 @@ class GBuffer {
   // This frame's targets (after create_targets).
   [[nodiscard]] std::span<const render::ResourceId> resources() const { return {resources_.data(), targets().size()}; }
 
-  // Fills the G-buffer with the opaque and masked draw items; with MSAA then
-  // sets kEdgeStencilBit on the pixels whose samples differ.
+  // Fills the G-buffer with the opaque and masked draw items; with MSAA and
+  // EdgeMarks::Stencil then sets kEdgeStencilBit on the pixels whose samples differ.
   void draw_geometry(const render::PassResources& res, gfx::ShaderProgram& program, const render::FrameContext& frame);
   // Binds the targets to texture units 0.. for lighting passes.
   void bind_textures(const render::PassResources& res) const;
@@ -104,7 +109,7 @@ class GBuffer {
 
   GBufferLayout layout_;
   int samples_;
-  gfx::ShaderProgram* edges_ = nullptr;  // with MSAA: shaders/deferred/edges.frag
+  gfx::ShaderProgram* edges_ = nullptr;  // with MSAA and stencil marks: shaders/deferred/edges.frag
   glm::ivec2 size_{0};
   std::array<render::ResourceId, kMaxTargets> resources_;  // this frame's, set by create_targets
   render::ResourceId depth_;

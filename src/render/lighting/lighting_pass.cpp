@@ -15,16 +15,15 @@ LightingStage resolve_lighting_stage(const TechniqueOptions& options) {
         throw gfx::ResourceLimitError("--lighting-stage compute needs compute shaders and storage images, which the compute-free "
                                       "tier does not use; use --lighting-stage fragment or auto there");
       }
-      if (options.msaa > 1) {
-        throw gfx::ResourceLimitError("--lighting-stage compute with --msaa " + std::to_string(options.msaa) +
-                                      ": the compute stage does not shade MSAA edges per sample; use --lighting-stage fragment or auto "
-                                      "with MSAA");
-      }
       return LightingStage::Compute;
     case LightingStage::Automatic: break;
   }
-  if (options.compute_free || options.msaa > 1 || gfx::is_software_renderer()) return LightingStage::Fragment;
+  if (options.compute_free || gfx::is_software_renderer()) return LightingStage::Fragment;
   return LightingStage::Compute;
+}
+
+GBuffer::EdgeMarks lighting_edge_marks(const TechniqueOptions& options) {
+  return resolve_lighting_stage(options) == LightingStage::Compute ? GBuffer::EdgeMarks::None : GBuffer::EdgeMarks::Stencil;
 }
 
 std::string_view lighting_stage_name(LightingStage stage) { return kLightingStageNames[static_cast<std::size_t>(stage)]; }

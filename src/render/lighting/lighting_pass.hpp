@@ -29,9 +29,11 @@ using render::kDiffuseLightImageUnit, render::kDisplayImageUnit, render::kLitCol
 
 // The stage `options` ask for, Automatic resolved for the current context
 // (never Automatic). Throws gfx::ResourceLimitError naming what is missing
-// when the compute stage is asked for where it cannot run: the compute-free
-// tier, or MSAA (the compute stage does not shade edges per sample).
+// when the compute stage is asked for where it cannot run: the compute-free tier.
 [[nodiscard]] LightingStage resolve_lighting_stage(const TechniqueOptions& options);
+// The edge marks a G-buffer read only by full-screen lighting passes needs:
+// none when those run in compute.
+[[nodiscard]] GBuffer::EdgeMarks lighting_edge_marks(const TechniqueOptions& options);
 [[nodiscard]] std::string_view lighting_stage_name(LightingStage stage);
 
 // Runs a compute program over every pixel of `size` in the program's own work

@@ -25,7 +25,7 @@ ClusteredTechnique::ClusteredTechnique(render::GpuAssets& gpu, const TechniqueOp
                          : std::nullopt),
       shading_(deferred ? nullptr : &gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
-      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa, lighting::lighting_edge_marks(options)) {}
 
 void ClusteredTechnique::resize(const render::FrameTargets& targets) { clusters_.resize(targets.size); }
 

@@ -17,7 +17,7 @@ DeferredTechnique::DeferredTechnique(render::GpuAssets& gpu, const TechniqueOpti
       geometry_(gpu.shaders().get({"common/mesh.vert", "deferred/geometry.frag"})),
       lighting_(gpu.shaders(), "deferred/lighting", lighting_defines(cull_by_radius), options),
       forward_(gpu.shaders().get({"common/mesh.vert", "forward/shade.frag"})),
-      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa, lighting::lighting_edge_marks(options)) {}
 
 void DeferredTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
   render::add_geometry_pass(graph, gbuffer_, geometry_, frame, targets);

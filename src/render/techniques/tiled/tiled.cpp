@@ -19,7 +19,7 @@ TiledTechnique::TiledTechnique(render::GpuAssets& gpu, const TechniqueOptions& o
       blended_depth_(gpu.shaders().get({"common/mesh.vert", "common/depth_only.frag"}, {{"POSITION_ONLY"}})),
       blended_bounds_(compute_free_ ? nullptr : &gpu.shaders().get({"tiled/tile_bounds.comp"}, {{"BLENDED"}})),
       blended_(gpu.shaders().get({"common/mesh.vert", "tiled/shade.frag"})),
-      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa) {}
+      gbuffer_(gpu.shaders(), options.gbuffer_layout, options.msaa, lighting::lighting_edge_marks(options)) {}
 
 void TiledTechnique::resize(const render::FrameTargets& targets) {
   tiles_ = (glm::uvec2(targets.size) + glm::uvec2(kTileSize - 1)) / glm::uvec2(kTileSize);
