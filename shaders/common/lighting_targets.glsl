@@ -23,19 +23,22 @@
 // the samples that show it). EACH_SHADED_SAMPLE runs a statement per such
 // sample, LIT_AT is the sample's address in a lit image.
 #ifdef MSAA_SAMPLES
-#define LIT_IMAGE image2DMS
 uint g_shaded_samples = (1u << MSAA_SAMPLES) - 1u;
 #define EACH_SHADED_SAMPLE(statement) for (int lit_sample = 0; lit_sample < MSAA_SAMPLES; ++lit_sample) { if ((g_shaded_samples & (1u << lit_sample)) != 0u) { statement; } }
 #define LIT_AT g_shaded_pixel, lit_sample
+layout(rgba16f, binding = 2) uniform LIT_ACCESS image2DMS u_lit_color;
+#ifdef SPLIT_LIGHTING
+layout(rgba16f, binding = 3) uniform LIT_ACCESS image2DMS u_lit_diffuse;
+layout(rgba16f, binding = 4) uniform LIT_ACCESS image2DMS u_lit_specular;
+#endif
 #else
-#define LIT_IMAGE image2D
 #define EACH_SHADED_SAMPLE(statement) { statement; }
 #define LIT_AT g_shaded_pixel
-#endif
-layout(rgba16f, binding = 2) uniform LIT_ACCESS LIT_IMAGE u_lit_color;
+layout(rgba16f, binding = 2) uniform LIT_ACCESS image2D u_lit_color;
 #ifdef SPLIT_LIGHTING
-layout(rgba16f, binding = 3) uniform LIT_ACCESS LIT_IMAGE u_lit_diffuse;
-layout(rgba16f, binding = 4) uniform LIT_ACCESS LIT_IMAGE u_lit_specular;
+layout(rgba16f, binding = 3) uniform LIT_ACCESS image2D u_lit_diffuse;
+layout(rgba16f, binding = 4) uniform LIT_ACCESS image2D u_lit_specular;
+#endif
 #endif
 
 void write_lighting(vec3 unlit, LightSum sum) {

@@ -3,8 +3,15 @@
 // hash of each pixel's value (SHOW_VALUE), or of the draw (SHOW_DRAW: the
 // primitive instance) or material (SHOW_MATERIAL) that the visibility
 // buffer's triangle identifier names, through its units and the frame's
-// instance records. Black where the value is 0 (no geometry).
+// instance records. Black where the value is 0 (no geometry). With MSAA
+// SHOW_SHARED marks instead, in red over a dark veil, the pixels whose samples
+// show two surfaces or more (surface_groups): those the resolve shades more than once.
 #include "common/frame.glsl"
+#ifdef SHOW_SHARED
+// Surfaces are rebuilt, not evaluated: no texture is sampled.
+#define EXPLICIT_GRADIENTS
+#include "common/material.glsl"
+#endif
 #include "visibility/visibility.glsl"
 
 layout(location = 0) out vec4 out_color;
@@ -20,6 +27,13 @@ vec3 hashed_colour(uint x) {
 }
 
 void main() {
+#ifdef SHOW_SHARED
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  uint ids[kSamples], group_id[kSamples], group_mask[kSamples];
+  for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
+  bool shared_pixel = surface_groups(pixel, ids, kAnyMaterial, group_id, group_mask) > 1;
+  out_color = shared_pixel ? vec4(1.0, 0.1, 0.1, 1.0) : vec4(0.0, 0.0, 0.0, 0.6);
+#else
   uint id = texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r;
   if (id == 0u) {
     out_color = vec4(0.0, 0.0, 0.0, 1.0);
@@ -34,4 +48,5 @@ void main() {
   uint value = id;
 #endif
   out_color = vec4(hashed_colour(value), 1.0);
+#endif
 }

@@ -155,4 +155,59 @@ VisibleSurface visible_surface(ivec2 pixel, Instance instance, uint triangle) {
   s.front_facing = counter_clockwise != mirrored;
   return s;
 }
+// Whether triangle surfaces `a` and `b`, rebuilt at the same pixel, feed the
+// material and the lights the same inputs, within what the deferred modes'
+// edge test lets pass (gbuffer_samples_differ): position within 0.1% of the
+// distance, normals within about 2 degrees, tangents, colours and texture
+// coordinates alike (the latter within 1% of a pixel's step, taken from
+// g_uv_dx/g_uv_dy of the surface rebuilt last). Two triangles of one flat or
+// smooth surface meet this on the pixels their shared edge crosses.
+bool same_surface(VisibleSurface a, VisibleSurface b) {
+  if (a.material != b.material || a.front_facing != b.front_facing) return false;
+  float range = length(a.position - u_camera_position.xyz);
+  if (distance(a.position, b.position) > 1e-3 * range) return false;
+  if (dot(normalize(a.normal), normalize(b.normal)) < 0.9995) return false;
+  if (any(greaterThan(abs(a.tangent - b.tangent), vec4(0.02))) || any(greaterThan(abs(a.color - b.color), vec4(0.5 / 255.0)))) {
+    return false;
+  }
+  for (int slot = 0; slot < 5; ++slot) {
+    vec2 texel_step = abs(g_uv_dx[slot]) + abs(g_uv_dy[slot]);
+    if (any(greaterThan(abs(a.uv[slot] - b.uv[slot]), 0.01 * texel_step + 1e-7))) return false;
+  }
+  return true;
+}
+
+// The surfaces that `pixel`'s samples (identifiers `ids`) show, each shaded
+// once for all its samples: samples of one triangle always share, samples of
+// different triangles when same_surface() holds. Only triangles of `material`
+// count (kAnyMaterial: all). Fills each group's first identifier and sample
+// mask; returns how many groups.
+const uint kAnyMaterial = 0xffffffffu;
+int surface_groups(ivec2 pixel, uint ids[kSamples], uint material, out uint group_id[kSamples], out uint group_mask[kSamples]) {
+  VisibleSurface kept[kSamples];
+  int groups = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    uint id = ids[i];
+    bool seen = id == 0u;
+    for (int j = 0; j < i; ++j) seen = seen || ids[j] == id;
+    if (seen) continue;
+    uint triangle;
+    Instance instance = visible_instance(id, triangle);
+    if (material != kAnyMaterial && instance.material.x != material) continue;
+    uint mask = 0u;
+    for (int j = i; j < kSamples; ++j) mask |= ids[j] == id ? 1u << j : 0u;
+    VisibleSurface surface = visible_surface(pixel, instance, triangle);
+    int joined = -1;
+    for (int g = 0; g < groups && joined < 0; ++g) joined = same_surface(kept[g], surface) ? g : -1;
+    if (joined >= 0) {
+      group_mask[joined] |= mask;
+      continue;
+    }
+    kept[groups] = surface;
+    group_id[groups] = id;
+    group_mask[groups] = mask;
+    ++groups;
+  }
+  return groups;
+}
 #endif

@@ -136,6 +136,12 @@ const std::array kViews{
               has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Draw>},
     DebugView{"materials", "the material each pixel's resolve runs, a colour each: its tiles' classification (visibility-buffer)", {},
               kVisibilityIdsTarget, {}, has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Material>},
+    DebugView{"msaa-surfaces", "the pixels whose samples show two surfaces or more, each shaded apart, in red (visibility-buffer, with --msaa)",
+              {}, {}, {},
+              [](const FrameGraph& graph, const TechniqueOptions& options) {
+                return options.msaa > 1 && has_resource<kVisibilityIdsTarget>(graph, options);
+              },
+              identifiers<DebugViews::Identify::Shared>},
 };
 
 }  // namespace
@@ -316,10 +322,16 @@ void DebugViews::show_counts(ResourceId counts, const DebugViewFrame& frame, con
 void DebugViews::show_identifiers(ResourceId identifiers, const PassResources& res, Identify what) {
   // Draw and Material look the identifier up in the visibility buffer's units
   // and the frame's instances, which its passes left bound.
-  static constexpr const char* kDefines[] = {"SHOW_VALUE", "SHOW_DRAW", "SHOW_MATERIAL"};
+  static constexpr const char* kDefines[] = {"SHOW_VALUE", "SHOW_DRAW", "SHOW_MATERIAL", "SHOW_SHARED"};
   glBindTextureUnit(kVisibilityUnit, res.texture(identifiers));
   gpu_.shaders().get({"post/fullscreen.vert", "debug/identifiers.frag"}, {{kDefines[static_cast<int>(what)]}}).use();
+  const bool over_image = what == Identify::Shared;
+  if (over_image) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+  }
   fullscreen_.draw();
+  if (over_image) glDisable(GL_BLEND);
 }
 
 void DebugViews::show_shadow_atlas(ResourceId atlas, const PassResources& res) {

@@ -186,8 +186,9 @@ class DebugViews {
   // A shadow atlas's depths.
   void show_shadow_atlas(ResourceId atlas, const PassResources& res);
   // Identifiers (R32UI) as colours: each value, or the visibility buffer's
-  // draw (primitive instance) or material that a triangle identifier names.
-  enum class Identify { Value, Draw, Material };
+  // draw (primitive instance) or material that a triangle identifier names;
+  // or, blended over the image, the pixels whose samples show several triangles.
+  enum class Identify { Value, Draw, Material, Shared };
   void show_identifiers(ResourceId identifiers, const PassResources& res, Identify what);
   // A full-screen debug shader over the frame's G-buffer (outlines, MSAA
   // edges), blended over the image when `blend`.
