@@ -263,7 +263,7 @@ const std::vector<OptionSpec>& option_table() {
       {"--msaa", "N", kDrawing,
        "multisample anti-aliasing with N = 1 (off, the default), 2, 4 or 8 samples per pixel, up to what the driver "
        "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges), the "
-       "visibility buffer each triangle a pixel's samples show once",
+       "visibility buffer each surface a pixel's samples show once (debug view msaa-surfaces)",
        [](std::string_view value, CliOptions& o) {
          const int samples = parse_number<int>("--msaa", value, 1, 8);
          if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");

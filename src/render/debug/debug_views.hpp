@@ -187,7 +187,7 @@ class DebugViews {
   void show_shadow_atlas(ResourceId atlas, const PassResources& res);
   // Identifiers (R32UI) as colours: each value, or the visibility buffer's
   // draw (primitive instance) or material that a triangle identifier names;
-  // or, blended over the image, the pixels whose samples show several triangles.
+  // or, blended over the image, the pixels whose samples show several surfaces.
   enum class Identify { Value, Draw, Material, Shared };
   void show_identifiers(ResourceId identifiers, const PassResources& res, Identify what);
   // A full-screen debug shader over the frame's G-buffer (outlines, MSAA

@@ -8,7 +8,7 @@
 // raster pipeline touches a pixel's material once, not once per overdraw, and
 // no G-buffer travels between geometry and light. Blended surfaces are shaded
 // forward+ from the same lists afterwards, as in clustered-deferred. With
-// MSAA it stores an identifier a sample and shades each triangle a pixel
+// MSAA it stores an identifier a sample and shades each surface a pixel
 // shows once. Needs compute shaders (the technique table's ModeNeeds).
 #pragma once
 
