@@ -5,6 +5,8 @@
 #   ./test.sh             Release build in build/
 #   ./test.sh --sanitize  the same suite built with ASan and UBSan in build-sanitize/, less the
 #                         browser tests (label browser): WebAssembly, which the sanitizers do not see;
+#                         less the run on Mesa's zink (label zink): the same test program runs
+#                         sanitized on llvmpipe, and zink's bindless path adds a few lines of C++;
 #                         and less four kinds of test whose C++ the rest of the sanitized run goes
 #                         through already, at a fraction of their cost under ASan (~250 s of test time):
 #                         GpuWaits (they count a frame's GL calls that could wait for the GPU, which
@@ -23,11 +25,13 @@ case "${1:-}" in
   --sanitize) build=build-sanitize
     flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
            -DATRIUM_SANITIZE=ON -DATRIUM_BUILD_BENCH=OFF)
-    skip=(-LE browser -E '^(GpuWaits\.|RenderSize\.ABigSquareImage|DebugViewRender\.EveryViewAModeOffers|ModelRender\.SponzaExportedAsObj)') ;;
+    skip=(-LE 'browser|zink' -E '^(GpuWaits\.|RenderSize\.ABigSquareImage|DebugViewRender\.EveryViewAModeOffers|ModelRender\.SponzaExportedAsObj)') ;;
   "") ;;
   *) echo "usage: ./test.sh [--sanitize]" >&2; exit 2 ;;
 esac
 ./scripts/install-deps.sh
+# Mesa's zink beside the system's Mesa, for the bindless-texture tests (label zink).
+./scripts/install-zink.sh
 cmake -S . -B "$build" "${flags[@]}" >/dev/null
 cmake --build "$build" -j"$(nproc)"
 # The page that the browser test (web.browser) opens in headless Chromium.

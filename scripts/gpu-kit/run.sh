@@ -163,13 +163,18 @@ for assignment in scatter gather; do
 done
 # The visibility buffer against the G-buffer it replaces and forward, each
 # scene at 1,024 lights (issue 42's goals): its geometry pass ("visibility")
-# and its resolve ("material classification", "resolve") are columns of the pass table.
+# and its resolve ("resolve", and "material classification" when bound) are
+# columns of the pass table. Auto binds materials bindless where the driver
+# has ARB_bindless_texture; the bound path (one dispatch per material) beside it.
 grid=$kit/scenes/courtyard-grid.json
 for scene in built-in sponza grid; do
   case $scene in built-in) file=() ;; sponza) file=("$sponza") ;; grid) file=("$grid") ;; esac
   step "visibility buffer, $scene" 25 "$out/.visibility-$scene.md" "$atrium" bench "${file[@]}" \
     --modes forward,clustered-deferred,visibility-buffer --views 1 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" \
     --frame-limit 1000 --lighting-stage compute
+  step "visibility buffer bound, $scene" 20 "$out/.visibility-bound-$scene.md" "$atrium" bench "${file[@]}" \
+    --modes visibility-buffer --views 1 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" \
+    --frame-limit 1000 --lighting-stage compute --material-binding bound
 done
 # Occlusion culling where it tests: the grid's street view hides most of what
 # is in view; the same triangles either way, the GPU path with nothing read back.
@@ -252,6 +257,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   done
   for scene in built-in sponza grid; do
     section "Visibility buffer against clustered-deferred and forward, $scene, 1,024 lights, compute stage" "$out/.visibility-$scene.md"
+    section "Visibility buffer with materials bound (one dispatch per material), $scene, 1,024 lights" "$out/.visibility-bound-$scene.md"
   done
   section "MSAA 4x, both lighting stages, built-in scene, 1,024 lights" "$out/.msaa.md"
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"

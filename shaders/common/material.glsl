@@ -7,18 +7,29 @@
 // evaluate_material, so that mip levels match the raster path's.
 #include "surface.glsl"
 
-#ifdef EXPLICIT_GRADIENTS
-vec2 g_uv_dx[5], g_uv_dy[5];
-#define SAMPLE_SLOT(sampler, slot, uv) textureGrad(sampler, uv, g_uv_dx[slot], g_uv_dy[slot])
+#ifdef BINDLESS_TEXTURES
+// With BINDLESS_TEXTURES (and EXPLICIT_GRADIENTS: the visibility buffer's
+// one-dispatch resolve) each slot is sampled through the material's handle,
+// not a bound unit; the caller keeps `material` dynamically uniform
+// (ARB_bindless_texture asks it). Five handles a material, by slot; C++ twin:
+// MaterialTextures in src/render/techniques/visibility/visibility.hpp.
+layout(std430, binding = 29) readonly buffer MaterialTextures { uvec2 u_material_textures[]; };
+#define SLOT_SAMPLER(sampler, slot) sampler2D(u_material_textures[material * 5u + uint(slot)])
 #else
-#define SAMPLE_SLOT(sampler, slot, uv) texture(sampler, uv)
-#endif
-
+#define SLOT_SAMPLER(sampler, slot) sampler
 layout(binding = 0) uniform sampler2D u_base_color_texture;
 layout(binding = 1) uniform sampler2D u_metallic_roughness_texture;
 layout(binding = 2) uniform sampler2D u_normal_texture;
 layout(binding = 3) uniform sampler2D u_occlusion_texture;
 layout(binding = 4) uniform sampler2D u_emissive_texture;
+#endif
+
+#ifdef EXPLICIT_GRADIENTS
+vec2 g_uv_dx[5], g_uv_dy[5];
+#define SAMPLE_SLOT(sampler, slot, uv) textureGrad(SLOT_SAMPLER(sampler, slot), uv, g_uv_dx[slot], g_uv_dy[slot])
+#else
+#define SAMPLE_SLOT(sampler, slot, uv) texture(SLOT_SAMPLER(sampler, slot), uv)
+#endif
 
 #include "material_table.glsl"
 

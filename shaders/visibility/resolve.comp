@@ -1,15 +1,20 @@
 #version 450 core
-// The visibility buffer's resolve for one material (u_material, its textures
-// bound at units 0-4): one work group per tile that holds it (the
-// classification's list, dispatched indirectly). Each of its pixels rebuilds
-// its surface from the triangle it shows, evaluates the material with explicit
-// gradients and shades it with its cluster's lights, storing the lit result
+// The visibility buffer's resolve: each of its pixels rebuilds its surface
+// from the triangle it shows, evaluates the material with explicit gradients
+// and shades it with its cluster's lights, storing the lit result
 // (common/lighting_targets.glsl) once: no G-buffer between geometry and light.
-// With MSAA each surface a pixel's samples show is shaded once, at the pixel
-// centre as a raster pass shades it, and stored to the samples that show it:
-// a pixel inside a triangle costs one shading, and so does one that two
-// triangles of a flat or smooth surface share (surface_groups in
-// visibility.glsl); silhouettes, creases and material seams cost one each.
+// Bound (the default variant): one dispatch per material (u_material, its
+// textures bound at units 0-4), one work group per tile the classification
+// listed for it. BINDLESS_TEXTURES: one dispatch, one work group per tile of
+// the frame, which gives the background to empty samples (the classification's
+// job otherwise) and shades the materials its tile shows one after the other,
+// each sampled by handle: the loop keeps the handle dynamically uniform, as
+// ARB_bindless_texture asks. With MSAA each surface a pixel's samples show is
+// shaded once, at the pixel centre as a raster pass shades it, and stored to
+// the samples that show it (surface_groups in visibility.glsl).
+#ifdef BINDLESS_TEXTURES
+#extension GL_ARB_bindless_texture : require
+#endif
 #define COMPUTE_STAGE
 #define EXPLICIT_GRADIENTS
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,19 +24,94 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/cluster_shading.glsl"
 #include "common/lighting_targets.glsl"
 #include "visibility/visibility.glsl"
+
+// Shades `triangle` of `instance` (whose material is `material`) where `pixel`
+// shows it, storing to the samples lighting_targets.glsl is told.
+void shade(ivec2 pixel, Instance instance, uint triangle, uint material) {
+  VisibleSurface v = visible_surface(pixel, instance, triangle);
+  Surface s = evaluate_material(material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
+  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+}
+
+#ifdef BINDLESS_TEXTURES
+const uint kNone = 0xffffffffu;
+// Each surface's material, a slot per sample (kNone: none there), then the
+// tile's distinct materials: the loop over them is the same for every invocation.
+shared uint s_surface_material[64 * kSamples];
+shared uint s_materials[64 * kSamples];
+shared uint s_material_count;
+
+void main() {
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
+  g_shaded_pixel = pixel;
+  if (gl_LocalInvocationIndex == 0u) s_material_count = 0u;
+  uint first = gl_LocalInvocationIndex * uint(kSamples);
+  uint background = 0u;  // the samples without geometry, a bit each
+#ifdef MSAA_SAMPLES
+  uint ids[kSamples], group_id[kSamples], group_mask[kSamples];
+  int groups = 0;
+  if (inside) {
+    for (int i = 0; i < kSamples; ++i) {
+      ids[i] = fetch_sample(u_visibility, pixel, i).r;
+      if (ids[i] == 0u) background |= 1u << i;
+    }
+    groups = surface_groups(pixel, ids, kAnyMaterial, group_id, group_mask);
+  }
+  for (int g = 0; g < kSamples; ++g) {
+    uint triangle;
+    s_surface_material[first + uint(g)] = g < groups ? visible_instance(group_id[g], triangle).material.x : kNone;
+  }
+  g_shaded_samples = background;
+#else
+  uint id = inside ? texelFetch(u_visibility, pixel, 0).r : 0u;
+  if (inside && id == 0u) background = 1u;
+  uint triangle;
+  Instance instance;
+  uint material = kNone;
+  if (id != 0u) {
+    instance = visible_instance(id, triangle);
+    material = instance.material.x;
+  }
+  s_surface_material[first] = material;
+#endif
+  if (background != 0u) write_background();
+  barrier();
+  // The first slot of the tile to hold a material lists it.
+  for (int i = 0; i < kSamples; ++i) {
+    uint m = s_surface_material[first + uint(i)];
+    if (m == kNone) continue;
+    bool listed = false;
+    for (uint k = 0u; k < first + uint(i) && !listed; ++k) listed = s_surface_material[k] == m;
+    if (!listed) s_materials[atomicAdd(s_material_count, 1u)] = m;
+  }
+  barrier();
+  uint count = s_material_count;
+  for (uint k = 0u; k < count; ++k) {
+    uint m = s_materials[k];
+#ifdef MSAA_SAMPLES
+    for (int g = 0; g < groups; ++g) {
+      if (s_surface_material[first + uint(g)] != m) continue;
+      g_shaded_samples = group_mask[g];
+      uint triangle;
+      Instance instance = visible_instance(group_id[g], triangle);
+      shade(pixel, instance, triangle, m);
+    }
+#else
+    if (material == m) shade(pixel, instance, triangle, m);
+#endif
+  }
+}
+#else
 #include "visibility/material_tiles.glsl"
 
 uniform uint u_material;
 
-// Shades the triangle `id` names where `pixel` shows it, if its material is
-// u_material, storing to the samples lighting_targets.glsl is told.
+// Shades the triangle `id` names where `pixel` shows it, if its material is u_material.
 void shade_triangle(ivec2 pixel, uint id) {
   uint triangle;
   Instance instance = visible_instance(id, triangle);
-  if (instance.material.x != u_material) return;
-  VisibleSurface v = visible_surface(pixel, instance, triangle);
-  Surface s = evaluate_material(v.material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
-  write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+  if (instance.material.x == u_material) shade(pixel, instance, triangle, u_material);
 }
 
 void main() {
@@ -41,7 +121,6 @@ void main() {
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   g_shaded_pixel = pixel;
 #ifdef MSAA_SAMPLES
-  // Each surface the samples show once, for every sample that shows it.
   uint ids[kSamples], group_id[kSamples], group_mask[kSamples];
   for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
   int groups = surface_groups(pixel, ids, u_material, group_id, group_mask);
@@ -55,3 +134,4 @@ void main() {
   if (id != 0u) shade_triangle(pixel, id);
 #endif
 }
+#endif

@@ -171,6 +171,7 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.gpu_ms = percentile(gpu_ms, 0.5);
   // The camera holds still: every measured frame submits the same draws.
   row.lighting_stage = world.renderer().stats().lighting_stage;
+  row.technique_variant = world.renderer().stats().technique_variant;
   row.triangles_drawn = world.renderer().stats().triangles_drawn;
   row.triangles_occluded = world.renderer().stats().triangles_occluded;
   row.draw_calls = world.renderer().stats().draw_calls;
@@ -449,7 +450,7 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -472,7 +473,8 @@ std::string bench_csv(const BenchResult& result) {
         << (std::isnan(row.median_ms) ? std::string() : std::to_string(row.gpu_waits)) << ",\"" << (row.skipped.empty() ? row.stopped : row.skipped)
         << "\","
         << (std::isnan(row.median_ms) ? std::string_view() : kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
-        << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << "\n";
+        << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << ",\"" << row.technique_variant
+        << "\"\n";
   }
   return csv.str();
 }

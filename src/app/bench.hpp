@@ -62,6 +62,7 @@ struct BenchRow {
   // clusters, gather"; empty for modes without lists): --cluster-grid and
   // --light-assignment as they ran.
   std::string light_lists;
+  std::string technique_variant;  // FrameStats::technique_variant
   int shadows = 0;  // lights with shadow maps (--shadows)
   // The stage asked for (a sweep's) and the one the full-screen passes ran in.
   LightingStage stage_asked = LightingStage::Automatic;

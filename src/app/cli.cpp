@@ -83,6 +83,7 @@ int run_render(const CliOptions& options) {
                 stats.shadows.lights, stats.shadows.maps_rendered, stats.shadows.maps_reused, stats.shadows.triangles,
                 stats.shadows.atlas_size, stats.shadows.atlas_size);
   }
+  if (!stats.technique_variant.empty()) std::printf("technique: %s\n", stats.technique_variant.c_str());
   if (stats.light_list_entries > 0) {
     std::printf("light lists: %u entries (%s, density %.4f), %u overflowed frames%s\n", stats.light_list_entries,
                 std::string(light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density, stats.light_list_overflows,

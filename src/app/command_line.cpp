@@ -242,6 +242,11 @@ const std::vector<OptionSpec>& option_table() {
        "tiled and clustered modes: how the light lists are built, scatter (each light visits the bins it may reach), "
        "gather (each bin tests every light) or auto (default: per frame, gather where lights are dense)",
        set_choice(&TechniqueOptions::light_assignment, kLightAssignmentNames, "light assignment", "assignments")},
+      {"--material-binding", "B", kDrawing,
+       "visibility-buffer: how the resolve reaches the materials' textures, bound (one dispatch per material over "
+       "the tiles that show it) or bindless (one dispatch over every tile, textures by handle; needs "
+       "GL_ARB_bindless_texture) or auto (default: bindless where the context has it)",
+       set_choice(&TechniqueOptions::material_binding, kMaterialBindingNames, "material binding", "bindings")},
       {"--z-slicing", "S", kWindow | kRender | kCompare,
        "clustered modes: depth slices log (default: a first slice to ten near-plane distances, then logarithmic), "
        "plain-log (logarithmic from the near plane) or uniform",

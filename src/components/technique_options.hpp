@@ -1,6 +1,6 @@
 // Settings some lighting techniques read (--cluster-grid, --cluster-bounds,
 // --active-clusters, --z-slicing, --gbuffer, --split-lighting, --msaa, --no-compute,
-// --lighting-stage, --light-assignment). Plain data, kept apart from the GL-facing technique interface so
+// --lighting-stage, --light-assignment, --material-binding). Plain data, kept apart from the GL-facing technique interface so
 // that RendererSettings can hold it; a change recreates the technique.
 #pragma once
 
@@ -58,6 +58,17 @@ inline std::string_view light_assignment_label(LightAssignment ran) {
   return ran == LightAssignment::Automatic ? std::string_view("binned on the CPU") : kLightAssignmentNames[static_cast<std::size_t>(ran)];
 }
 
+// How the visibility buffer's resolve reaches the materials' textures
+// (render/techniques/visibility/visibility.hpp). Bound: classification lists
+// each material's tiles and one indirect dispatch per material runs over them
+// with its textures bound (Burns and Hunt's per-material passes, for GL without
+// bindless textures). Bindless: one dispatch over every tile; each work group
+// shades the materials its tile shows in turn, sampling by handle
+// (ARB_bindless_texture): no classification, no per-material dispatches.
+// Automatic takes bindless where the context has the extension.
+enum class MaterialBinding { Automatic, Bound, Bindless };
+inline constexpr std::array<std::string_view, 3> kMaterialBindingNames{"auto", "bound", "bindless"};
+
 // The clustered modes' grid (--cluster-grid): square screen tiles of
 // `tile_pixels` (the default) with dims.z depth slices, so that a cluster
 // covers as many pixels at 1920x1080 as at 320x180 and its list stays as
@@ -111,6 +122,7 @@ struct TechniqueOptions {
   bool compute_free = false;
   LightingStage lighting_stage = LightingStage::Automatic;
   LightAssignment light_assignment = LightAssignment::Automatic;
+  MaterialBinding material_binding = MaterialBinding::Automatic;
   bool operator==(const TechniqueOptions&) const = default;
 };
 

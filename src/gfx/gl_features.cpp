@@ -47,6 +47,7 @@ GlFeatures ask_current_context() {
   f.timer_queries = v >= 33 || has("GL_ARB_timer_query");
   f.debug_output = v >= 43 || has("GL_KHR_debug");
   f.framebuffer_limits = v >= 43 || has("GL_ARB_framebuffer_no_attachments");
+  f.bindless_textures = has("GL_ARB_bindless_texture");
   f.depth_clamp = f.srgb_write_control = f.float_targets = f.norm16_targets = true;
   return f;
 }

@@ -38,6 +38,7 @@ struct GlFeatures {
   bool depth_clamp = false;          // GL_DEPTH_CLAMP (GL 3.2)
   bool srgb_write_control = false;   // GL_FRAMEBUFFER_SRGB (desktop; ES always encodes)
   bool norm16_targets = false;       // GL_RGBA16 colour targets (desktop; ES by extension, left aside)
+  bool bindless_textures = false;    // ARB_bindless_texture: textures sampled by 64-bit handle
   bool float_targets = false;        // float colour targets, blending included (desktop; ES by
                                      // EXT_color_buffer_float and EXT_float_blend, which WebGL
                                      // turns on when asked about)

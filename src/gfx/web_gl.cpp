@@ -37,10 +37,10 @@
   X(glGenerateMipmap) X(glGenerateTextureMipmap) X(glGetBufferParameteri64v) X(glGetBufferSubData) X(glGetError) X(glGetInteger64v) \
   X(glGetIntegerv) X(glGetNamedBufferParameteri64v) X(glGetNamedBufferSubData) X(glGetProgramInfoLog) \
   X(glGetProgramiv) X(glGetQueryObjectiv) X(glGetQueryObjectui64v) X(glGetShaderInfoLog) X(glGetShaderiv) \
-  X(glGetString) X(glGetTexImage) X(glGetTexLevelParameteriv) X(glGetTexParameteriv) X(glGetTextureImage) \
-  X(glGetTextureLevelParameteriv) X(glGetTextureParameteriv) X(glGetUniformBlockIndex) X(glGetUniformLocation) \
+  X(glGetString) X(glGetTexImage) X(glGetTexLevelParameteriv) X(glGetTexParameteriv) X(glGetTextureHandleARB) X(glGetTextureImage) \
+  X(glGetTextureLevelParameteriv) X(glGetTextureParameteriv) X(glGetTextureSamplerHandleARB) X(glGetUniformBlockIndex) X(glGetUniformLocation) \
   X(glIsBuffer) X(glIsFramebuffer) X(glIsProgram) X(glIsQuery) X(glIsRenderbuffer) X(glIsSampler) X(glIsShader) \
-  X(glIsTexture) X(glIsVertexArray) X(glLinkProgram) X(glMapBufferRange) X(glMapNamedBufferRange) X(glMemoryBarrier) \
+  X(glIsTexture) X(glIsVertexArray) X(glLinkProgram) X(glMakeTextureHandleResidentARB) X(glMapBufferRange) X(glMapNamedBufferRange) X(glMemoryBarrier) \
   X(glMultiDrawElementsIndirect) X(glMultiDrawElementsIndirectCountARB) X(glNamedBufferData) X(glNamedBufferStorage) \
   X(glNamedBufferSubData) X(glNamedFramebufferDrawBuffer) X(glNamedFramebufferDrawBuffers) \
   X(glNamedFramebufferTexture) X(glPixelStorei) X(glPolygonOffset) X(glProgramUniform1f) X(glProgramUniform1i) \

@@ -33,6 +33,7 @@ inline constexpr unsigned kCommandTemplateBinding = 16, kCullOutBinding = 17, kC
 inline constexpr unsigned kVisibilityUnitsBinding = 24;  // Units: the visibility buffer's identifiers (render/frame/draw_list.hpp)
 inline constexpr unsigned kVertexPoolBinding = 25, kIndexPoolBinding = 26;  // VertexPool, IndexPool: GpuAssets' pools
 inline constexpr unsigned kMaterialDispatchBinding = 27, kMaterialTilesBinding = 28;  // the visibility buffer's material tiles
+inline constexpr unsigned kMaterialTexturesBinding = 29;  // MaterialTextures: bindless handles (render/techniques/visibility)
 inline constexpr unsigned kReadbackSourceBinding = gfx::kReadbackSourceBinding;  // ReadbackSource, ReadbackSlot: a
 inline constexpr unsigned kReadbackSlotBinding = gfx::kReadbackSlotBinding;      // readback ring's copy (gfx/readback_ring.hpp)
 
@@ -79,6 +80,7 @@ inline constexpr BlockSlot kBlockSlots[] = {
     {"ReadbackSlot", kReadbackSlotBinding},     {"Units", kVisibilityUnitsBinding},
     {"VertexPool", kVertexPoolBinding},         {"IndexPool", kIndexPoolBinding},
     {"MaterialDispatch", kMaterialDispatchBinding}, {"MaterialTileLists", kMaterialTilesBinding},
+    {"MaterialTextures", kMaterialTexturesBinding},
 };
 
 }  // namespace atrium::render

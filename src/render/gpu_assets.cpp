@@ -267,6 +267,15 @@ bool GpuAssets::two_channel(assets::TextureHandle handle) const {
   return handle.valid() && handle.index < two_channel_.size() && two_channel_[handle.index];
 }
 
+GLuint64 GpuAssets::texture_handle(GLuint texture, GLuint sampler) {
+  const auto [it, made] = handles_.try_emplace({texture, sampler}, 0);
+  if (made) {
+    it->second = sampler != 0 ? glGetTextureSamplerHandleARB(texture, sampler) : glGetTextureHandleARB(texture);
+    glMakeTextureHandleResidentARB(it->second);
+  }
+  return it->second;
+}
+
 GLuint GpuAssets::texture(assets::TextureHandle handle) const {
   return handle.valid() && handle.index < textures_.size() ? textures_[handle.index].id() : white_.id();
 }

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "assets/asset_manager.hpp"
@@ -62,6 +63,11 @@ class GpuAssets {
   // The sampler object for `desc` (made by upload for every material slot).
   [[nodiscard]] GLuint sampler(const assets::SamplerDesc& desc) const;
   [[nodiscard]] std::size_t texture_bytes() const { return texture_bytes_; }
+  // The resident bindless handle (ARB_bindless_texture) of `texture` sampled
+  // through `sampler` (0: the texture's own state), made at the first ask.
+  // Both are GpuAssets' own and live as long as it: so does the handle, and
+  // neither's state may change after (the extension freezes it).
+  [[nodiscard]] GLuint64 texture_handle(GLuint texture, GLuint sampler);
   // Shader programs, cached by files and defines.
   [[nodiscard]] gfx::ShaderLibrary& shaders() { return shaders_; }
 
@@ -82,6 +88,7 @@ class GpuAssets {
   gfx::Buffer instance_indices_;
   std::size_t instance_capacity_ = 0;
   std::map<assets::SamplerDesc, gfx::Sampler> samplers_;
+  std::map<std::pair<GLuint, GLuint>, GLuint64> handles_;
   gfx::ShaderLibrary shaders_;
   std::size_t texture_bytes_ = 0;
 };

@@ -338,6 +338,7 @@ void MeshRenderer::take_reports(FrameStats& stats) {
   stats.light_list_overflows = lists.overflowed_frames;
   stats.light_assignment = lists.assignment;
   stats.light_list_density = lists.density;
+  stats.technique_variant = technique_->variant();
 }
 
 // Read-backs come after the frame: the compute stage stored its targets with

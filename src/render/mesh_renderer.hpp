@@ -50,6 +50,7 @@ struct FrameStats {
   double light_list_density = 0.0;  // what the choice of assignment went by (LightIndexList::last_density)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
   std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
+  std::string technique_variant;             // LightingTechnique::variant(): "material binding bindless"
 };
 
 class MeshRenderer {

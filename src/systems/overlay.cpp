@@ -115,6 +115,7 @@ void Overlay::statistics(ecs::Registry& registry) {
                 stats.culled_on_gpu ? "GPU" : "CPU");
   }
   ImGui::Text("full-screen passes in the %s stage", std::string(kLightingStageNames[static_cast<std::size_t>(stats.lighting_stage)]).c_str());
+  if (!stats.technique_variant.empty()) ImGui::Text("%s", stats.technique_variant.c_str());
   if (stats.light_list_entries > 0) {
     ImGui::Text("light lists: %u entries (%s, density %.4f), %u overflowed frames", stats.light_list_entries,
                 std::string(light_assignment_label(stats.light_assignment)).c_str(), stats.light_list_density,
@@ -177,6 +178,7 @@ void Overlay::controls(ecs::Registry& registry) {
   // pictures either way; the pass table shows what each costs.
   enum_combo("lighting stage", kLightingStageNames, settings.technique_options.lighting_stage);
   enum_combo("light assignment", kLightAssignmentNames, settings.technique_options.light_assignment);
+  enum_combo("material binding", kMaterialBindingNames, settings.technique_options.material_binding);
   std::vector<std::string> sample_counts{"off"};
   for (int samples = 2; samples <= max_msaa_samples_; samples *= 2) sample_counts.push_back(std::to_string(samples) + "x");
   int& msaa = settings.technique_options.msaa;

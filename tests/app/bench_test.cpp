@@ -51,7 +51,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 31u);
+  ASSERT_EQ(header.size(), 32u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -68,6 +68,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[28], "light_lists");
   EXPECT_EQ(header[29], "cpu_systems");
   EXPECT_EQ(header[30], "pipelined_ms");
+  EXPECT_EQ(header[31], "technique_variant");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -123,7 +124,7 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
     std::istringstream csv(read_text(folder / "s.csv"));
     std::string line;
     std::getline(csv, line);
-    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms")) << line;
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant")) << line;
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     return rows;
@@ -169,7 +170,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 31u) << line;
+    ASSERT_EQ(f.size(), 32u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     // A pixel grid never has fewer tiles than 16x9 (32x18 pixels: 2-pixel tiles), each cut into 32 slices.
     if (f[0] == "clustered-forward") EXPECT_TRUE(f[28].starts_with("16x9x32 clusters, ")) << f[28];

@@ -39,13 +39,14 @@ grep -q "^compute .* ms, .* Gflop/s" "$report" || fail "no stage probe in the re
 grep -q "^## 256 lights, compute stage" "$report" || fail "no million-light step (256 in --quick)"
 [ "$(grep -c "^## Clustered and tiled lists, compute stage" "$report")" = 5 ] || fail "not every cluster grid measured"
 [ "$(grep -c "^## Light assignment \(scatter\|gather\), compute stage" "$report")" = 4 ] || fail "not every light assignment measured"
+[ "$(grep -c "^## Visibility buffer with materials bound" "$report")" = 3 ] || fail "the visibility buffer's bound path not measured in every scene"
 grep -q "^| lights | tiled-deferred/fragment | clustered-deferred/fragment | visibility-buffer/fragment | tiled-deferred/compute | clustered-deferred/compute | visibility-buffer/compute |" "$report" ||
   fail "no MSAA table of both stages in the report"
 grep -q "^| clustered-deferred | 16 | 1 .*| 16x9x32 clusters, gather at density [0-9.]* | [^|]* |$" "$report" || fail "no gathered clustered row at 160x90: $(cat "$report")"
 for scene in atrium sponza shadows; do
   csv=$work/out/bench-$scene.csv
   [ -s "$csv" ] || fail "$csv is missing"
-  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms$" || fail "$csv has no lighting_stage, light_lists, cpu_systems and pipelined_ms columns"
+  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant$" || fail "$csv has no lighting_stage, light_lists, cpu_systems, pipelined_ms and technique_variant columns"
   grep -q ",compute,\"" "$csv" || fail "$csv has no run in the compute stage"
   # Every mode in the technique table has a row.
   for mode in forward deferred deferred-radius light-volumes tiled-deferred clustered-forward clustered-deferred \

@@ -53,6 +53,9 @@ class LightingTechnique {
     double density = 0.0;  // LightIndexList::last_density()
   };
   [[nodiscard]] virtual ListStats light_lists() { return {}; }
+  // What the technique chose where the options left it a choice, for the
+  // stats lines ("material binding bindless"); empty for most.
+  [[nodiscard]] virtual std::string variant() const { return {}; }
 
  protected:
   // The stats of clustered lists (clustered modes, the visibility buffer).

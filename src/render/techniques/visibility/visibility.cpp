@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "gfx/depth.hpp"
+#include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 #include "render/frame/frame_draws.hpp"
 #include "render/frame/scene_passes.hpp"
@@ -19,16 +20,40 @@ std::vector<gfx::ShaderDefine> identifier_defines(bool masked, int samples) {
   return defines;
 }
 
+std::vector<gfx::ShaderDefine> resolve_defines(bool bindless) {
+  return bindless ? std::vector<gfx::ShaderDefine>{{"BINDLESS_TEXTURES"}} : std::vector<gfx::ShaderDefine>{};
+}
+
 }  // namespace
+
+MaterialBinding resolve_material_binding(const TechniqueOptions& options) {
+  const bool available = !options.compute_free && gfx::gl_features().bindless_textures;
+  switch (options.material_binding) {
+    case MaterialBinding::Bound: return MaterialBinding::Bound;
+    case MaterialBinding::Bindless:
+      if (!available) {
+        throw gfx::ResourceLimitError("--material-binding bindless needs GL_ARB_bindless_texture, which this context lacks; "
+                                      "use --material-binding bound or auto");
+      }
+      return MaterialBinding::Bindless;
+    case MaterialBinding::Automatic: break;
+  }
+  return available ? MaterialBinding::Bindless : MaterialBinding::Bound;
+}
 
 VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options)
     : gpu_(gpu),
+      bindless_(resolve_material_binding(options) == MaterialBinding::Bindless),
       identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false, options.msaa))),
       identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true, options.msaa))),
       classify_(gpu.shaders().get({"visibility/classify.comp"})),
-      resolve_(gpu.shaders().get({"visibility/resolve.comp"})),
+      resolve_(gpu.shaders().get({"visibility/resolve.comp"}, resolve_defines(bindless_))),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       clusters_(gpu.shaders(), options, lighting::ClusterLights::Positions::Depth) {}
+
+std::string VisibilityTechnique::variant() const {
+  return "material binding " + std::string(kMaterialBindingNames[static_cast<std::size_t>(bindless_ ? MaterialBinding::Bindless : MaterialBinding::Bound)]);
+}
 
 void VisibilityTechnique::resize(const render::FrameTargets& targets) {
   clusters_.resize(targets.size);
@@ -51,13 +76,6 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
     throw gfx::ResourceLimitError("visibility-buffer: the scene has " + std::to_string(frame.draws.list().visibility_ids - 1) +
                                   " triangle instances, more than its 32-bit identifiers can name; use another mode");
   }
-  // As many lists as this frame's materials; a list that occlusion culling's
-  // late phase extends with new materials grows them when the pass runs.
-  reserve_tiles(frame.draws.list().materials.size());
-  const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(DispatchCommand)});
-  const render::ResourceId tile_lists =
-      graph.import_buffer("material-tiles", tile_lists_.id(), {tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)});
-
   graph.add_pass("visibility", [&](render::PassBuilder& pass) {
     render::read_draws(pass, frame);
     pass.write(frame.scene_depth, render::Access::Attachment);
@@ -87,23 +105,36 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
       if (sum.valid()) pass.write(sum, render::Access::Storage);
     }
   };
-  graph.add_pass("material classification", [&](render::PassBuilder& pass) {
-    pass.read(identifiers_target_, render::Access::Sampled);
-    render::read_draws(pass, frame);
-    write_lit(pass);
-    pass.write(dispatch, render::Access::Storage);
-    pass.write(tile_lists, render::Access::Storage);
-  }, [this, &frame](const render::PassResources& res) { classify(res, frame); });
-
-  graph.add_pass("resolve", [&](render::PassBuilder& pass) {
+  auto resolve_inputs = [&](render::PassBuilder& pass) {
     pass.read(identifiers_target_, render::Access::Sampled);
     render::read_draws(pass, frame);
     render::read_shading_inputs(pass, frame);
     pass.read(lists, render::Access::Storage);
-    pass.read(dispatch, render::Access::Indirect);
-    pass.read(tile_lists, render::Access::Storage);
     write_lit(pass);
-  }, [this, &frame](const render::PassResources& res) { resolve(res, frame); });
+  };
+  if (bindless_) {
+    // The resolve gives empty samples the background itself: no classification.
+    graph.add_pass("resolve", resolve_inputs, [this, &frame](const render::PassResources& res) { resolve_bindless(res, frame); });
+  } else {
+    // As many lists as this frame's materials; a list that occlusion culling's
+    // late phase extends with new materials grows them when the pass runs.
+    reserve_tiles(frame.draws.list().materials.size());
+    const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(DispatchCommand)});
+    const render::ResourceId tile_lists =
+        graph.import_buffer("material-tiles", tile_lists_.id(), {tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)});
+    graph.add_pass("material classification", [&](render::PassBuilder& pass) {
+      pass.read(identifiers_target_, render::Access::Sampled);
+      render::read_draws(pass, frame);
+      write_lit(pass);
+      pass.write(dispatch, render::Access::Storage);
+      pass.write(tile_lists, render::Access::Storage);
+    }, [this, &frame](const render::PassResources& res) { classify(res, frame); });
+    graph.add_pass("resolve", [&](render::PassBuilder& pass) {
+      resolve_inputs(pass);
+      pass.read(dispatch, render::Access::Indirect);
+      pass.read(tile_lists, render::Access::Storage);
+    }, [this, &frame](const render::PassResources& res) { resolve(res, frame); });
+  }
 
   render::add_transparency_pass(graph, blended_, frame, targets, [&](render::PassBuilder& pass) { pass.read(lists, render::Access::Storage); },
                                 [this] { clusters_.bind(); });
@@ -132,19 +163,35 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
                     static_cast<GLsizeiptr>(std::max<std::size_t>(unit_count_, 1) * sizeof(render::VisibilityUnit)));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kVertexPoolBinding, gpu_.vertex_pool());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kIndexPoolBinding, gpu_.index_pool());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
+  if (!bindless_) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
+  }
   glBindTextureUnit(render::kVisibilityUnit, res.texture(identifiers_target_));
   lighting::bind_lit_images(res, frame, GL_WRITE_ONLY);
+}
+
+void VisibilityTechnique::upload_units(const render::DrawList& list) {
+  units_.reserve(sizeof(render::VisibilityUnit));  // a scene without meshes binds one unit nothing reads
+  units_.upload(list.visibility_units.data(), list.visibility_units.size() * sizeof(render::VisibilityUnit));
+  unit_count_ = list.visibility_units.size();
+}
+
+std::vector<const render::DrawBatch*> VisibilityTechnique::batches_by_material(const render::DrawList& list) {
+  std::vector<const render::DrawBatch*> batch_of(list.materials.size(), nullptr);
+  for (const render::DrawBatch& batch : list.opaque) {
+    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
+      const std::uint32_t record = list.commands[c].base_instance;
+      if (record < list.instances.size()) batch_of[list.instances[record].material.x] = &batch;
+    }
+  }
+  return batch_of;
 }
 
 void VisibilityTechnique::classify(const render::PassResources& res, const render::FrameContext& frame) {
   const render::DrawList& list = frame.draws.list();
   reserve_tiles(list.materials.size());
-  // Every scene triangle's unit, with the records of the list as drawn (after occlusion culling's phases).
-  units_.reserve(sizeof(render::VisibilityUnit));  // a scene without meshes binds one unit nothing reads
-  units_.upload(list.visibility_units.data(), list.visibility_units.size() * sizeof(render::VisibilityUnit));
-  unit_count_ = list.visibility_units.size();
+  upload_units(list);
   const GLuint empty[] = {0, 1, 1};
   glClearNamedBufferData(dispatch_.id(), GL_RGB32UI, GL_RGB_INTEGER, GL_UNSIGNED_INT, empty);
   bind_inputs(res, frame);
@@ -156,15 +203,8 @@ void VisibilityTechnique::classify(const render::PassResources& res, const rende
 }
 
 void VisibilityTechnique::resolve(const render::PassResources& res, const render::FrameContext& frame) const {
-  const render::DrawList& list = frame.draws.list();
   // Each material's textures and samplers, from the batches that draw it.
-  std::vector<const render::DrawBatch*> batch_of(list.materials.size(), nullptr);
-  for (const render::DrawBatch& batch : list.opaque) {
-    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
-      const std::uint32_t record = list.commands[c].base_instance;
-      if (record < list.instances.size()) batch_of[list.instances[record].material.x] = &batch;
-    }
-  }
+  const std::vector<const render::DrawBatch*> batch_of = batches_by_material(frame.draws.list());
   clusters_.bind();
   bind_inputs(res, frame);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
@@ -177,6 +217,29 @@ void VisibilityTechnique::resolve(const render::PassResources& res, const render
     glDispatchComputeIndirect(static_cast<GLintptr>(m * sizeof(DispatchCommand)));
   }
   glBindSamplers(0, render::kMaterialTextureSlots, nullptr);
+}
+
+void VisibilityTechnique::resolve_bindless(const render::PassResources& res, const render::FrameContext& frame) {
+  const render::DrawList& list = frame.draws.list();
+  upload_units(list);
+  // Each material's handles, from the batch that draws it; a material no batch
+  // draws shows on no pixel, and samples the white default if it ever did.
+  const std::vector<const render::DrawBatch*> batch_of = batches_by_material(list);
+  std::vector<MaterialTextures> table(std::max<std::size_t>(batch_of.size(), 1));
+  const GLuint white = gpu_.texture({});
+  for (std::size_t m = 0; m < table.size(); ++m) {
+    for (std::size_t slot = 0; slot < render::kMaterialTextureSlots; ++slot) {
+      const render::DrawBatch* batch = m < batch_of.size() ? batch_of[m] : nullptr;
+      table[m].handles[slot] = batch ? gpu_.texture_handle(batch->textures[slot], batch->samplers[slot]) : gpu_.texture_handle(white, 0);
+    }
+  }
+  material_textures_.upload(table.data(), table.size() * sizeof(MaterialTextures));
+  clusters_.bind();
+  bind_inputs(res, frame);
+  glBindBufferRange(GL_SHADER_STORAGE_BUFFER, render::kMaterialTexturesBinding, material_textures_.buffer.id(), 0,
+                    static_cast<GLsizeiptr>(table.size() * sizeof(MaterialTextures)));
+  resolve_.use();
+  glDispatchCompute(tiles_.x, tiles_.y, 1);
 }
 
 }  // namespace atrium::techniques

@@ -1,20 +1,27 @@
 // The visibility buffer (mode `visibility-buffer`; Burns and Hunt, "The
 // Visibility Buffer", JCGT 2013): the geometry pass writes depth and each
 // pixel's triangle identifier (R32UI, 4 bytes a pixel) and nothing else; a
-// compute pass lists each material's 8x8 tiles; one compute dispatch per
-// material then rebuilds each of its pixels' surface from the triangle in the
+// compute resolve then rebuilds each pixel's surface from the triangle in the
 // GPU's geometry pools, evaluates the material with explicit gradients and
-// shades it with the clustered light lists, storing the lit HDR result. The
-// raster pipeline touches a pixel's material once, not once per overdraw, and
-// no G-buffer travels between geometry and light. Blended surfaces are shaded
-// forward+ from the same lists afterwards, as in clustered-deferred. With
-// MSAA it stores an identifier a sample and shades each surface a pixel
-// shows once. Needs compute shaders (the technique table's ModeNeeds).
+// shades it with the clustered light lists, storing the lit HDR result. How
+// the resolve reaches the materials' textures is --material-binding: bound
+// (a compute pass lists each material's 8x8 tiles, then one dispatch per
+// material runs over them with its textures bound) or bindless (one dispatch
+// over every tile, textures by handle). The raster pipeline touches a pixel's
+// material once, not once per overdraw, and no G-buffer travels between
+// geometry and light. Blended surfaces are shaded forward+ from the same lists
+// afterwards, as in clustered-deferred. With MSAA it stores an identifier a
+// sample and shades each surface a pixel shows once. Needs compute shaders
+// (the technique table's ModeNeeds).
 #pragma once
+
+#include <array>
+#include <vector>
 
 #include "render/lighting/cluster_lights.hpp"
 #include "render/techniques/technique.hpp"
 #include "gfx/stream_buffer.hpp"
+#include "render/frame/draw_list.hpp"
 
 namespace atrium::techniques {
 
@@ -24,12 +31,25 @@ struct DispatchCommand {
 };
 static_assert(sizeof(DispatchCommand) == 12, "GL reads indirect dispatches as three 32-bit words");
 
+// A material's textures as bindless handles, by slot; twin of MaterialTextures
+// in shaders/common/material.glsl (a uvec2 each).
+struct MaterialTextures {
+  std::array<GLuint64, render::kMaterialTextureSlots> handles{};
+};
+static_assert(sizeof(MaterialTextures) == 8 * render::kMaterialTextureSlots, "std430 packs the uvec2 handles tightly");
+
+// The binding `options` ask for, Automatic resolved for the current context
+// (bindless where it has ARB_bindless_texture). Throws gfx::ResourceLimitError
+// when bindless is asked for where the context lacks the extension.
+[[nodiscard]] MaterialBinding resolve_material_binding(const TechniqueOptions& options);
+
 class VisibilityTechnique final : public LightingTechnique {
  public:
   VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options);
   void resize(const render::FrameTargets& targets) override;
   void add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) override;
   [[nodiscard]] ListStats light_lists() override { return cluster_list_stats(clusters_); }
+  [[nodiscard]] std::string variant() const override;
 
  private:
   // The geometry pass's body: identifiers and depth, through draw_first_pass.
@@ -38,12 +58,19 @@ class VisibilityTechnique final : public LightingTechnique {
   void classify(const render::PassResources& res, const render::FrameContext& frame);
   // One indirect dispatch per material over its tiles.
   void resolve(const render::PassResources& res, const render::FrameContext& frame) const;
+  // One dispatch over every tile, each material's textures by handle.
+  void resolve_bindless(const render::PassResources& res, const render::FrameContext& frame);
+  // Uploads the units of this frame's list, as drawn (after occlusion culling's phases).
+  void upload_units(const render::DrawList& list);
+  // Each material's batch as drawn, for its textures and samplers (null: drawn by none).
+  [[nodiscard]] static std::vector<const render::DrawBatch*> batches_by_material(const render::DrawList& list);
   // Grows the tile lists to hold `materials` lists of every tile.
   void reserve_tiles(std::size_t materials);
   // The units, the geometry pools, the tile lists, the identifiers and the lit targets.
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
   render::GpuAssets& gpu_;
+  bool bindless_;  // --material-binding, resolved
   gfx::ShaderProgram& identifiers_;         // batches without an alpha test: positions only
   gfx::ShaderProgram& identifiers_masked_;  // alpha-masked batches: the alpha test, then the identifier
   gfx::ShaderProgram& classify_;
@@ -54,6 +81,7 @@ class VisibilityTechnique final : public LightingTechnique {
   std::size_t tile_materials_ = 0;  // materials the tile lists hold room for
   gfx::Buffer dispatch_, tile_lists_;
   gfx::StreamBuffer units_;
+  gfx::StreamBuffer material_textures_;  // bindless: MaterialTextures of each material
   std::size_t unit_count_ = 0;  // of this frame, at the start of units_
   render::ResourceId identifiers_target_;
   render::ResourceId shading_depth_;  // with MSAA: each sample's depth at its pixel centre
