@@ -242,7 +242,7 @@ const std::vector<OptionSpec>& option_table() {
        "tiled and clustered modes: how the light lists are built, scatter (each light visits the bins it may reach), "
        "gather (each bin tests every light) or auto (default: per frame, gather where lights are dense)",
        set_choice(&TechniqueOptions::light_assignment, kLightAssignmentNames, "light assignment", "assignments")},
-      {"--material-binding", "B", kDrawing,
+      {"--material-binding", "B", kDrawing | kInfo,
        "visibility-buffer: how the resolve reaches the materials' textures, bound (one dispatch per material over "
        "the tiles that show it) or bindless (one dispatch over every tile, textures by handle; needs "
        "GL_ARB_bindless_texture) or auto (default: bindless where the context has it)",

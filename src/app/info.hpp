@@ -34,6 +34,9 @@ struct SceneInfo {
   glm::uvec3 clusters{0};
   std::uint32_t cluster_tile_pixels = 0;  // the pixel grid's tile (--cluster-grid NpxxZ); 0: a fixed grid (XxYxZ)
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
+  // How the visibility buffer's resolve reaches the materials on this context
+  // (--material-binding resolved): "bound" or "bindless"; or why the asked one cannot run.
+  std::string material_binding;
   // --memory: per mode, the frame graph's render-target memory at `memory_size`
   // and every target and buffer its frame uses.
   struct ModeMemory {

@@ -134,7 +134,7 @@ const std::array kViews{
               has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Value>},
     DebugView{"draws", "the primitive instance each pixel shows, a colour each (visibility-buffer)", {}, kVisibilityIdsTarget, {},
               has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Draw>},
-    DebugView{"materials", "the material each pixel's resolve runs, a colour each: its tiles' classification (visibility-buffer)", {},
+    DebugView{"materials", "the material each pixel is shaded with, a colour each: what the bound resolve's classification sorts tiles by (visibility-buffer)", {},
               kVisibilityIdsTarget, {}, has_resource<kVisibilityIdsTarget>, identifiers<DebugViews::Identify::Material>},
     DebugView{"msaa-surfaces", "the pixels whose samples show two surfaces or more, each shaded apart, in red (visibility-buffer, with --msaa)",
               {}, {}, {},
