@@ -115,7 +115,7 @@ std::string format_info_text(const SceneInfo& i) {
   const std::string why = i.material_binding == "bindless" ? " (GL_ARB_bindless_texture: one resolve dispatch, textures by handle)"
                           : i.material_binding == "bound"  ? " (one resolve dispatch per material, its textures bound)"
                                                            : "";
-  text += "vis buffer   materials " + i.material_binding + why + "\n";
+  text += why.empty() ? "vis buffer   refused: " + i.material_binding + "\n" : "vis buffer   materials " + i.material_binding + why + "\n";
   if (!i.memory.empty()) {
     char line[256];
     std::snprintf(line, sizeof line, "render targets at %dx%d (long-lived; transient as allocated, unshared):\n", i.memory_size.x,
