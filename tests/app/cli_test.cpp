@@ -149,7 +149,8 @@ TEST(Cli, EveryOptionInACommandsHelpIsAccepted) {
       {"--warmup", "1"},            {"--frame-limit", "250"},        {"--modes", "forward,deferred"}, {"--views", "1,2"},
       {"--csv", "x.csv"},           {"--md", "x.md"},                {"--plot", "x.png"},
       {"--msaa", "2"},              {"--shadows", "4"},              {"--fireflies", "3"},
-      {"--lighting-stage", "compute"}, {"--light-assignment", "gather"}, {"--bloom", "0.04"}, {"--bloom-radius", "0.3"}};
+      {"--lighting-stage", "compute"}, {"--light-assignment", "gather"}, {"--material-binding", "bound"},
+      {"--bloom", "0.04"},          {"--bloom-radius", "0.3"}};
   for (const Command command : {Command::Window, Command::Render, Command::Info, Command::Compare, Command::Bench, Command::Probe}) {
     std::istringstream help(help_text(command));
     int options = 0;
