@@ -53,6 +53,6 @@ void main() {
     for (uint k = 0u; k < first && !listed; ++k) listed = s_material[k] == material;
     if (listed) continue;
     uint index = atomicAdd(u_dispatch[material].x, 1u);
-    u_tiles[material * u_tile_capacity + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
+    u_tiles[material * tile_capacity() + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
   }
 }

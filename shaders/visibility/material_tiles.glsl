@@ -8,5 +8,9 @@ struct Dispatch {
 };
 layout(std430, binding = 27) buffer MaterialDispatch { Dispatch u_dispatch[]; };
 layout(std430, binding = 28) buffer MaterialTileLists { uint u_tiles[]; };
-// A material's list starts at its index times this (every tile, at most).
-uniform uint u_tile_capacity;
+// A material's list starts at its index times this: every tile of the frame,
+// each a work group of classify.comp (and of the resolve, which shares its size).
+uint tile_capacity() {
+  uvec2 tiles = (uvec2(u_viewport_size) + gl_WorkGroupSize.xy - 1u) / gl_WorkGroupSize.xy;
+  return tiles.x * tiles.y;
+}

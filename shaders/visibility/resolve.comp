@@ -115,7 +115,7 @@ void shade_triangle(ivec2 pixel, uint id) {
 }
 
 void main() {
-  uint tile = u_tiles[u_material * u_tile_capacity + gl_WorkGroupID.x];
+  uint tile = u_tiles[u_material * tile_capacity() + gl_WorkGroupID.x];
   // Its work group is classify.comp's: one group a tile.
   ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;

@@ -195,9 +195,6 @@ void VisibilityTechnique::classify(const render::PassResources& res, const rende
   const GLuint empty[] = {0, 1, 1};
   glClearNamedBufferData(dispatch_.id(), GL_RGB32UI, GL_RGB_INTEGER, GL_UNSIGNED_INT, empty);
   bind_inputs(res, frame);
-  const auto capacity = static_cast<unsigned>(tiles_.x * tiles_.y);
-  classify_.set("u_tile_capacity", capacity);
-  resolve_.set("u_tile_capacity", capacity);
   classify_.use();
   glDispatchCompute(tiles_.x, tiles_.y, 1);
 }
