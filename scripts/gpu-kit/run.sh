@@ -195,6 +195,18 @@ step "msaa 4x, built-in" 40 "$out/.msaa.md" "$atrium" bench --modes tiled-deferr
 gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"
+# The visibility buffer as a process's first mode, each binding, beside
+# clustered-deferred: the bench and compare run it after raster modes, and one
+# GL implementation (zink) shaded only part of the tiles of a first-mode bound
+# resolve. Equal light evaluations per pixel (the heatmap's count) say every
+# pixel was shaded.
+firsts=(clustered-deferred:auto visibility-buffer:bound)
+"$atrium" info 2>/dev/null | grep -q "materials bindless" && firsts+=(visibility-buffer:bindless)
+for first in "${firsts[@]}"; do
+  mode=${first%%:*} binding=${first#*:}
+  step "first mode $first" 20 "$out/.first-$mode-$binding.txt" "$atrium" render --mode "$mode" --material-binding "$binding" \
+    --lights 1024 --size "$size" --debug-view heatmap --out "$out/.heatmap.png"
+done
 step "picture, built-in scene" 30 "$out/.render-atrium.txt" "$atrium" render --mode tiled-deferred --lights 1024 --size "$size" \
   --out "$out/atrium.png"
 # The riskiest step last: 2^20 lights (a stall here must not cost the figures above).
@@ -262,9 +274,20 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "MSAA 4x, both lighting stages, built-in scene, 1,024 lights" "$out/.msaa.md"
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
+  echo
+  echo "## The visibility buffer as a process's first mode (light evaluations per pixel: equal when every pixel is shaded)"
+  echo
+  for first in clustered-deferred:auto visibility-buffer:bound visibility-buffer:bindless; do
+    file=$out/.first-${first%%:*}-${first#*:}.txt
+    if [ "$first" = visibility-buffer:bindless ] && [ ! -e "$file" ]; then
+      echo "- ${first%%:*}, material binding ${first#*:}: not run, the context lacks GL_ARB_bindless_texture"
+    else
+      echo "- ${first%%:*}, material binding ${first#*:}: $(grep -h "light evaluations per pixel" "$file" 2>/dev/null || echo "no output: see log.txt")"
+    fi
+  done
   section "Pictures" "$out/.render-sponza.txt"
   cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
 } >"$report"
-rm -f "$out"/.*.txt "$out"/.*.md "$out"/.health.png
+rm -f "$out"/.*.txt "$out"/.*.md "$out"/.health.png "$out"/.heatmap.png
 echo "run.sh: wrote $report; steps that failed: ${failed[*]:-none}" >&2
 [ ${#failed[@]} -eq 0 ]

@@ -39,6 +39,8 @@ grep -q "^compute .* ms, .* Gflop/s" "$report" || fail "no stage probe in the re
 grep -q "^## 256 lights, compute stage" "$report" || fail "no million-light step (256 in --quick)"
 [ "$(grep -c "^## Clustered and tiled lists, compute stage" "$report")" = 5 ] || fail "not every cluster grid measured"
 [ "$(grep -c "^## Light assignment \(scatter\|gather\), compute stage" "$report")" = 4 ] || fail "not every light assignment measured"
+[ "$(grep -c "^- visibility-buffer, material binding \(bound\|bindless\): light evaluations per pixel: [0-9.]* on average" "$report")" = 1 ] ||
+  fail "no first-mode check of the visibility buffer (llvmpipe: bound runs, bindless is refused): $(cat "$report")"
 [ "$(grep -c "^## Visibility buffer with materials bound" "$report")" = 3 ] || fail "the visibility buffer's bound path not measured in every scene"
 grep -q "^| lights | tiled-deferred/fragment | clustered-deferred/fragment | visibility-buffer/fragment | tiled-deferred/compute | clustered-deferred/compute | visibility-buffer/compute |" "$report" ||
   fail "no MSAA table of both stages in the report"
