@@ -30,8 +30,10 @@ case "${1:-}" in
   *) echo "usage: ./test.sh [--sanitize]" >&2; exit 2 ;;
 esac
 ./scripts/install-deps.sh
-# Mesa's zink beside the system's Mesa, for the bindless-texture tests (label zink).
-./scripts/install-zink.sh
+# Mesa's zink beside the system's Mesa, for the bindless-texture tests (label
+# zink). Where the archive cannot be reached they are left out, and said so:
+# the rest of the suite does not need them.
+./scripts/install-zink.sh || echo "test.sh: Mesa's zink is not installed: the zink tests (bindless textures) will not run" >&2
 cmake -S . -B "$build" "${flags[@]}" >/dev/null
 cmake --build "$build" -j"$(nproc)"
 # The page that the browser test (web.browser) opens in headless Chromium.

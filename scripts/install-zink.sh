@@ -18,7 +18,7 @@ mkdir -p "$work/lists/partial" "$work/debs"
 # bookworm too, for what backports does not carry (libvulkan1); -t takes backports' version of the rest.
 printf 'deb http://deb.debian.org/debian %s main\n' bookworm bookworm-backports >"$work/sources.list"
 apt_options=(-o "Dir::Etc::sourcelist=$work/sources.list" -o Dir::Etc::sourceparts=- -o "Dir::State::Lists=$work/lists"
-             -o APT::Get::List-Cleanup=0 -o Debug::NoLocking=1 -t bookworm-backports)
+             -o APT::Get::List-Cleanup=0 -o Debug::NoLocking=1 -o APT::Sandbox::User="$(id -un)" -t bookworm-backports)
 echo "install-zink: fetching Mesa from bookworm-backports into $prefix" >&2
 apt-get "${apt_options[@]}" update -qq
 packages=(mesa-libgallium libgl1-mesa-dri libegl-mesa0 libgbm1 mesa-vulkan-drivers libdrm2 libdrm-amdgpu1 libdrm-intel1)
@@ -26,10 +26,10 @@ packages=(mesa-libgallium libgl1-mesa-dri libegl-mesa0 libgbm1 mesa-vulkan-drive
 llvm=$(apt-cache "${apt_options[@]}" show mesa-libgallium | sed -n 's/^Depends:.*\(libllvm[0-9]*\).*/\1/p' | head -n 1)
 if [ -n "$llvm" ] && ! dpkg-query -W -f='${Status}' "$llvm" 2>/dev/null | grep -q "install ok installed"; then packages+=("$llvm"); fi
 dpkg-query -W -f='${Status}' libvulkan1 2>/dev/null | grep -q "install ok installed" || packages+=(libvulkan1)
-# apt-get download drops privileges to _apt, which may not write into a private temporary folder.
-chmod 777 "$work/debs"
-(cd "$work/debs" && apt-get "${apt_options[@]}" download "${packages[@]}" 2>&1 | grep -v "^W: Download is performed unsandboxed" >&2 || true)
-[ -n "$(ls "$work"/debs/mesa-libgallium_*.deb 2>/dev/null)" ] || { echo "install-zink: could not download Mesa from bookworm-backports" >&2; exit 1; }
+(cd "$work/debs" && apt-get "${apt_options[@]}" download "${packages[@]}" >&2 || true)
+for package in "${packages[@]}"; do
+  [ -n "$(ls "$work/debs/${package}"_*.deb 2>/dev/null)" ] || { echo "install-zink: could not download $package from Debian's archive" >&2; exit 1; }
+done
 
 rm -rf "$prefix.partial"
 mkdir -p "$prefix.partial"
