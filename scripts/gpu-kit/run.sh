@@ -277,14 +277,12 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   echo
   echo "## The visibility buffer as a process's first mode (light evaluations per pixel: equal when every pixel is shaded)"
   echo
-  for first in clustered-deferred:auto visibility-buffer:bound visibility-buffer:bindless; do
-    file=$out/.first-${first%%:*}-${first#*:}.txt
-    if [ "$first" = visibility-buffer:bindless ] && [ ! -e "$file" ]; then
-      echo "- ${first%%:*}, material binding ${first#*:}: not run, the context lacks GL_ARB_bindless_texture"
-    else
-      echo "- ${first%%:*}, material binding ${first#*:}: $(grep -h "light evaluations per pixel" "$file" 2>/dev/null || echo "no output: see log.txt")"
-    fi
+  for first in "${firsts[@]}"; do
+    echo "- ${first%%:*}, material binding ${first#*:}: $(grep -h "light evaluations per pixel" "$out/.first-${first%%:*}-${first#*:}.txt" 2>/dev/null ||
+      echo "no output: see log.txt")"
   done
+  [[ " ${firsts[*]} " == *" visibility-buffer:bindless "* ]] ||
+    echo "- visibility-buffer, material binding bindless: not run, the context lacks GL_ARB_bindless_texture"
   section "Pictures" "$out/.render-sponza.txt"
   cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
 } >"$report"

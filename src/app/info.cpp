@@ -65,10 +65,9 @@ SceneInfo gather_info(World& world, const std::string& scene, glm::ivec2 size) {
   info.clusters = grid.at(info.bins_size);
   info.cluster_tile_pixels = grid.tile_pixels;
   try {
-    const MaterialBinding binding = techniques::resolve_material_binding(registry.resource<RendererSettings>().technique_options);
-    info.material_binding = kMaterialBindingNames[static_cast<std::size_t>(binding)];
+    info.material_binding = techniques::resolve_material_binding(registry.resource<RendererSettings>().technique_options);
   } catch (const gfx::ResourceLimitError& e) {
-    info.material_binding = e.what();
+    info.material_binding_refused = e.what();
   }
   return info;
 }
@@ -112,10 +111,13 @@ std::string format_info_text(const SceneInfo& i) {
   std::snprintf(bins, sizeof bins, "light bins   at %dx%d: tiles %ux%u of %u px; clusters %ux%ux%u (%s)\n", i.bins_size.x, i.bins_size.y,
                 i.tiles.x, i.tiles.y, i.tile_pixels, i.clusters.x, i.clusters.y, i.clusters.z, grid.c_str());
   text += bins;
-  const std::string why = i.material_binding == "bindless" ? " (GL_ARB_bindless_texture: one resolve dispatch, textures by handle)"
-                          : i.material_binding == "bound"  ? " (one resolve dispatch per material, its textures bound)"
-                                                           : "";
-  text += why.empty() ? "vis buffer   refused: " + i.material_binding + "\n" : "vis buffer   materials " + i.material_binding + why + "\n";
+  if (!i.material_binding_refused.empty()) {
+    text += "vis buffer   refused: " + i.material_binding_refused + "\n";
+  } else if (i.material_binding == MaterialBinding::Bindless) {
+    text += "vis buffer   materials bindless (GL_ARB_bindless_texture: one resolve dispatch, textures by handle)\n";
+  } else {
+    text += "vis buffer   materials bound (one resolve dispatch per material, its textures bound)\n";
+  }
   if (!i.memory.empty()) {
     char line[256];
     std::snprintf(line, sizeof line, "render targets at %dx%d (long-lived; transient as allocated, unshared):\n", i.memory_size.x,
@@ -164,7 +166,8 @@ std::string format_info_json(const SceneInfo& i) {
         {"tile_pixels", i.tile_pixels},
         {"clusters", {i.clusters.x, i.clusters.y, i.clusters.z}},
         {"cluster_tile_pixels", i.cluster_tile_pixels}}},
-      {"material_binding", i.material_binding},
+      {"material_binding", i.material_binding_refused.empty() ? std::string(kMaterialBindingNames[static_cast<std::size_t>(i.material_binding)])
+                                                              : i.material_binding_refused},
       {"gl", {{"renderer", i.gl.renderer}, {"vendor", i.gl.vendor}, {"version", i.gl.version}, {"platform", i.gl.platform}}}};
   if (!i.memory.empty()) {
     nlohmann::json modes = nlohmann::json::array();

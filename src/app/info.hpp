@@ -35,8 +35,9 @@ struct SceneInfo {
   std::uint32_t cluster_tile_pixels = 0;  // the pixel grid's tile (--cluster-grid NpxxZ); 0: a fixed grid (XxYxZ)
   gfx::ContextInfo gl;  // the context the scene was uploaded to (which GPU, or a software renderer)
   // How the visibility buffer's resolve reaches the materials on this context
-  // (--material-binding resolved): "bound" or "bindless"; or why the asked one cannot run.
-  std::string material_binding;
+  // (--material-binding resolved), or why the binding asked for cannot run.
+  MaterialBinding material_binding = MaterialBinding::Bound;
+  std::string material_binding_refused;
   // --memory: per mode, the frame graph's render-target memory at `memory_size`
   // and every target and buffer its frame uses.
   struct ModeMemory {

@@ -20,8 +20,8 @@ std::vector<gfx::ShaderDefine> identifier_defines(bool masked, int samples) {
   return defines;
 }
 
-std::vector<gfx::ShaderDefine> resolve_defines(bool bindless) {
-  return bindless ? std::vector<gfx::ShaderDefine>{{"BINDLESS_TEXTURES"}} : std::vector<gfx::ShaderDefine>{};
+std::vector<gfx::ShaderDefine> resolve_defines(MaterialBinding binding) {
+  return binding == MaterialBinding::Bindless ? std::vector<gfx::ShaderDefine>{{"BINDLESS_TEXTURES"}} : std::vector<gfx::ShaderDefine>{};
 }
 
 }  // namespace
@@ -43,16 +43,16 @@ MaterialBinding resolve_material_binding(const TechniqueOptions& options) {
 
 VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const TechniqueOptions& options)
     : gpu_(gpu),
-      bindless_(resolve_material_binding(options) == MaterialBinding::Bindless),
+      binding_(resolve_material_binding(options)),
       identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false, options.msaa))),
       identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true, options.msaa))),
       classify_(gpu.shaders().get({"visibility/classify.comp"})),
-      resolve_(gpu.shaders().get({"visibility/resolve.comp"}, resolve_defines(bindless_))),
+      resolve_(gpu.shaders().get({"visibility/resolve.comp"}, resolve_defines(binding_))),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       clusters_(gpu.shaders(), options, lighting::ClusterLights::Positions::Depth) {}
 
 std::string VisibilityTechnique::variant() const {
-  return "material binding " + std::string(kMaterialBindingNames[static_cast<std::size_t>(bindless_ ? MaterialBinding::Bindless : MaterialBinding::Bound)]);
+  return "material binding " + std::string(kMaterialBindingNames[static_cast<std::size_t>(binding_)]);
 }
 
 void VisibilityTechnique::resize(const render::FrameTargets& targets) {
@@ -112,7 +112,7 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
     pass.read(lists, render::Access::Storage);
     write_lit(pass);
   };
-  if (bindless_) {
+  if (binding_ == MaterialBinding::Bindless) {
     // The resolve gives empty samples the background itself: no classification.
     graph.add_pass("resolve", resolve_inputs, [this, &frame](const render::PassResources& res) { resolve_bindless(res, frame); });
   } else {
@@ -163,7 +163,7 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
                     static_cast<GLsizeiptr>(std::max<std::size_t>(unit_count_, 1) * sizeof(render::VisibilityUnit)));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kVertexPoolBinding, gpu_.vertex_pool());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kIndexPoolBinding, gpu_.index_pool());
-  if (!bindless_) {
+  if (binding_ == MaterialBinding::Bound) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
   }
@@ -225,8 +225,8 @@ void VisibilityTechnique::resolve_bindless(const render::PassResources& res, con
   std::vector<MaterialTextures> table(std::max<std::size_t>(batch_of.size(), 1));
   const GLuint white = gpu_.texture({});
   for (std::size_t m = 0; m < table.size(); ++m) {
+    const render::DrawBatch* batch = m < batch_of.size() ? batch_of[m] : nullptr;
     for (std::size_t slot = 0; slot < render::kMaterialTextureSlots; ++slot) {
-      const render::DrawBatch* batch = m < batch_of.size() ? batch_of[m] : nullptr;
       table[m].handles[slot] = batch ? gpu_.texture_handle(batch->textures[slot], batch->samplers[slot]) : gpu_.texture_handle(white, 0);
     }
   }

@@ -70,7 +70,7 @@ class VisibilityTechnique final : public LightingTechnique {
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
   render::GpuAssets& gpu_;
-  bool bindless_;  // --material-binding, resolved
+  MaterialBinding binding_;  // --material-binding, resolved: Bound or Bindless
   gfx::ShaderProgram& identifiers_;         // batches without an alpha test: positions only
   gfx::ShaderProgram& identifiers_masked_;  // alpha-masked batches: the alpha test, then the identifier
   gfx::ShaderProgram& classify_;
