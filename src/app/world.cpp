@@ -10,6 +10,7 @@
 #include <glm/gtx/quaternion.hpp>
 
 #include "app/progress_bar.hpp"
+#include "base/golden_angle.hpp"
 #include "assets/asset_manager.hpp"
 #include "assets/file_lookup.hpp"
 #include "assets/scene_file.hpp"
@@ -84,7 +85,6 @@ assets::SceneDescription load_scene(const WorldOptions& options, assets::AssetMa
 void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene, std::optional<float> radius) {
   // Animated lights start at different points of their circles, spread by the
   // golden angle so that neighbours do not move in step.
-  constexpr float kGoldenAngle = 2.39996323f;
   std::uint32_t animated = 0;
   for (const auto& light : scene.lights) {
     const ecs::Entity e = registry.create();
@@ -101,7 +101,7 @@ void spawn_lights(ecs::Registry& registry, const assets::SceneDescription& scene
     if (directional) registry.add<DirectionalLight>(e);
     if (radius) set_light_radius(registry, e, *radius);
     if (light.generated && light.kind == assets::LightKind::Point) {
-      registry.add<LightAnimation>(e, light.position, kGoldenAngle * static_cast<float>(animated++));
+      registry.add<LightAnimation>(e, light.position, golden_angle_phase(animated++));
     }
   }
 }

@@ -4,8 +4,10 @@
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/epsilon.hpp>
 
+#include "base/golden_angle.hpp"
 #include "components/camera.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
@@ -156,6 +158,24 @@ TEST(FlyCameraSystem, ScrollScalesTheSpeedWithinLimitsAndTheOverlayKeepsItsEvent
   rig.hold(GLFW_KEY_W, 1.0);
   rig.scheduler.run_frame(rig.registry, 1.0);
   EXPECT_EQ(rig.transform().position, glm::vec3(0.0f));
+}
+
+// A light moves radius * speed / 60 along its circle in a frame of 60 Hz: so
+// must the millionth generated light, an hour in too. A float phase of a
+// million golden angles is 0.25 rad coarse, and such lights jumped.
+TEST(LightAnimationSystem, TheMillionthLightStillMovesEveryFrame) {
+  for (const std::uint64_t k : {std::uint64_t{0}, std::uint64_t{1000}, std::uint64_t{1} << 20}) {
+    const float phase = golden_angle_phase(k);
+    EXPECT_GE(phase, 0.0f);
+    EXPECT_LT(phase, glm::two_pi<float>());
+    const long double exact = static_cast<long double>(kGoldenAngle) * static_cast<long double>(k);
+    EXPECT_NEAR(std::cos(phase), static_cast<float>(std::cos(exact)), 1e-5f) << k;
+    const LightAnimation animation{glm::vec3(0.0f), phase, 0.5f, 0.6f};
+    for (const double time : {0.0, 3600.0}) {
+      const float step = glm::distance(animated_position(animation, time), animated_position(animation, time + 1.0 / 60.0));
+      EXPECT_NEAR(step, 0.5f * 0.6f / 60.0f, 0.0015f) << "light " << k << " at " << time << " s";
+    }
+  }
 }
 
 TEST(LightAnimationSystem, MovesAnimatedLightsFromWhereTheyStartedAndPauses) {

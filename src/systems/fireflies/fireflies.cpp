@@ -5,6 +5,7 @@
 #include <memory>
 #include <vector>
 
+#include "base/golden_angle.hpp"
 #include "components/bounds.hpp"
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
@@ -18,7 +19,6 @@ namespace {
 
 constexpr const char* kOption = "fireflies";
 constexpr int kMaxFireflies = 4096;
-constexpr float kGoldenAngle = 2.39996323f;
 
 // A low-discrepancy point in [0, 1)^3 (the R3 sequence), so that any count
 // of fireflies spreads evenly and firefly k stays where it was as N grows.
@@ -49,7 +49,7 @@ void update_fireflies(ecs::Registry& registry) {
     const glm::vec3 at = spread(k) * glm::vec3(1.0f, 0.66f, 1.0f);
     firefly.home = scene.min + at * extent;
     firefly.range = 0.5f * reach;
-    firefly.phase = kGoldenAngle * static_cast<float>(k);
+    firefly.phase = golden_angle_phase(static_cast<std::uint64_t>(k));
     firefly.size = 0.06f * reach;
     const ecs::Entity e = registry.create();
     registry.add<Firefly>(e, firefly);
