@@ -153,6 +153,30 @@ class Registry {
     const auto* p = find_pool<T>();
     return (alive(e) && p && p->contains(e)) ? &p->get(e) : nullptr;
   }
+  // find for such walks over a pool's own entities (which are alive), in a
+  // tight loop: the pool is looked up once, and each find first tries the slot
+  // after the last one found, so entities that were given their components in
+  // the same order are found without the sparse array. One per thread.
+  template <typename T>
+  class Lookup {
+   public:
+    explicit Lookup(const SparseSet<T>* pool) : pool_(pool) {}
+    [[nodiscard]] const T* find(Entity e) {
+      if (!pool_) return nullptr;
+      const std::uint32_t slot = pool_->find_slot(e, next_);
+      if (slot == SparseSetBase::kAbsent) return nullptr;
+      next_ = std::size_t{slot} + 1;
+      return &pool_->components()[slot];
+    }
+
+   private:
+    const SparseSet<T>* pool_;
+    std::size_t next_ = 0;
+  };
+  template <typename T>
+  [[nodiscard]] Lookup<T> lookup() const {
+    return Lookup<T>(find_pool<T>());
+  }
 
   template <typename T>
   [[nodiscard]] std::size_t count() const {

@@ -5,7 +5,6 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
-#include <optional>
 #include <span>
 #include <utility>
 
@@ -34,39 +33,63 @@ std::string describe(const glm::vec3& v) {
 
 bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
 
-// Why a light cannot be drawn, or nothing when it can.
-std::optional<std::string> light_problem(const Transform& transform, const LightColor& light, const LightRadius* radius,
-                                         bool directional) {
-  if (!directional && !finite(transform.position)) return "position " + describe(transform.position) + " is not finite";
-  const glm::vec4 rotation(transform.rotation.x, transform.rotation.y, transform.rotation.z, transform.rotation.w);
-  if (!finite(glm::vec3(rotation)) || !std::isfinite(rotation.w)) return "rotation is not finite";
-  if (!finite(light.color) || glm::any(glm::lessThan(light.color, glm::vec3(0.0f))))
-    return "colour " + describe(light.color) + " is negative or not finite";
-  if (!std::isfinite(light.intensity) || light.intensity < 0.0f)
-    return "intensity " + describe(light.intensity) + " is negative or not finite";
-  if (radius && !directional && !(std::isfinite(radius->radius) && radius->radius > 0.0f))
-    return "radius " + describe(radius->radius) + " is not a positive finite number";
-  return std::nullopt;
+// What keeps a light from being drawn; asked of every light every frame, so
+// it builds no text (describe() does, for the few that fail).
+enum class LightFault { None, Position, Rotation, Colour, Intensity, Radius };
+
+inline LightFault light_fault(const Transform& transform, const LightColor& light, const LightRadius* radius, bool directional) {
+  if (!directional && !finite(transform.position)) return LightFault::Position;
+  if (!finite(glm::vec3(transform.rotation.x, transform.rotation.y, transform.rotation.z)) || !std::isfinite(transform.rotation.w))
+    return LightFault::Rotation;
+  if (!finite(light.color) || light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f) return LightFault::Colour;
+  if (!std::isfinite(light.intensity) || light.intensity < 0.0f) return LightFault::Intensity;
+  if (radius && !directional && !(std::isfinite(radius->radius) && radius->radius > 0.0f)) return LightFault::Radius;
+  return LightFault::None;
+}
+
+std::string describe(LightFault fault, const Transform& transform, const LightColor& light, const LightRadius* radius) {
+  switch (fault) {
+    case LightFault::Position: return "position " + describe(transform.position) + " is not finite";
+    case LightFault::Rotation: return "rotation is not finite";
+    case LightFault::Colour: return "colour " + describe(light.color) + " is negative or not finite";
+    case LightFault::Intensity: return "intensity " + describe(light.intensity) + " is negative or not finite";
+    case LightFault::Radius: return "radius " + describe(radius ? radius->radius : 0.0f) + " is not a positive finite number";
+    case LightFault::None: break;
+  }
+  return {};
 }
 
 }  // namespace
 
 namespace {
 
+// The pools of a light's other components, for one thread's walk over the
+// LightColor pool in its order.
+struct LightLookups {
+  explicit LightLookups(const ecs::Registry& registry)
+      : transform(registry.lookup<Transform>()),
+        radius(registry.lookup<LightRadius>()),
+        cone(registry.lookup<SpotCone>()),
+        directional(registry.lookup<DirectionalLight>()) {}
+  ecs::Registry::Lookup<Transform> transform;
+  ecs::Registry::Lookup<LightRadius> radius;
+  ecs::Registry::Lookup<SpotCone> cone;
+  ecs::Registry::Lookup<DirectionalLight> directional;
+};
+
 // Calls light(entity, gpu) when the entity holding `color` is a drawable
 // light, rejected(entity, problem) when it is not; nothing when it has no
 // Transform (it is no light). Reads the registry only: several threads may
-// call it at once.
+// call it at once, each with lookups of its own.
 template <typename Light, typename Rejected>
-void visit_light(const ecs::Registry& registry, ecs::Entity entity, const LightColor& color, const Light& light,
-                 const Rejected& rejected) {
-  const Transform* transform = registry.find<Transform>(entity);
+void visit_light(LightLookups& pools, ecs::Entity entity, const LightColor& color, const Light& light, const Rejected& rejected) {
+  const Transform* transform = pools.transform.find(entity);
   if (!transform) return;
-  const LightRadius* radius = registry.find<LightRadius>(entity);
-  const SpotCone* cone = registry.find<SpotCone>(entity);
-  const bool directional = registry.find<DirectionalLight>(entity) != nullptr;
-  if (auto problem = light_problem(*transform, color, radius, directional)) {
-    rejected(entity, std::move(*problem));
+  const LightRadius* radius = pools.radius.find(entity);
+  const SpotCone* cone = pools.cone.find(entity);
+  const bool directional = pools.directional.find(entity) != nullptr;
+  if (const LightFault fault = light_fault(*transform, color, radius, directional); fault != LightFault::None) {
+    rejected(entity, describe(fault, *transform, color, radius));
     return;
   }
   GpuLightKind kind = directional ? GpuLightKind::Directional : cone ? GpuLightKind::Spot : GpuLightKind::Point;
@@ -93,58 +116,85 @@ void mark_changed(std::vector<LightRun>& runs, std::size_t i) {
   else runs.push_back({i, i + 1});
 }
 
+// One thread's walk over its chunk [begin, end) of the LightColor pool: its
+// lights go to the staging copy from chunk.offset on, each written only where
+// it differs from what is there (compare) or unconditionally, its changed
+// indices noted in chunk.runs. It writes nothing from `limit` on, where the
+// next thread writes: a chunk holding more lights than that has moved the
+// next, whose lights are all walked again.
+void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& chunk, std::size_t begin, std::size_t end,
+                std::size_t limit, bool compare) {
+  const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
+  const std::span<const LightColor> colors = registry.components_of<LightColor>();
+  const std::size_t kept = state.kept;
+  chunk.count = 0;
+  chunk.runs.clear();
+  chunk.rejected.clear();
+  LightLookups pools(registry);
+  for (std::size_t p = begin; p < end; ++p) {
+    visit_light(pools, entities[p], colors[p], [&](ecs::Entity entity, const GpuLight& light) {
+      const std::size_t i = chunk.offset + chunk.count++;
+      if (i >= limit) return;
+      if (!compare || i >= kept || std::memcmp(&state.staging[i], &light, sizeof(GpuLight)) != 0) {
+        state.staging[i] = light;
+        mark_changed(chunk.runs, i);
+      }
+      if (!(state.entities[i] == entity)) state.entities[i] = entity;  // unchanged memory stays clean
+    }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); });
+  }
+}
+
 // Overwrites the buffer's staging copy with this frame's lights where they
 // differ and returns the runs of indices that changed: the staging copy is
 // what the GPU buffer holds (the shadow atlas keeps its patches in both), so
 // only those runs need sending; a frame whose lights hold still sends
-// nothing. The lights are gathered and compared in chunks of the LightColor
-// pool, one thread each, in pool order, into memory the buffer keeps.
+// nothing. The LightColor pool is walked in chunks, one thread each, each
+// comparing with and writing into its own part of the staging copy: where
+// last frame's chunk of the same pool began (or, new, where its pool range
+// begins, as when no light is rejected). Lights rejected or made drawable
+// since then move a chunk's start; that frame's chunks are walked again at
+// their new starts and every light is sent.
 std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
-  const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
-  const std::span<const LightColor> colors = registry.components_of<LightColor>();
-  const std::size_t total = entities.size();
+  const std::size_t total = registry.count<LightColor>();
   const std::size_t chunks = std::clamp<std::size_t>(total / kLightsPerThread, 1, hardware_threads());
+  const bool same_split = state.chunks.size() == chunks && state.pool_size == total;
   state.chunks.resize(chunks);
+  state.pool_size = total;
+  state.kept = state.staging.size();
+  state.staging.resize(std::max(state.kept, total));
+  state.entities.resize(state.staging.size());
+  auto range = [&](std::size_t c) { return std::pair{total * c / chunks, total * (c + 1) / chunks}; };
+  for (std::size_t c = 0; c < chunks; ++c) {
+    if (!same_split) state.chunks[c].offset = range(c).first;
+  }
   run_in_parallel(chunks, [&](std::size_t c) {
-    LightChunk& chunk = state.chunks[c];
-    chunk.lights.clear();
-    chunk.entities.clear();
-    chunk.rejected.clear();
-    for (std::size_t i = total * c / chunks; i < total * (c + 1) / chunks; ++i) {
-      visit_light(registry, entities[i], colors[i], [&](ecs::Entity entity, const GpuLight& light) {
-        chunk.lights.push_back(light);
-        chunk.entities.push_back(entity);
-      }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); });
-    }
+    const std::size_t limit = c + 1 < chunks ? state.chunks[c + 1].offset : state.staging.size();
+    walk_chunk(registry, state, state.chunks[c], range(c).first, range(c).second, limit, true);
   });
   std::size_t count = 0;
+  bool moved = false;
   for (LightChunk& chunk : state.chunks) {
+    moved = moved || chunk.offset != count;
     chunk.offset = count;
-    count += chunk.lights.size();
+    count += chunk.count;
   }
-  const std::size_t kept = std::min(count, state.staging.size());
+  std::vector<LightRun> runs;
+  if (moved) {
+    run_in_parallel(chunks, [&](std::size_t c) {
+      walk_chunk(registry, state, state.chunks[c], range(c).first, range(c).second, state.chunks[c].offset + state.chunks[c].count, false);
+    });
+    if (count > 0) runs.push_back({0, count});
+  } else {
+    for (const LightChunk& chunk : state.chunks) {
+      for (const LightRun& run : chunk.runs) {
+        if (!runs.empty() && run.begin <= runs.back().end + kRunGap) runs.back().end = run.end;
+        else runs.push_back(run);
+      }
+    }
+  }
+  for (const LightChunk& chunk : state.chunks) rejected.insert(rejected.end(), chunk.rejected.begin(), chunk.rejected.end());
   state.staging.resize(count);
   state.entities.resize(count);
-  run_in_parallel(chunks, [&](std::size_t c) {
-    LightChunk& chunk = state.chunks[c];
-    chunk.runs.clear();
-    for (std::size_t j = 0; j < chunk.lights.size(); ++j) {
-      const std::size_t i = chunk.offset + j;
-      if (i >= kept || std::memcmp(&state.staging[i], &chunk.lights[j], sizeof(GpuLight)) != 0) {
-        state.staging[i] = chunk.lights[j];
-        mark_changed(chunk.runs, i);
-      }
-      state.entities[i] = chunk.entities[j];
-    }
-  });
-  std::vector<LightRun> runs;
-  for (const LightChunk& chunk : state.chunks) {
-    for (const LightRun& run : chunk.runs) {
-      if (!runs.empty() && run.begin <= runs.back().end + kRunGap) runs.back().end = run.end;
-      else runs.push_back(run);
-    }
-    rejected.insert(rejected.end(), chunk.rejected.begin(), chunk.rejected.end());
-  }
   return runs;
 }
 
@@ -155,8 +205,9 @@ GatheredLights gather_lights(ecs::Registry& registry) {
   const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
   const std::span<const LightColor> colors = registry.components_of<LightColor>();
   gathered.lights.reserve(entities.size());
+  LightLookups pools(registry);
   for (std::size_t i = 0; i < entities.size(); ++i) {
-    visit_light(registry, entities[i], colors[i], [&](ecs::Entity entity, const GpuLight& light) {
+    visit_light(pools, entities[i], colors[i], [&](ecs::Entity entity, const GpuLight& light) {
       gathered.lights.push_back(light);
       gathered.entities.push_back(entity);
     }, [&](ecs::Entity entity, std::string problem) { gathered.rejected.push_back({entity, std::move(problem)}); });

@@ -51,13 +51,12 @@ struct RejectedLight {
   std::string problem;
 };
 
-// A share of the lights gathered by one thread (LightBuffer::chunks).
+// A share of the LightColor pool, walked by one thread (LightBuffer::chunks).
 struct LightChunk {
-  std::vector<GpuLight> lights;
-  std::vector<ecs::Entity> entities;
+  std::size_t offset = 0;  // where its lights start in the buffer
+  std::size_t count = 0;   // how many of its entities are drawable lights
   std::vector<RejectedLight> rejected;
   std::vector<LightRun> runs;  // the changed indices it found, in the buffer's numbering
-  std::size_t offset = 0;      // where its lights start in the buffer
 };
 
 struct LightBuffer {
@@ -71,7 +70,9 @@ struct LightBuffer {
   std::vector<ecs::Entity> entities;  // staging[i] is the light of entities[i]
   std::uint32_t rejected = 0;  // light entities left out this frame
   std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
-  std::vector<LightChunk> chunks;  // the gather's per-thread memory, kept across frames
+  std::vector<LightChunk> chunks;  // the gather's shares, kept across frames: where each began
+  std::size_t pool_size = 0;       // LightColor components when they were split so
+  std::size_t kept = 0;            // lights in the staging copy before this frame's gather
 };
 
 struct GatheredLights {

@@ -1,3 +1,6 @@
+#include <cstring>
+#include <limits>
+
 #include <gmock/gmock.h>
 
 #include "components/light.hpp"
@@ -156,6 +159,56 @@ TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) 
   EXPECT_EQ(registry.resource<render::LightBuffer>().rejected, 6u);
   EXPECT_EQ(std::count(warnings.begin(), warnings.end(), '\n'), 6) << "one warning per light, not per frame:\n" << warnings;
   EXPECT_THAT(warnings, ::testing::HasSubstr("warning: light entity " + std::to_string(nan_position.index) + " left out: position"));
+}
+
+// The buffer against gather_lights, the plain one-thread walk, light by light.
+void expect_buffer_matches_gather(ecs::Registry& registry, const char* step) {
+  const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
+  const std::vector<render::GpuLight> expected = render::gather_lights(registry).lights;
+  const std::vector<render::GpuLight> held = read_back(buffer);
+  ASSERT_EQ(held.size(), expected.size()) << step;
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    ASSERT_EQ(std::memcmp(&held[i], &expected[i], sizeof(render::GpuLight)), 0) << step << ": light " << i;
+  }
+}
+
+// Each thread writes its share of the pool where last frame's share began; a
+// light rejected, mended or destroyed before a share moves it, and that frame
+// must still send every light to its place.
+TEST_F(LightBufferSystem, LightsLeftOutOrBackMoveTheLightsAfterThemIntoPlace) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  render::register_light_buffer(scheduler);
+  std::vector<ecs::Entity> lights;
+  for (int i = 0; i < 40'000; ++i) lights.push_back(add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f));
+  scheduler.run_frame(registry, 0.0);
+  const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
+  expect_buffer_matches_gather(registry, "first frame");
+
+  ::testing::internal::CaptureStderr();
+  registry.get<Transform>(lights[10]).position.x = std::numeric_limits<float>::quiet_NaN();
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_THAT(::testing::internal::GetCapturedStderr(), ::testing::HasSubstr("left out: position (nan"));
+  EXPECT_EQ(buffer.count, 39'999u);
+  expect_buffer_matches_gather(registry, "light 10 left out");
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 0u) << "steady again after the shift";
+
+  registry.get<Transform>(lights[10]).position.x = 10.0f;
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.count, 40'000u);
+  expect_buffer_matches_gather(registry, "light 10 back");
+
+  registry.get<Transform>(lights[30'000]).position.y = 2.0f;
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.uploaded, 1u) << "a light moved in a later share goes alone";
+  expect_buffer_matches_gather(registry, "light 30,000 moved");
+
+  registry.destroy(lights[5]);  // the pool's last light takes its slot
+  for (int i = 0; i < 100; ++i) add_light(registry, {-1.0f - static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f);
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.count, 40'099u);
+  expect_buffer_matches_gather(registry, "a light destroyed, a hundred added");
 }
 
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {
