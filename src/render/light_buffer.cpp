@@ -139,7 +139,7 @@ void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& c
         state.staging[i] = light;
         mark_changed(chunk.runs, i);
       }
-      if (!(state.entities[i] == entity)) state.entities[i] = entity;  // unchanged memory stays clean
+      if (state.entities[i] != entity) state.entities[i] = entity;  // unchanged memory stays clean
     }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); });
   }
 }
