@@ -1,9 +1,10 @@
-// The LightBuffer system (render/light_buffer.hpp): CPU ms per frame to mirror
-// the registry's lights into the light buffer, lights as the world spawns
-// generated ones (Transform, LightColor, LightRadius, LightAnimation), with the
-// lights holding still (nothing to send) and with every light moved by the
-// light animation (all of them sent). At 2^20 lights this is the CPU share of
-// a frame that the GPU kit's tables name as the rest of its time.
+// The CPU side of many lights, ms per frame: the light animation system alone
+// (systems/light_animation.hpp, every light moved), and the LightBuffer system
+// (render/light_buffer.hpp), which mirrors the registry's lights into the light
+// buffer, with the lights holding still (nothing to send) and all moved by the
+// animation (all sent). Lights as the world spawns generated ones (Transform,
+// LightColor, LightRadius, LightAnimation). At 2^20 lights the light buffer is
+// the CPU share of a frame that the GPU kit's tables name as the rest of its time.
 #include <cstdint>
 
 #include <benchmark/benchmark.h>
@@ -43,9 +44,21 @@ void run_light_buffer(benchmark::State& state, bool animated) {
   state.counters["sent"] = static_cast<double>(registry.resource<render::LightBuffer>().uploaded);
 }
 
+// The light animation alone, every light moved each frame (the window's and
+// the page's lights; the bench's hold still).
+void BM_LightAnimation(benchmark::State& state) {
+  ecs::Registry registry;
+  registry.set_resource<LightAnimationSettings>();
+  spawn_generated_lights(registry, state.range(0));
+  ecs::Scheduler scheduler;
+  register_light_animation(scheduler);
+  for (auto _ : state) scheduler.run_frame(registry, 1.0 / 60.0);
+}
+
 void BM_LightBufferStill(benchmark::State& state) { run_light_buffer(state, false); }
 void BM_LightBufferAnimated(benchmark::State& state) { run_light_buffer(state, true); }
 
+BENCHMARK(BM_LightAnimation)->RangeMultiplier(8)->Range(1024, 1 << 20)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_LightBufferStill)->RangeMultiplier(8)->Range(1024, 1 << 20)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_LightBufferAnimated)->RangeMultiplier(8)->Range(1024, 1 << 20)->Unit(benchmark::kMillisecond)->UseRealTime();
 

@@ -134,9 +134,8 @@ class Registry {
   }
 
   // The entities holding T and their components, in pool order (index i of
-  // one is index i of the other): for read-only walks split over threads,
-  // during which nothing may add or remove components (a View allows that,
-  // this does not).
+  // one is index i of the other): for walks split over threads, during which
+  // nothing may add or remove components (a View allows that, this does not).
   template <typename T>
   [[nodiscard]] std::span<const Entity> entities_with() const {
     const auto* p = find_pool<T>();
@@ -153,15 +152,18 @@ class Registry {
     const auto* p = find_pool<T>();
     return (alive(e) && p && p->contains(e)) ? &p->get(e) : nullptr;
   }
-  // find for such walks over a pool's own entities (which are alive), in a
-  // tight loop: the pool is looked up once, and each find first tries the slot
-  // after the last one found, so entities that were given their components in
-  // the same order are found without the sparse array. One per thread.
+  // find for such walks, in a tight loop: the pool is looked up once, and
+  // each find first tries the slot after the last one found, so entities
+  // that were given their components in the same order are found without the
+  // sparse array. One per thread. Lookup<const T> (from a const registry)
+  // reads; Lookup<T> writes, each thread only its own entities' components.
   template <typename T>
   class Lookup {
+    using Pool = std::conditional_t<std::is_const_v<T>, const SparseSet<std::remove_const_t<T>>, SparseSet<T>>;
+
    public:
-    explicit Lookup(const SparseSet<T>* pool) : pool_(pool) {}
-    [[nodiscard]] const T* find(Entity e) {
+    explicit Lookup(Pool* pool) : pool_(pool) {}
+    [[nodiscard]] T* find(Entity e) {
       if (!pool_) return nullptr;
       const std::uint32_t slot = pool_->find_slot(e, next_);
       if (slot == SparseSetBase::kAbsent) return nullptr;
@@ -170,11 +172,15 @@ class Registry {
     }
 
    private:
-    const SparseSet<T>* pool_;
+    Pool* pool_;
     std::size_t next_ = 0;
   };
   template <typename T>
-  [[nodiscard]] Lookup<T> lookup() const {
+  [[nodiscard]] Lookup<const T> lookup() const {
+    return Lookup<const T>(find_pool<T>());
+  }
+  template <typename T>
+  [[nodiscard]] Lookup<T> lookup() {
     return Lookup<T>(find_pool<T>());
   }
 

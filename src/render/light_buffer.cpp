@@ -71,10 +71,10 @@ struct LightLookups {
         radius(registry.lookup<LightRadius>()),
         cone(registry.lookup<SpotCone>()),
         directional(registry.lookup<DirectionalLight>()) {}
-  ecs::Registry::Lookup<Transform> transform;
-  ecs::Registry::Lookup<LightRadius> radius;
-  ecs::Registry::Lookup<SpotCone> cone;
-  ecs::Registry::Lookup<DirectionalLight> directional;
+  ecs::Registry::Lookup<const Transform> transform;
+  ecs::Registry::Lookup<const LightRadius> radius;
+  ecs::Registry::Lookup<const SpotCone> cone;
+  ecs::Registry::Lookup<const DirectionalLight> directional;
 };
 
 // Calls light(entity, gpu) when the entity holding `color` is a drawable

@@ -128,14 +128,14 @@ TEST(Registry, LookupFindsAWalksComponentsInAnyOrder) {
   for (int i = 0; i < 6; ++i) registry.add<Position>(entities[i], static_cast<float>(i), 0.0f);
   for (const int i : {4, 0, 2}) registry.add<Velocity>(entities[i], static_cast<float>(10 * i), 0.0f);
   const Registry& read = registry;
-  Registry::Lookup<Velocity> velocities = read.lookup<Velocity>();
+  Registry::Lookup<const Velocity> velocities = read.lookup<Velocity>();
   for (const Entity e : read.entities_with<Position>()) {
     const Velocity* v = velocities.find(e);
     const Velocity* expected = read.find<Velocity>(e);
     ASSERT_EQ(v == nullptr, expected == nullptr);
     if (v) EXPECT_EQ(v->dx, expected->dx);
   }
-  Registry::Lookup<Name> names = read.lookup<Name>();
+  Registry::Lookup<const Name> names = read.lookup<Name>();
   EXPECT_EQ(names.find(entities[0]), nullptr) << "no pool yet: nothing found, not a crash";
 }
 

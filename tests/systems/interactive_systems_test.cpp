@@ -2,6 +2,8 @@
 // the InputState or clock a system reads, runs one frame and checks components.
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <glm/gtc/constants.hpp>
@@ -175,6 +177,29 @@ TEST(LightAnimationSystem, TheMillionthLightStillMovesEveryFrame) {
       const float step = glm::distance(animated_position(animation, time), animated_position(animation, time + 1.0 / 60.0));
       EXPECT_NEAR(step, 0.5f * 0.6f / 60.0f, 0.0015f) << "light " << k << " at " << time << " s";
     }
+  }
+}
+
+// Many lights are split over threads: every one is moved, each to its own place.
+TEST(LightAnimationSystem, EveryOneOfManyLightsIsMovedToItsOwnPlace) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  registry.set_resource<LightAnimationSettings>();
+  register_light_animation(scheduler);
+  std::vector<ecs::Entity> lights;
+  for (std::uint64_t k = 0; k < 40'000; ++k) {
+    const ecs::Entity e = registry.create();
+    const glm::vec3 origin(static_cast<float>(k % 200), 1.0f, static_cast<float>(k / 200));
+    // Every tenth light got its animation before its Transform: another pool order.
+    if (k % 10 == 0) registry.add<LightAnimation>(e, origin, golden_angle_phase(k));
+    registry.add<Transform>(e, Transform{origin});
+    if (k % 10 != 0) registry.add<LightAnimation>(e, origin, golden_angle_phase(k));
+    lights.push_back(e);
+  }
+  scheduler.run_frame(registry, 0.5);
+  const double time = registry.resource<LightAnimationSettings>().time;
+  for (const ecs::Entity e : lights) {
+    ASSERT_EQ(registry.get<Transform>(e).position, animated_position(registry.get<LightAnimation>(e), time)) << e.index;
   }
 }
 
