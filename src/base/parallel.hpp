@@ -19,6 +19,20 @@ inline constexpr bool kHasThreads = true;
 // The threads CPU work may split over: the machine's cores, at least 1.
 [[nodiscard]] inline unsigned hardware_threads() { return kHasThreads ? std::max(1u, std::thread::hardware_concurrency()) : 1u; }
 
+// Into how many runs `items` split: one per `items_per_thread` (fewer items
+// would not pay for a thread's start), at least 1, at most `threads`.
+[[nodiscard]] inline std::size_t share_count(std::size_t items, std::size_t items_per_thread, std::size_t threads = hardware_threads()) {
+  return std::clamp<std::size_t>(items / items_per_thread, 1, std::max<std::size_t>(threads, 1));
+}
+
+// Items [begin, end) of run `share` of `shares`, in order, even to one item.
+struct ShareRange {
+  std::size_t begin = 0, end = 0;
+};
+[[nodiscard]] inline ShareRange share_range(std::size_t items, std::size_t shares, std::size_t share) {
+  return {items * share / shares, items * (share + 1) / shares};
+}
+
 // Runs work(0) .. work(count - 1), each but the first on a thread of its own
 // and the first on the caller, and returns once all are done.
 template <typename Work>

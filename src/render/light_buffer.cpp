@@ -116,26 +116,25 @@ void mark_changed(std::vector<LightRun>& runs, std::size_t i) {
   else runs.push_back({i, i + 1});
 }
 
-// One thread's walk over its chunk [begin, end) of the LightColor pool: its
-// lights go to the staging copy from chunk.offset on, each written only where
-// it differs from what is there (compare) or unconditionally, its changed
+// One thread's walk over its chunk of the LightColor pool: its lights go to
+// the staging copy from chunk.offset on, each written where it differs from
+// what is there or, from `compared_below` on, unconditionally; its changed
 // indices noted in chunk.runs. It writes nothing from `limit` on, where the
 // next thread writes: a chunk holding more lights than that has moved the
 // next, whose lights are all walked again.
-void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& chunk, std::size_t begin, std::size_t end,
-                std::size_t limit, bool compare) {
+void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& chunk, ShareRange pool_range, std::size_t limit,
+                std::size_t compared_below) {
   const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
   const std::span<const LightColor> colors = registry.components_of<LightColor>();
-  const std::size_t kept = state.kept;
   chunk.count = 0;
   chunk.runs.clear();
   chunk.rejected.clear();
   LightLookups pools(registry);
-  for (std::size_t p = begin; p < end; ++p) {
+  for (std::size_t p = pool_range.begin; p < pool_range.end; ++p) {
     visit_light(pools, entities[p], colors[p], [&](ecs::Entity entity, const GpuLight& light) {
       const std::size_t i = chunk.offset + chunk.count++;
       if (i >= limit) return;
-      if (!compare || i >= kept || std::memcmp(&state.staging[i], &light, sizeof(GpuLight)) != 0) {
+      if (i >= compared_below || std::memcmp(&state.staging[i], &light, sizeof(GpuLight)) != 0) {
         state.staging[i] = light;
         mark_changed(chunk.runs, i);
       }
@@ -153,23 +152,22 @@ void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& c
 // last frame's chunk of the same pool began (or, new, where its pool range
 // begins, as when no light is rejected). Lights rejected or made drawable
 // since then move a chunk's start; that frame's chunks are walked again at
-// their new starts and every light is sent.
+// their new starts, writing (and so sending) every light.
 std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
   const std::size_t total = registry.count<LightColor>();
-  const std::size_t chunks = std::clamp<std::size_t>(total / kLightsPerThread, 1, hardware_threads());
+  const std::size_t chunks = share_count(total, kLightsPerThread);
   const bool same_split = state.chunks.size() == chunks && state.pool_size == total;
   state.chunks.resize(chunks);
   state.pool_size = total;
-  state.kept = state.staging.size();
-  state.staging.resize(std::max(state.kept, total));
-  state.entities.resize(state.staging.size());
-  auto range = [&](std::size_t c) { return std::pair{total * c / chunks, total * (c + 1) / chunks}; };
-  for (std::size_t c = 0; c < chunks; ++c) {
-    if (!same_split) state.chunks[c].offset = range(c).first;
+  if (!same_split) {
+    for (std::size_t c = 0; c < chunks; ++c) state.chunks[c].offset = share_range(total, chunks, c).begin;
   }
+  const std::size_t kept = state.staging.size();
+  state.staging.resize(std::max(kept, total));
+  state.entities.resize(state.staging.size());
   run_in_parallel(chunks, [&](std::size_t c) {
     const std::size_t limit = c + 1 < chunks ? state.chunks[c + 1].offset : state.staging.size();
-    walk_chunk(registry, state, state.chunks[c], range(c).first, range(c).second, limit, true);
+    walk_chunk(registry, state, state.chunks[c], share_range(total, chunks, c), limit, kept);
   });
   std::size_t count = 0;
   bool moved = false;
@@ -178,21 +176,20 @@ std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer
     chunk.offset = count;
     count += chunk.count;
   }
-  std::vector<LightRun> runs;
   if (moved) {
     run_in_parallel(chunks, [&](std::size_t c) {
-      walk_chunk(registry, state, state.chunks[c], range(c).first, range(c).second, state.chunks[c].offset + state.chunks[c].count, false);
+      LightChunk& chunk = state.chunks[c];
+      walk_chunk(registry, state, chunk, share_range(total, chunks, c), chunk.offset + chunk.count, 0);
     });
-    if (count > 0) runs.push_back({0, count});
-  } else {
-    for (const LightChunk& chunk : state.chunks) {
-      for (const LightRun& run : chunk.runs) {
-        if (!runs.empty() && run.begin <= runs.back().end + kRunGap) runs.back().end = run.end;
-        else runs.push_back(run);
-      }
-    }
   }
-  for (const LightChunk& chunk : state.chunks) rejected.insert(rejected.end(), chunk.rejected.begin(), chunk.rejected.end());
+  std::vector<LightRun> runs;
+  for (const LightChunk& chunk : state.chunks) {
+    for (const LightRun& run : chunk.runs) {
+      if (!runs.empty() && run.begin <= runs.back().end + kRunGap) runs.back().end = run.end;
+      else runs.push_back(run);
+    }
+    rejected.insert(rejected.end(), chunk.rejected.begin(), chunk.rejected.end());
+  }
   state.staging.resize(count);
   state.entities.resize(count);
   return runs;

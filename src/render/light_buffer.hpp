@@ -72,7 +72,6 @@ struct LightBuffer {
   std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
   std::vector<LightChunk> chunks;  // the gather's shares, kept across frames: where each began
   std::size_t pool_size = 0;       // LightColor components when they were split so
-  std::size_t kept = 0;            // lights in the staging copy before this frame's gather
 };
 
 struct GatheredLights {

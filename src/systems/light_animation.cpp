@@ -1,6 +1,5 @@
 #include "systems/light_animation.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <span>
 
@@ -32,12 +31,12 @@ void register_light_animation(ecs::Scheduler& scheduler) {
     // tens of milliseconds. Each writes the Transforms of its own share.
     const std::span<const ecs::Entity> entities = registry.entities_with<LightAnimation>();
     const std::span<const LightAnimation> animations = registry.components_of<LightAnimation>();
-    const std::size_t total = entities.size();
-    const std::size_t shares = std::clamp<std::size_t>(total / kAnimationsPerThread, 1, hardware_threads());
+    const std::size_t shares = share_count(entities.size(), kAnimationsPerThread);
     const double time = settings->time;
     run_in_parallel(shares, [&](std::size_t share) {
       ecs::Registry::Lookup<Transform> transforms = registry.lookup<Transform>();
-      for (std::size_t i = total * share / shares; i < total * (share + 1) / shares; ++i) {
+      const ShareRange range = share_range(entities.size(), shares, share);
+      for (std::size_t i = range.begin; i < range.end; ++i) {
         if (Transform* transform = transforms.find(entities[i])) transform->position = animated_position(animations[i], time);
       }
     });

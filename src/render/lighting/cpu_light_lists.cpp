@@ -74,7 +74,7 @@ template <typename EachTouched>
 CpuLightLists bin_lights(std::span<const render::GpuLight> lights, const glm::mat4& view, std::size_t bins, unsigned threads,
                          const EachTouched& each_touched) {
   if (threads == 0) threads = hardware_threads();
-  const std::size_t shares = std::clamp<std::size_t>(lights.size() / kLightsPerBinningThread, 1, threads);
+  const std::size_t shares = share_count(lights.size(), kLightsPerBinningThread, threads);
 
   // Each share (a run of lights in order) keeps the bins its lights touch,
   // light by light, and counts them per bin.
@@ -98,8 +98,9 @@ CpuLightLists bin_lights(std::span<const render::GpuLight> lights, const glm::ma
     }
   };
   for (std::size_t s = 0; s < shares; ++s) {
-    split[s].first_light = lights.size() * s / shares;
-    split[s].end_light = lights.size() * (s + 1) / shares;
+    const ShareRange range = share_range(lights.size(), shares, s);
+    split[s].first_light = range.begin;
+    split[s].end_light = range.end;
   }
   run_in_parallel(shares, [&](std::size_t s) { gather(split[s]); });
 
