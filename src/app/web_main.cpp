@@ -26,6 +26,7 @@
 #include "app/demo_keys.hpp"
 #include "app/world.hpp"
 #include "assets/image.hpp"
+#include "assets/model_import.hpp"
 #include "assets/scene_file.hpp"
 #include "components/demo.hpp"
 #include "components/frame_resources.hpp"
@@ -54,6 +55,11 @@ struct Page {
   // panel's changes (and, synced before each change, what keys changed).
   std::vector<std::string> args;
   std::string confirm;  // a change refused as too slow once: asked again, it is carried out
+  // The light count the user chose (the URL's --lights, or any count the panel
+  // or + and - set since): a scene file opened next keeps it; otherwise it
+  // comes with its own lights, as on the command line.
+  bool lights_given = false;     // the world started with --lights
+  std::uint32_t scene_lights = 0;  // its light count then
   // A panel change on trial for its first frames (check_trial), with the
   // arguments to return to.
   struct Trial {
@@ -322,6 +328,8 @@ void start_world(Page& page, std::vector<std::string> args) {
   register_fly_camera(world->scheduler());
   register_light_animation(world->scheduler());
   world->registry().set_resource<DemoRequests>();
+  page.lights_given = options.lights.has_value();
+  page.scene_lights = world->light_count();
   page.world = std::move(world);
   page.args = std::move(args);
   page.last_error.clear();
@@ -473,6 +481,10 @@ EMSCRIPTEN_KEEPALIVE const char* atrium_open_scene(const char* scene) {
     if (page.world) atrium::sync_args(page, atrium::panel(*page.world));
     std::vector<std::string> args = page.args.empty() ? atrium::page_defaults() : page.args;
     for (const char* option : {"--view", "--camera"}) args = atrium::without(std::move(args), option);
+    // A dropped model, which brings few lights or none, is lit by the page's.
+    const bool keep_lights = atrium::assets::is_model_file(scene) || page.lights_given ||
+                             (page.world && page.world->light_count() != page.scene_lights);
+    if (!keep_lights) args = atrium::without(std::move(args), "--lights");
     args[0] = scene;
     const bool paused = page.world && page.world->registry().resource<atrium::LightAnimationSettings>().paused;
     atrium::start_world(page, std::move(args));

@@ -19,6 +19,7 @@ usage: browser_test.py --site DIR --atrium BIN --psnr BIN [--sponza GLTF] [--tes
 """
 import argparse
 import base64
+import json
 import os
 import queue
 import subprocess
@@ -43,6 +44,19 @@ LIGHTS = "64"
 def native_render(atrium, scene, mode, options, out):
     subprocess.run([atrium, "render", scene, "--mode", mode, "--size", SIZE, "--lights", LIGHTS, "--no-compute",
                     "--out", out] + options, check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+
+def native_light_count(atrium):
+    """The built-in scene's own light count, as the native build reports it."""
+    info = json.loads(subprocess.run([atrium, "info", "--json"], check=True, capture_output=True, text=True).stdout)
+    return sum(info["lights"].values())
+
+
+def scene_file_lights(path):
+    """The lights a scene file lists and generates."""
+    with open(path) as f:
+        scene = json.load(f)
+    return len(scene.get("lights", [])) + sum(g["count"] for g in scene.get("light_generators", []))
 
 
 def check_aspect(tag, canvas):
@@ -87,7 +101,8 @@ def compare(args, port, results, tag, page_scene, native_scene, options):
 
 def check_page(args, port, results, url_message):
     """tests/web/checks/page.js: the page driven as a user drives it."""
-    result, console = open_page(port, f"check=page&size={SIZE}&lights={LIGHTS}&pause=1", results, timeout=300)
+    # No lights= here: the check opens scenes with their own light counts, then chooses LIGHTS.
+    result, console = open_page(port, f"check=page&size={SIZE}&pause=1", results, timeout=300)
     failures = [f"page check: {error}" for error in result["errors"] if error.startswith("check failed")]
     if console:
         failures.append(f"page check: console errors {console}")
@@ -134,6 +149,15 @@ def check_page(args, port, results, url_message):
             failures.append("choosing Sponza showed no progress bar, or blocked the picker")
         if " fps, " not in result.get("sponza_status", ""):
             failures.append(f"after choosing Sponza the page says {result.get('sponza_status')!r}")
+        own = scene_file_lights(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "scenes", "sponza.json"))
+        print(f"page check: lights of the built-in scene {result.get('builtin_lights')}, then of Sponza {result.get('sponza_lights')}")
+        if result.get("sponza_lights") != own:
+            failures.append(f"Sponza chosen after the built-in scene has {result.get('sponza_lights')} lights, not its own {own}")
+    builtin = native_light_count(args.atrium)
+    if result.get("builtin_lights") != builtin:
+        failures.append(f"the page opened without lights= has {result.get('builtin_lights')} lights, not the built-in scene's {builtin}")
+    if result.get("chosen_lights") != "":
+        failures.append(f"the panel refused lights {LIGHTS}: {result.get('chosen_lights')!r}")
     images = result.get("images", {})
     here = os.path.dirname(os.path.abspath(__file__))
     dropped = [("dropped_glb", os.path.join(here, "..", "data", "gltf-tools", "blender-colors.glb")),
@@ -150,6 +174,8 @@ def check_page(args, port, results, url_message):
         with open(page_png, "wb") as f:
             f.write(base64.b64decode(images[name + ".png"]))
         page_args = result[key]["args"]
+        if result[key].get("lights") != int(LIGHTS):
+            failures.append(f"the dropped {name} has {result[key].get('lights')} lights, not the {LIGHTS} the panel chose")
         mode = page_args[page_args.index("--mode") + 1]
         native_render(args.atrium, model, mode, [], native_png)
         psnr = subprocess.run([args.psnr, native_png, page_png], check=True, capture_output=True, text=True).stdout.strip()

@@ -24,6 +24,8 @@
     while (firstFrameMs === null) await sleep(50);
     result.first_frame_ms = firstFrameMs;
     await frames(2);
+    // Opened without lights= the scene has its own count.
+    result.builtin_lights = state().lights;
 
     // The panel's refusals are the command line's: the same words as the URL's.
     result.panel_negative_lights = setOption("--lights", "-3");
@@ -123,7 +125,11 @@
       await frames(2);
       await sleep(600);
       result.sponza_status = $("fps").textContent;
+      // Nobody chose a count, so Sponza comes with its own lights.
+      result.sponza_lights = state().lights;
     }
+    // A count chosen in the panel (browser_test.py's LIGHTS) stays with the scenes opened after it.
+    result.chosen_lights = setOption("--lights", "64");
 
     // Files dropped onto the page are drawn (web/shell.html's drop handler):
     // a .gltf with its .bin and textures, a .glb, and an .obj with its .mtl
@@ -140,7 +146,7 @@
       await frames(3);
       const reply = Module.ccall("atrium_screenshot", "string", ["string"], ["/shots/" + model + ".png"]);
       if (reply) errors.push(reply);
-      return { status: $("fps").textContent, args: state().args };
+      return { status: $("fps").textContent, args: state().args, lights: state().lights };
     };
     if ((await fetch("shared/gltf/tinygltf/Cube/Cube.gltf")).ok) {
       const cube = "shared/gltf/tinygltf/Cube/";
