@@ -40,6 +40,16 @@ std::string png_chunk_error(std::span<const std::uint8_t> bytes) {
   return {};
 }
 
+// A binary PGM or PPM with more than 8 bits a sample. Debian's stb_image
+// (2.27) reads those samples in the wrong byte order, and asked for RGBA it
+// converts them with its 8-bit converter and reads past its buffer (found by
+// the texture fuzzer; ImageMagick's 16-bit files do both).
+bool is_wide_pnm(std::span<const std::uint8_t> bytes) {
+  const int size = static_cast<int>(bytes.size());
+  return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6') &&
+         stbi_is_16_bit_from_memory(bytes.data(), size);
+}
+
 }  // namespace
 
 DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace space, std::size_t memory_limit) {
@@ -71,6 +81,10 @@ DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace sp
     const int size = static_cast<int>(bytes.size());
     if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
       result.error = stbi_failure_reason();
+      return result;
+    }
+    if (is_wide_pnm(bytes)) {
+      result.error = "16-bit PGM and PPM images are not read, as stb_image misreads them: save it with 8 bits a sample or as PNG";
       return result;
     }
     const std::size_t decoded_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;

@@ -27,6 +27,14 @@ $im bricks.png -define dds:compression=none -define dds:mipmaps=0 bricks.rgba.dd
 $im "$textures/5061699253647017043.png" -resize 128x128 leaves.png
 $im leaves.png -define dds:compression=dxt5 -define dds:mipmaps=7 leaves.bc3.dds
 $im leaves.png -define dds:compression=none -define dds:mipmaps=0 leaves.rgba.dds
+# PGM and PPM at 8 and 16 bits a sample (stb_image misreads the 16-bit ones),
+# with PNG twins, 16x16.
+for depth in 8 16; do
+  $im bricks.png -resize 16x16 -colorspace Gray -depth $depth bricks.grey$depth.pgm
+  $im bricks.png -resize 16x16 -depth $depth bricks.rgb$depth.ppm
+done
+$im bricks.png -resize 16x16 -colorspace Gray -depth 8 bricks.grey8.png
+$im bricks.png -resize 16x16 -depth 8 bricks.rgb8.png
 
 # An asymmetric, single-sided, normal-mapped letter F by Blender, as modelled
 # and mirrored (scale -1 on X): glTF and FBX keep the node's scale, OBJ bakes
