@@ -14,6 +14,14 @@
 //    collect them and apply the change after `each` returns.
 //  * A reference or pointer to a component of type T is invalidated by adding a T
 //    to any entity (the pool may grow) and by removing any T (the last T moves).
+//
+// Change detection: every way of reaching a component for writing (add, get,
+// try_get on a non-const registry, a view whose callback takes it by non-const
+// reference, Lookup<T>) stamps its slot with the change clock, and
+// written_since tells a system what was written after it last called
+// advance_change_clock: the light buffer skips the lights nothing wrote.
+// Keep no component pointer across frames to write through later: such a
+// write would go unstamped.
 #pragma once
 
 #include <algorithm>
@@ -125,6 +133,11 @@ class Registry {
     auto* p = find_pool<T>();
     return (alive(e) && p) ? p->try_get(e) : nullptr;
   }
+  template <typename T>
+  [[nodiscard]] const T* try_get(Entity e) const {
+    const auto* p = find_pool<T>();
+    return (alive(e) && p) ? p->try_get(e) : nullptr;
+  }
 
   template <typename... Ts>
   [[nodiscard]] View<Ts...> view() {
@@ -168,8 +181,11 @@ class Registry {
       const std::uint32_t slot = pool_->find_slot(e, next_);
       if (slot == SparseSetBase::kAbsent) return nullptr;
       next_ = std::size_t{slot} + 1;
+      if constexpr (!std::is_const_v<T>) pool_->mark_written(slot);
       return &pool_->components()[slot];
     }
+    // The slot of the component the last find returned.
+    [[nodiscard]] std::uint32_t last_slot() const { return static_cast<std::uint32_t>(next_ - 1); }
 
    private:
     Pool* pool_;
@@ -188,6 +204,24 @@ class Registry {
   [[nodiscard]] std::size_t count() const {
     const auto* p = find_pool<T>();
     return p ? p->size() : 0;
+  }
+  // Changes whenever an entity gains or loses a T (0 while none ever had one).
+  template <typename T>
+  [[nodiscard]] std::uint64_t structure_version() const {
+    const auto* p = find_pool<T>();
+    return p ? p->version() : 0;
+  }
+
+  // Change detection (see the top of this file). A system that wants to know
+  // what changed since it last looked keeps what this returns and asks
+  // written_since with it next time; writes from now on are past it.
+  std::uint64_t advance_change_clock() { return change_clock_.fetch_add(1, std::memory_order_relaxed); }
+  // Whether a T in pool slots [first, end) (entities_with<T>()'s order) was
+  // reached for writing after the advance_change_clock call that returned `since`.
+  template <typename T>
+  [[nodiscard]] bool written_since(std::size_t first, std::size_t end, std::uint64_t since) const {
+    const auto* p = find_pool<T>();
+    return p && p->written_since(first, end, since);
   }
 
   // Resources: at most one value of each type per registry.
@@ -223,7 +257,7 @@ class Registry {
   SparseSet<T>& pool() {
     const std::size_t id = detail::component_id<T>();
     if (id >= pools_.size()) pools_.resize(id + 1);
-    if (!pools_[id]) pools_[id] = std::make_unique<SparseSet<T>>();
+    if (!pools_[id]) pools_[id] = std::make_unique<SparseSet<T>>(change_clock_);
     return static_cast<SparseSet<T>&>(*pools_[id]);
   }
   template <typename T>
@@ -243,6 +277,7 @@ class Registry {
     }
   }
 
+  ChangeClock change_clock_{1};
   std::vector<std::uint32_t> generations_;
   std::vector<std::uint32_t> free_;
   std::vector<std::unique_ptr<SparseSetBase>> pools_;
@@ -297,6 +332,32 @@ class View {
     }
   }
 
+  // Whether fn could write component I: it takes it by non-const reference
+  // (it cannot be called with that one component const). Such components'
+  // slots are marked written as the walk visits them.
+  template <std::size_t I, std::size_t J, typename T>
+  using ConstAt = std::conditional_t<I == J, const T&, T&>;
+  template <typename Fn, std::size_t I, std::size_t... J>
+  static constexpr bool writes(std::index_sequence<J...>) {
+    return !(std::is_invocable_v<Fn&, Entity, ConstAt<I, J, Ts>...> || std::is_invocable_v<Fn&, ConstAt<I, J, Ts>...>);
+  }
+  template <typename Fn, std::size_t... I>
+  static constexpr std::array<bool, sizeof...(Ts)> written_by(std::index_sequence<I...>) {
+    return {writes<Fn, I>(std::index_sequence_for<Ts...>{})...};
+  }
+  template <typename Fn, std::size_t... I>
+  void mark_slots(const std::array<std::uint32_t, sizeof...(Ts)>& slots, std::index_sequence<I...>) {
+    constexpr std::array<bool, sizeof...(Ts)> written = written_by<Fn>(std::index_sequence_for<Ts...>{});
+    ((written[I] ? std::get<I>(pools_)->mark_written(slots[I]) : void()), ...);
+  }
+  // Before an aligned walk of [first, end): a store per run of slots, not one
+  // per entity (the walk's loop stays as tight as a plain array's).
+  template <typename Fn, std::size_t... I>
+  void mark_range(std::size_t first, std::size_t end, std::index_sequence<I...>) {
+    constexpr std::array<bool, sizeof...(Ts)> written = written_by<Fn>(std::index_sequence_for<Ts...>{});
+    ((written[I] ? std::get<I>(pools_)->mark_written(first, end) : void()), ...);
+  }
+
   template <typename Fn, typename... Cs>
   static void call(Fn& fn, Entity e, Cs&... components) {
     if constexpr (std::is_invocable_v<Fn, Entity, Ts&...>) {
@@ -321,12 +382,17 @@ class View {
     const Entity* entities = driver_->entities().data();
     const auto data = std::make_tuple(std::get<SparseSet<Ts>*>(pools_)->components().data()...);
     const Entity last_original = entities[end - 1];
+    // The slots handed out are marked after the loop (a call before it keeps
+    // the compiler from vectorising the loop).
+    const std::size_t first = i;
     for (; i < end; ++i) {
       call(fn, entities[i], std::get<Ts*>(data)[i]...);
       if (changed_since(before, std::index_sequence_for<Ts...>{})) [[unlikely]] {
+        mark_range<Fn>(first, i + 1, std::index_sequence_for<Ts...>{});
         return next_after_change(i, end, last_original);
       }
     }
+    mark_range<Fn>(first, i, std::index_sequence_for<Ts...>{});
     return i;
   }
 
@@ -338,6 +404,7 @@ class View {
       const Entity e = driver_->entities()[i];
       const std::array<std::uint32_t, sizeof...(Ts)> slots{std::get<SparseSet<Ts>*>(pools_)->find_slot(e, i)...};
       if (std::find(slots.begin(), slots.end(), SparseSetBase::kAbsent) != slots.end()) continue;
+      mark_slots<Fn>(slots, std::index_sequence_for<Ts...>{});
       invoke(fn, e, slots, std::index_sequence_for<Ts...>{});
       if (changed_since(before, std::index_sequence_for<Ts...>{})) [[unlikely]] {
         return next_after_change(i, end, last_original);
@@ -361,7 +428,7 @@ class View {
 
   template <typename Fn, std::size_t... I>
   void invoke(Fn& fn, Entity e, const std::array<std::uint32_t, sizeof...(Ts)>& slots, std::index_sequence<I...>) {
-    call(fn, e, std::get<I>(pools_)->at_slot(slots[I])...);
+    call(fn, e, std::get<I>(pools_)->components()[slots[I]]...);
   }
 
   // If the visited entity left the driving pool, swap-and-pop moved an unvisited

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "ecs/registry.hpp"
@@ -137,6 +139,77 @@ TEST(Registry, LookupFindsAWalksComponentsInAnyOrder) {
   }
   Registry::Lookup<const Name> names = read.lookup<Name>();
   EXPECT_EQ(names.find(entities[0]), nullptr) << "no pool yet: nothing found, not a crash";
+}
+
+// Change detection: each way of reaching a component for writing marks it, so
+// that a system asking written_since sees it; reads mark nothing, and a
+// write marks only its own run of slots.
+TEST(RegistryChanges, EveryWayToWriteAComponentMarksItAndReadsDoNot) {
+  Registry registry;
+  constexpr std::size_t kCount = 10 * SparseSetBase::kSlotsPerStamp;
+  std::vector<Entity> entities;
+  for (std::size_t i = 0; i < kCount; ++i) {
+    entities.push_back(registry.create());
+    registry.add<Position>(entities.back(), static_cast<float>(i), 0.0f);
+    registry.add<Velocity>(entities.back());
+  }
+  auto slot = [](std::size_t i) { return i; };  // added in order: slot i is entity i
+  auto changed = [&](std::uint64_t since) {
+    std::vector<std::size_t> runs;
+    for (std::size_t run = 0; run * SparseSetBase::kSlotsPerStamp < kCount; ++run) {
+      if (registry.written_since<Position>(run * SparseSetBase::kSlotsPerStamp, (run + 1) * SparseSetBase::kSlotsPerStamp, since))
+        runs.push_back(run);
+    }
+    return runs;
+  };
+  const std::size_t run = SparseSetBase::kSlotsPerStamp;
+  std::uint64_t since = registry.advance_change_clock();
+  EXPECT_TRUE(changed(since).empty()) << "nothing written since the clock moved";
+
+  // Reads: const lookups, find, components_of, a const try_get, a view whose callback takes it const.
+  const Registry& read = registry;
+  Registry::Lookup<const Position> positions = read.lookup<Position>();
+  float sum = positions.find(entities[5])->x + read.find<Position>(entities[run])->x + read.components_of<Position>()[2 * run].x;
+  sum += read.try_get<Position>(entities[3 * run])->x;
+  registry.view<Position, Velocity>().each([&](const Position& p, Velocity& v) { v.dx = p.x; });
+  EXPECT_GT(sum, 0.0f);
+  EXPECT_TRUE(changed(since).empty()) << "reads mark nothing";
+  EXPECT_TRUE(registry.written_since<Velocity>(0, kCount, since)) << "the view wrote the velocities";
+
+  struct Write {
+    const char* how;
+    std::function<void()> write;
+    std::size_t run;
+  };
+  const std::vector<Write> writes = {
+      {"get", [&] { registry.get<Position>(entities[slot(0)]).x = -1.0f; }, 0},
+      {"try_get", [&] { registry.try_get<Position>(entities[slot(run + 1)])->y = 2.0f; }, 1},
+      {"add over a component", [&] { registry.add<Position>(entities[slot(2 * run)], 5.0f, 5.0f); }, 2},
+      {"a view's non-const parameter", [&] {
+         registry.view<Position, Velocity>().each([&](Entity e, Position& p, const Velocity&) {
+           if (e == entities[3 * run + 7]) p.y = 1.0f;
+         });
+       }, 3},
+      {"Lookup<T>", [&] { registry.lookup<Position>().find(entities[4 * run + 9])->x = 0.5f; }, 4},
+  };
+  for (const Write& w : writes) {
+    since = registry.advance_change_clock();
+    w.write();
+    if (std::string(w.how) == "a view's non-const parameter") {
+      // A view marks every entity it hands out for writing, written or not.
+      EXPECT_EQ(changed(since).size(), kCount / run) << w.how;
+    } else {
+      EXPECT_EQ(changed(since), std::vector<std::size_t>{w.run}) << w.how;
+    }
+    EXPECT_FALSE(registry.written_since<Velocity>(0, kCount, since)) << w.how << " marks only the pool it wrote";
+    EXPECT_TRUE(changed(registry.advance_change_clock()).empty()) << w.how << ": seen once, then not again";
+  }
+  // Removing an entity moves the pool's last into its slot: that slot counts as written.
+  since = registry.advance_change_clock();
+  const std::uint64_t structure = registry.structure_version<Position>();
+  registry.remove<Position>(entities[slot(6 * run)]);
+  EXPECT_NE(registry.structure_version<Position>(), structure);
+  EXPECT_EQ(changed(since), std::vector<std::size_t>{6});
 }
 
 TEST(Registry, ResourcesAreSingletonsPerType) {
