@@ -77,17 +77,35 @@ struct LightLookups {
   ecs::Registry::Lookup<const DirectionalLight> directional;
 };
 
+// The slots a light's other components hold, widened by each light visited.
+struct SlotSpans {
+  std::array<SlotRange, 4> slots;  // LightBlock::slots' order
+  void add(std::size_t pool, std::uint32_t slot) {
+    SlotRange& range = slots[pool];
+    if (range.first == range.end) range = {slot, slot + 1};
+    else range = {std::min(range.first, slot), std::max(range.end, slot + 1)};
+  }
+};
+
 // Calls light(entity, gpu) when the entity holding `color` is a drawable
 // light, rejected(entity, problem) when it is not; nothing when it has no
-// Transform (it is no light). Reads the registry only: several threads may
-// call it at once, each with lookups of its own.
+// Transform (it is no light). Notes in `spans` (when given) the slots its
+// other components hold. Reads the registry only: several threads may call it
+// at once, each with lookups of its own.
 template <typename Light, typename Rejected>
-void visit_light(LightLookups& pools, ecs::Entity entity, const LightColor& color, const Light& light, const Rejected& rejected) {
+void visit_light(LightLookups& pools, ecs::Entity entity, const LightColor& color, const Light& light, const Rejected& rejected,
+                 SlotSpans* spans = nullptr) {
   const Transform* transform = pools.transform.find(entity);
   if (!transform) return;
   const LightRadius* radius = pools.radius.find(entity);
   const SpotCone* cone = pools.cone.find(entity);
   const bool directional = pools.directional.find(entity) != nullptr;
+  if (spans) {
+    spans->add(0, pools.transform.last_slot());
+    if (radius) spans->add(1, pools.radius.last_slot());
+    if (cone) spans->add(2, pools.cone.last_slot());
+    if (directional) spans->add(3, pools.directional.last_slot());
+  }
   if (const LightFault fault = light_fault(*transform, color, radius, directional); fault != LightFault::None) {
     rejected(entity, describe(fault, *transform, color, radius));
     return;
@@ -110,37 +128,92 @@ void visit_light(LightLookups& pools, ecs::Entity entity, const LightColor& colo
 constexpr std::size_t kRunGap = 64;
 // Below this many lights a second thread costs more than it saves.
 constexpr std::size_t kLightsPerThread = 16384;
+// LightColor slots per LightBlock: what a frame skips or walks as one.
+constexpr std::size_t kLightBlock = 1024;
+
+// What lets a frame skip a block: the change clock the last walk took, and the
+// staging indices a system patched after it (sorted).
+struct SkipTest {
+  std::uint64_t since = 0;
+  std::span<const std::uint32_t> patched;
+
+  [[nodiscard]] bool unchanged(const ecs::Registry& registry, const LightBlock& block, std::size_t first, std::size_t end,
+                               std::size_t at) const {
+    const auto patch = std::lower_bound(patched.begin(), patched.end(), at);
+    if (patch != patched.end() && *patch < at + block.drawable) return false;
+    auto written = [&](auto component, std::size_t pool) {
+      const SlotRange range = block.slots[pool];
+      return range.first != range.end && registry.written_since<decltype(component)>(range.first, range.end, since);
+    };
+    return !registry.written_since<LightColor>(first, end, since) && !written(Transform{}, 0) && !written(LightRadius{}, 1) &&
+           !written(SpotCone{}, 2) && !written(DirectionalLight{}, 3);
+  }
+};
 
 void mark_changed(std::vector<LightRun>& runs, std::size_t i) {
   if (!runs.empty() && i <= runs.back().end + kRunGap) runs.back().end = i + 1;
   else runs.push_back({i, i + 1});
 }
 
-// One thread's walk over its chunk of the LightColor pool: its lights go to
-// the staging copy from chunk.offset on, each written where it differs from
-// what is there or, from `compared_below` on, unconditionally; its changed
-// indices noted in chunk.runs. It writes nothing from `limit` on, where the
-// next thread writes: a chunk holding more lights than that has moved the
-// next, whose lights are all walked again.
-void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& chunk, ShareRange pool_range, std::size_t limit,
-                std::size_t compared_below) {
+// One thread's walk over its chunk of the LightColor pool, a block at a time:
+// its lights go to the staging copy from chunk.offset on, each written where
+// it differs from what is there or, from `compared_below` on,
+// unconditionally; its changed indices noted in chunk.runs. With `skip`, a
+// block that nothing wrote is left as it is (a walked block that holds
+// another number of lights than before moves the ones after it, which are
+// then walked too). It writes nothing from `limit` on, where the next thread
+// writes: a chunk holding more lights than that has moved the next, whose
+// lights are all walked again. Returns the light entities it visited.
+std::size_t walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& chunk, ShareRange pool_range, std::size_t limit,
+                       std::size_t compared_below, const SkipTest* skip) {
   const std::span<const ecs::Entity> entities = registry.entities_with<LightColor>();
   const std::span<const LightColor> colors = registry.components_of<LightColor>();
-  chunk.count = 0;
+  const std::size_t blocks = (pool_range.end - pool_range.begin + kLightBlock - 1) / kLightBlock;
+  if (chunk.blocks.size() != blocks) skip = nullptr;
+  chunk.blocks.resize(blocks);
+  chunk.count = chunk.rejected_count = 0;
   chunk.runs.clear();
   chunk.rejected.clear();
   LightLookups pools(registry);
-  for (std::size_t p = pool_range.begin; p < pool_range.end; ++p) {
-    visit_light(pools, entities[p], colors[p], [&](ecs::Entity entity, const GpuLight& light) {
-      const std::size_t i = chunk.offset + chunk.count++;
-      if (i >= limit) return;
-      if (i >= compared_below || std::memcmp(&state.staging[i], &light, sizeof(GpuLight)) != 0) {
-        state.staging[i] = light;
-        mark_changed(chunk.runs, i);
-      }
-      if (state.entities[i] != entity) state.entities[i] = entity;  // unchanged memory stays clean
-    }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); });
+  std::size_t visited = 0;
+  bool shifted = false;  // a walked block holds another number of lights than before
+  for (std::size_t b = 0; b < blocks; ++b) {
+    LightBlock& block = chunk.blocks[b];
+    const std::size_t first = pool_range.begin + b * kLightBlock, end = std::min(pool_range.end, first + kLightBlock);
+    if (skip && !shifted && skip->unchanged(registry, block, first, end, chunk.offset + chunk.count)) {
+      chunk.count += block.drawable;
+      chunk.rejected_count += block.rejected;
+      continue;
+    }
+    const std::uint32_t drawable_before = block.drawable;
+    const std::size_t count_before = chunk.count, rejected_before = chunk.rejected.size();
+    SlotSpans spans;
+    for (std::size_t p = first; p < end; ++p) {
+      visit_light(pools, entities[p], colors[p], [&](ecs::Entity entity, const GpuLight& light) {
+        const std::size_t i = chunk.offset + chunk.count++;
+        if (i >= limit) return;
+        if (i >= compared_below || std::memcmp(&state.staging[i], &light, sizeof(GpuLight)) != 0) {
+          state.staging[i] = light;
+          mark_changed(chunk.runs, i);
+        }
+        if (state.entities[i] != entity) state.entities[i] = entity;  // unchanged memory stays clean
+      }, [&](ecs::Entity entity, std::string problem) { chunk.rejected.push_back({entity, std::move(problem)}); }, &spans);
+    }
+    visited += end - first;
+    block.drawable = static_cast<std::uint32_t>(chunk.count - count_before);
+    block.rejected = static_cast<std::uint32_t>(chunk.rejected.size() - rejected_before);
+    block.slots = spans.slots;
+    chunk.rejected_count += block.rejected;
+    shifted = shifted || block.drawable != drawable_before;
   }
+  return visited;
+}
+
+// The light pools' structure versions: lights added or removed, or given or
+// losing a component, change them (and a frame then walks every light).
+std::array<std::uint64_t, 5> light_structure(const ecs::Registry& registry) {
+  return {registry.structure_version<LightColor>(), registry.structure_version<Transform>(), registry.structure_version<LightRadius>(),
+          registry.structure_version<SpotCone>(), registry.structure_version<DirectionalLight>()};
 }
 
 // Overwrites the buffer's staging copy with this frame's lights where they
@@ -150,13 +223,20 @@ void walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightChunk& c
 // nothing. The LightColor pool is walked in chunks, one thread each, each
 // comparing with and writing into its own part of the staging copy: where
 // last frame's chunk of the same pool began (or, new, where its pool range
-// begins, as when no light is rejected). Lights rejected or made drawable
-// since then move a chunk's start; that frame's chunks are walked again at
-// their new starts, writing (and so sending) every light.
-std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer& state, std::vector<RejectedLight>& rejected) {
+// begins, as when no light is rejected). When no light entity was added or
+// removed since `state.seen`, the chunks skip their blocks that nothing wrote.
+// Lights rejected or made drawable since then move a chunk's start; that
+// frame's chunks are walked again at their new starts, writing (and so
+// sending) every light.
+std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer& state, std::uint64_t now,
+                                      std::vector<RejectedLight>& rejected) {
   const std::size_t total = registry.count<LightColor>();
   const std::size_t chunks = share_count(total, kLightsPerThread);
   const bool same_split = state.chunks.size() == chunks && state.pool_size == total;
+  const std::array<std::uint64_t, 5> structure = light_structure(registry);
+  std::sort(state.patched.begin(), state.patched.end());
+  const SkipTest skip{state.seen, state.patched};
+  const bool may_skip = same_split && state.seen != 0 && structure == state.structure;
   state.chunks.resize(chunks);
   state.pool_size = total;
   if (!same_split) {
@@ -165,9 +245,10 @@ std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer
   const std::size_t kept = state.staging.size();
   state.staging.resize(std::max(kept, total));
   state.entities.resize(state.staging.size());
+  std::vector<std::size_t> visited(chunks, 0);
   run_in_parallel(chunks, [&](std::size_t c) {
     const std::size_t limit = c + 1 < chunks ? state.chunks[c + 1].offset : state.staging.size();
-    walk_chunk(registry, state, state.chunks[c], share_range(total, chunks, c), limit, kept);
+    visited[c] = walk_chunk(registry, state, state.chunks[c], share_range(total, chunks, c), limit, kept, may_skip ? &skip : nullptr);
   });
   std::size_t count = 0;
   bool moved = false;
@@ -179,9 +260,14 @@ std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer
   if (moved) {
     run_in_parallel(chunks, [&](std::size_t c) {
       LightChunk& chunk = state.chunks[c];
-      walk_chunk(registry, state, chunk, share_range(total, chunks, c), chunk.offset + chunk.count, 0);
+      visited[c] += walk_chunk(registry, state, chunk, share_range(total, chunks, c), chunk.offset + chunk.count, 0, nullptr);
     });
   }
+  state.walked = 0;
+  for (const std::size_t v : visited) state.walked += static_cast<std::uint32_t>(v);
+  state.seen = now;
+  state.structure = structure;
+  state.patched.clear();
   std::vector<LightRun> runs;
   for (const LightChunk& chunk : state.chunks) {
     for (const LightRun& run : chunk.runs) {
@@ -217,8 +303,10 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
     LightBuffer* state = registry.try_resource<LightBuffer>();
     if (!state) state = &registry.set_resource<LightBuffer>();
     std::vector<RejectedLight> rejected;
-    std::vector<LightRun> runs = refresh_staging(std::as_const(registry), *state, rejected);
-    state->rejected = static_cast<std::uint32_t>(rejected.size());
+    const std::uint64_t now = registry.advance_change_clock();
+    std::vector<LightRun> runs = refresh_staging(std::as_const(registry), *state, now, rejected);
+    state->rejected = 0;
+    for (const LightChunk& chunk : state->chunks) state->rejected += static_cast<std::uint32_t>(chunk.rejected_count);
     for (const RejectedLight& light : rejected) {
       if (!state->warned.insert(light.entity).second) continue;
       std::fprintf(stderr, "warning: light entity %u left out: %s (a system wrote it; lights need a finite position, "

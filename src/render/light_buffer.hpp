@@ -1,12 +1,15 @@
 // The LightBuffer system (Render phase, before the MeshRenderer): mirrors every
 // light entity (Transform + LightColor; optional LightRadius, SpotCone,
 // DirectionalLight) into one shader storage buffer each frame, sending only the
-// lights that changed since the last frame. The buffer grows
+// lights that changed since the last frame, and walking only the blocks of
+// lights that something wrote (the registry's change detection): lights that
+// hold still cost nothing a frame. The buffer grows
 // geometrically up to what one storage buffer may hold (gfx::storage_block_limit),
 // beyond which the frame is refused with gfx::ResourceLimitError. Lights whose
 // values cannot be drawn (NaN, infinite, negative) are left out with a warning.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -51,12 +54,29 @@ struct RejectedLight {
   std::string problem;
 };
 
+// Pool slots [first, end) (first == end: none).
+struct SlotRange {
+  std::uint32_t first = 0, end = 0;
+};
+
+// kLightBlock consecutive slots of a chunk's share of the LightColor pool, as
+// the walk that last visited them found them: a frame that finds nothing
+// written in these slots (nor in the other pools' slots its lights hold) and
+// no light added or removed anywhere skips them.
+struct LightBlock {
+  std::uint32_t drawable = 0;  // lights it put in the buffer
+  std::uint32_t rejected = 0;  // light entities it left out
+  std::array<SlotRange, 4> slots;  // of its lights' Transform, LightRadius, SpotCone, DirectionalLight
+};
+
 // A share of the LightColor pool, walked by one thread (LightBuffer::chunks).
 struct LightChunk {
   std::size_t offset = 0;  // where its lights start in the buffer
   std::size_t count = 0;   // how many of its entities are drawable lights
-  std::vector<RejectedLight> rejected;
+  std::size_t rejected_count = 0;  // how many are not (walked or skipped)
+  std::vector<RejectedLight> rejected;  // those its walked blocks found this frame
   std::vector<LightRun> runs;  // the changed indices it found, in the buffer's numbering
+  std::vector<LightBlock> blocks;
 };
 
 struct LightBuffer {
@@ -72,6 +92,15 @@ struct LightBuffer {
   std::unordered_set<ecs::Entity> warned;  // each rejected entity is warned about once
   std::vector<LightChunk> chunks;  // the gather's shares, kept across frames: where each began
   std::size_t pool_size = 0;       // LightColor components when they were split so
+  // Change detection: the change clock the last walk took (0: none yet) and
+  // the light pools' structure then (ecs::Registry::structure_version).
+  std::uint64_t seen = 0;
+  std::array<std::uint64_t, 5> structure{};
+  // Indices of the staging copy that a later system changed this frame (the
+  // ShadowAtlas moves shadowed lights to the front): the next walk visits
+  // them whatever the registry says, to put them back.
+  std::vector<std::uint32_t> patched;
+  std::uint32_t walked = 0;  // light entities visited this frame; the rest held still
 };
 
 struct GatheredLights {

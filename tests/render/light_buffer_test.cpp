@@ -1,4 +1,6 @@
 #include <cstring>
+#include <functional>
+#include <thread>
 #include <limits>
 
 #include <gmock/gmock.h>
@@ -209,6 +211,86 @@ TEST_F(LightBufferSystem, LightsLeftOutOrBackMoveTheLightsAfterThemIntoPlace) {
   scheduler.run_frame(registry, 0.0);
   EXPECT_EQ(buffer.count, 40'099u);
   expect_buffer_matches_gather(registry, "a light destroyed, a hundred added");
+}
+
+// Lights that hold still are not walked at all: the registry's change
+// detection tells the buffer which blocks of lights something wrote, through
+// any of the ways a system writes components, and those alone are walked.
+TEST_F(LightBufferSystem, WalksOnlyTheLightsSomethingWrote) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  render::register_light_buffer(scheduler);
+  constexpr std::uint32_t kLights = 40'000;
+  std::vector<ecs::Entity> lights;
+  for (std::uint32_t i = 0; i < kLights; ++i) lights.push_back(add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f));
+  registry.add<LightRadius>(lights[20'000], 3.0f);
+  scheduler.run_frame(registry, 0.0);
+  const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
+  EXPECT_EQ(buffer.walked, kLights);
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.walked, 0u) << "nothing wrote a light";
+  EXPECT_EQ(buffer.uploaded, 0u);
+
+  struct Write {
+    const char* how;
+    std::function<void()> write;
+  };
+  const std::vector<Write> writes = {
+      {"get<Transform>", [&] { registry.get<Transform>(lights[100]).position.y = 1.0f; }},
+      {"try_get<LightColor>", [&] { registry.try_get<LightColor>(lights[39'999])->intensity = 2.0f; }},
+      {"get<LightRadius>", [&] { registry.get<LightRadius>(lights[20'000]).radius = 4.0f; }},
+      {"a view's Transform&", [&] {
+         registry.view<Transform, LightRadius>().each([](Transform& t, const LightRadius&) { t.position.z = 2.0f; });
+       }},
+      {"Lookup<Transform> on another thread", [&] {
+         std::thread([&] { registry.lookup<Transform>().find(lights[30'500])->position.x = -5.0f; }).join();
+       }},
+      {"add over a LightColor", [&] { registry.add<LightColor>(lights[7], glm::vec3(0.5f), 1.0f); }},
+  };
+  for (const Write& w : writes) {
+    w.write();
+    scheduler.run_frame(registry, 0.0);
+    EXPECT_GT(buffer.walked, 0u) << w.how;
+    EXPECT_LE(buffer.walked, 2048u) << w.how << ": its block of lights, and a neighbour whose components share its pool's stamp";
+    EXPECT_EQ(buffer.uploaded, 1u) << w.how;
+    expect_buffer_matches_gather(registry, w.how);
+  }
+  // A light made unfit moves every light after it in its share; the walk goes on past its block.
+  registry.get<LightColor>(lights[5]).intensity = -1.0f;
+  ::testing::internal::CaptureStderr();
+  scheduler.run_frame(registry, 0.0);
+  ::testing::internal::GetCapturedStderr();
+  EXPECT_EQ(buffer.count, kLights - 1);
+  expect_buffer_matches_gather(registry, "light 5 left out");
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.walked, 0u) << "still again";
+  EXPECT_EQ(buffer.rejected, 1u) << "the light left out is still counted";
+  // Adding a component walks every light (the pools' structure changed).
+  registry.add<SpotCone>(lights[12'345]);
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_EQ(buffer.walked, kLights);
+  expect_buffer_matches_gather(registry, "a spot cone added");
+}
+
+// A later system of the frame may change the staging copy (the ShadowAtlas
+// moves shadowed lights to the front and notes where): the next frame puts
+// those lights back though nothing wrote them.
+TEST_F(LightBufferSystem, PutsBackWhatALaterSystemPatched) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  render::register_light_buffer(scheduler);
+  for (int i = 0; i < 5'000; ++i) add_light(registry, {static_cast<float>(i), 0, 0}, {1, 1, 1}, 1.0f);
+  scheduler.run_frame(registry, 0.0);
+  render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
+  std::swap(buffer.staging[0], buffer.staging[4'000]);
+  std::swap(buffer.entities[0], buffer.entities[4'000]);
+  buffer.staging[0].spot.z = 1.0f;
+  glNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(buffer.staging.size() * sizeof(render::GpuLight)), buffer.staging.data());
+  buffer.patched = {0, 4'000};
+  scheduler.run_frame(registry, 0.0);
+  EXPECT_LE(buffer.walked, 2'048u) << "the two patched lights' blocks";
+  expect_buffer_matches_gather(registry, "after the patch");
+  EXPECT_TRUE(buffer.patched.empty());
 }
 
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {

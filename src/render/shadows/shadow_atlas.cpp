@@ -351,6 +351,7 @@ bool ShadowAtlas::update(ecs::Registry& registry, render::LightBuffer& lights, c
     patched.push_back(c.light);
   }
   upload_patched_lights(lights, patched);
+  lights.patched.insert(lights.patched.end(), patched.begin(), patched.end());
   view_buffer_.upload(views_.data(), views_.size() * sizeof(ShadowView));
   if (compute_free_) {
     static_assert(sizeof(ShadowView) == render::kShadowViewTexels * sizeof(glm::vec4), "a view is 6 texels (common/shadows.glsl)");

@@ -6,6 +6,7 @@
 // forward picture with shadows on; maps are drawn again only for what moved;
 // and the CPU parts (tile allocator, light selection) hold their promises.
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <optional>
 
@@ -309,6 +310,31 @@ TEST_F(Shadows, MovingGeometryRedrawsTheMapsItReaches) {
   world.frame(0.0);
   EXPECT_EQ(stats.maps_reused, 0u);
   EXPECT_GT(stats.maps_rendered, 0u);
+}
+
+// The atlas moves shadowed lights to the front of the light buffer each
+// frame; with shadows off the buffer holds the lights in their own order
+// again, though no light moved, and draws the picture it drew before them.
+TEST_F(Shadows, OffPutsTheLightsBackInTheirOwnOrder) {
+  World world({.scene = "atrium", .lights = 48u, .mode = "clustered-deferred", .size = {160, 90}});
+  world.frame(0.0);
+  const assets::Image before = world.renderer().read_output();
+  auto& settings = world.registry().resource<RendererSettings>();
+  settings.shadows = 8;
+  world.frame(0.0);
+  world.frame(0.0);
+  settings.shadows = 0;
+  world.frame(0.0);
+  const auto& lights = world.registry().resource<render::LightBuffer>();
+  const render::GatheredLights own = render::gather_lights(world.registry());
+  ASSERT_EQ(lights.staging.size(), own.lights.size());
+  std::vector<render::GpuLight> held(lights.count);
+  glGetNamedBufferSubData(lights.buffer.id(), 0, static_cast<GLsizeiptr>(held.size() * sizeof(render::GpuLight)), held.data());
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    ASSERT_EQ(lights.entities[i], own.entities[i]) << "light " << i;
+    ASSERT_EQ(std::memcmp(&held[i], &own.lights[i], sizeof(render::GpuLight)), 0) << "light " << i;
+  }
+  EXPECT_EQ(assets::max_channel_difference(world.renderer().read_output(), before), 0);
 }
 
 TEST_F(Shadows, OffGivesTheAtlasBack) {
