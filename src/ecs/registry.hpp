@@ -334,7 +334,8 @@ class View {
 
   // Whether fn could write component I: it takes it by non-const reference
   // (it cannot be called with that one component const). Such components'
-  // slots are marked written as the walk visits them.
+  // slots are marked written: a sparse walk marks each as it hands it out,
+  // an aligned walk its whole range after its loop.
   template <std::size_t I, std::size_t J, typename T>
   using ConstAt = std::conditional_t<I == J, const T&, T&>;
   template <typename Fn, std::size_t I, std::size_t... J>
@@ -350,7 +351,7 @@ class View {
     constexpr std::array<bool, sizeof...(Ts)> written = written_by<Fn>(std::index_sequence_for<Ts...>{});
     ((written[I] ? std::get<I>(pools_)->mark_written(slots[I]) : void()), ...);
   }
-  // Before an aligned walk of [first, end): a store per run of slots, not one
+  // After an aligned walk of [first, end): a store per run of slots, not one
   // per entity (the walk's loop stays as tight as a plain array's).
   template <typename Fn, std::size_t... I>
   void mark_range(std::size_t first, std::size_t end, std::index_sequence<I...>) {
