@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets with clang (build-fuzz/) and runs each for
 # SECONDS (default 60), seeded with ../shared/testdata/gltf, tests/data/gltf-tools
-# (meshopt and Draco files other tools wrote), tests/data/model-tools (DDS, PGM, PPM and
-# PNG textures; OBJ, MTL and FBX models), scenes/ and the
+# (meshopt and Draco files other tools wrote), tests/data/model-tools (DDS, PGM, PPM, JPEG,
+# PNG and refused formats' textures; OBJ, MTL and FBX models), scenes/ and the
 # regression inputs in tests/fuzz/regressions/. A crash leaves its input in
 # build-fuzz/crashes/ and fails the script: fix the bug, then copy the input
 # to tests/fuzz/regressions/<target>/ so the test suite keeps checking it.
@@ -33,8 +33,9 @@ for target in "${targets[@]}"; do
     # OBJ, MTL and FBX files assimp and Blender wrote, and the hostile ones.
     find tests/data/model-tools \( -name '*.obj' -o -name '*.mtl' -o -name '*.fbx' \) -size -400k -exec cp {} "$seeds"/ \;
   elif [ "$target" = texture ]; then
-    # DDS files ImageMagick wrote (BC1, BC3, uncompressed), its PGM and PPM, and small PNGs.
-    cp tests/data/model-tools/*.dds tests/data/model-tools/*.pgm tests/data/model-tools/*.ppm "$seeds"/
+    # Files ImageMagick wrote: DDS (BC1, BC3, uncompressed), PGM, PPM, JPEG in
+    # four layouts, the GIF, PSD and HDR refused, and small PNGs.
+    cp tests/data/model-tools/*.{dds,pgm,ppm,jpg,gif,psd,hdr} "$seeds"/
     find tests/data/model-tools -name '*.png' -size -64k -exec cp {} "$seeds"/ \;
   else
     # Files other tools wrote: meshopt and Draco streams for the decoders.

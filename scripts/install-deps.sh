@@ -8,7 +8,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
-  libglm-dev libglfw3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev
+  libglm-dev libglfw3-dev libtinygltf-dev libstb-dev libspng-dev libturbojpeg0-dev nlohmann-json3-dev
   libepoxy-dev libegl-dev libgl-dev libimgui-dev libmeshoptimizer-dev libdraco-dev libsquish-dev libassimp-dev libtinyobjloader-dev libcli11-dev zlib1g-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth xdotool python3 python3-matplotlib python3-numpy

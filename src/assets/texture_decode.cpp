@@ -6,23 +6,25 @@
 #include <mutex>
 #include <new>
 #include <string>
+#include <string_view>
 
 #include <stb_image.h>
 
 #include "assets/dds.hpp"
-#include "base/parallel.hpp"
+#include "assets/image_decoders.hpp"
 #include "assets/load_budget.hpp"
+#include "base/parallel.hpp"
 
 namespace atrium::assets {
 namespace {
 
-// A PNG whose chunk claims more bytes than the file holds, or an empty string.
-// stb_image trusts IDAT lengths and grows its buffer to fit them: a 33 KB file
-// claiming a 1 GB chunk would allocate gigabytes before finding the data
-// missing (found by the texture fuzzer).
+// A PNG (its signature checked) whose chunk claims more bytes than the file
+// holds, or an empty string. stb_image (the page's PNG reader) trusts IDAT
+// lengths and grows its buffer to fit them: a 33 KB file claiming a 1 GB
+// chunk would allocate gigabytes before finding the data missing (found by
+// the texture fuzzer). libspng refuses it too, as "invalid scanline filter";
+// this names the chunk.
 std::string png_chunk_error(std::span<const std::uint8_t> bytes) {
-  constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  if (bytes.size() < 8 || !std::equal(kSignature, kSignature + 8, bytes.begin())) return {};
   std::size_t at = 8;
   while (bytes.size() - at >= 8) {
     const std::uint32_t length = (std::uint32_t{bytes[at]} << 24) | (std::uint32_t{bytes[at + 1]} << 16) |
@@ -50,7 +52,78 @@ bool is_wide_pnm(std::span<const std::uint8_t> bytes) {
          stbi_is_16_bit_from_memory(bytes.data(), size);
 }
 
+// Formats stb_image reads that Atrium does not take as textures: none is a
+// texture format of glTF or of the models Atrium imports, and stb_image's
+// readers of them are the least safe it has (its GIF reader has open
+// memory-safety reports upstream; its HDR reader took over 20 s on small
+// files the texture fuzzer wrote).
+struct RefusedFormat {
+  const char* name;
+  std::string_view magic;
+};
+constexpr RefusedFormat kRefusedFormats[] = {
+    {"GIF", "GIF8"},
+    {"Photoshop (PSD)", "8BPS"},
+    {"Radiance HDR", "#?RADIANCE"},
+    {"Radiance HDR", "#?RGBE"},
+    {"Softimage PIC", "\x53\x80\xf6\x34"},
+};
+
+const RefusedFormat* refused_format(std::span<const std::uint8_t> bytes) {
+  for (const RefusedFormat& format : kRefusedFormats) {
+    if (bytes.size() >= format.magic.size() && std::equal(format.magic.begin(), format.magic.end(), bytes.begin(),
+                                                          [](char m, std::uint8_t b) { return static_cast<std::uint8_t>(m) == b; })) {
+      return &format;
+    }
+  }
+  return nullptr;
+}
+
 }  // namespace
+
+bool is_png(std::span<const std::uint8_t> bytes) {
+  constexpr std::uint8_t kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  return bytes.size() >= 8 && std::equal(kSignature, kSignature + 8, bytes.begin());
+}
+
+bool is_jpeg(std::span<const std::uint8_t> bytes) {
+  return bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+}
+
+std::string decoded_size_error(std::uint64_t width, std::uint64_t height, std::size_t memory_limit) {
+  const double decoded_bytes = static_cast<double>(width) * static_cast<double>(height) * 4;
+  if (decoded_bytes <= static_cast<double>(memory_limit)) return {};
+  return std::to_string(width) + "x" + std::to_string(height) + " needs " + format_bytes(decoded_bytes) + ", more than the " +
+         format_bytes(static_cast<double>(memory_limit)) + " of memory available";
+}
+
+std::optional<Image> decode_with_stb(std::span<const std::uint8_t> bytes, std::size_t memory_limit, std::string& error) {
+  if (const RefusedFormat* format = refused_format(bytes)) {
+    error = std::string(format->name) + " images are not read as textures, only " + kTextureFormats + ": save it as PNG";
+    return std::nullopt;
+  }
+  int width = 0, height = 0, channels = 0;
+  const int size = static_cast<int>(bytes.size());
+  if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels)) {
+    error = stbi_failure_reason();
+    return std::nullopt;
+  }
+  if (is_wide_pnm(bytes)) {
+    error = "16-bit PGM and PPM images are not read, as stb_image misreads them: save it with 8 bits a sample or as PNG";
+    return std::nullopt;
+  }
+  if (error = decoded_size_error(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height), memory_limit); !error.empty()) {
+    return std::nullopt;
+  }
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &width, &height, &channels, 4);
+  if (!pixels) {
+    error = stbi_failure_reason();
+    return std::nullopt;
+  }
+  Image image{width, height, std::vector<std::uint8_t>(pixels, pixels + static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)};
+  stbi_image_free(pixels);
+  return image;
+}
 
 DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace space, std::size_t memory_limit) {
   DecodedTexture result;
@@ -73,35 +146,19 @@ DecodedTexture decode_texture(std::span<const std::uint8_t> bytes, ColorSpace sp
       result.error = "the image file is larger than 2 GiB";
       return result;
     }
-    if (std::string error = png_chunk_error(bytes); !error.empty()) {
-      result.error = std::move(error);
-      return result;
+    std::optional<Image> image;
+    if (is_png(bytes)) {
+      result.error = png_chunk_error(bytes);
+      if (result.error.empty()) image = decode_png(bytes, memory_limit, result.error);
+    } else if (is_jpeg(bytes)) {
+      image = decode_jpeg(bytes, memory_limit, result.error);
+    } else {
+      image = decode_with_stb(bytes, memory_limit, result.error);
     }
-    int w = 0, h = 0, channels = 0;
-    const int size = static_cast<int>(bytes.size());
-    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels)) {
-      result.error = stbi_failure_reason();
-      return result;
-    }
-    if (is_wide_pnm(bytes)) {
-      result.error = "16-bit PGM and PPM images are not read, as stb_image misreads them: save it with 8 bits a sample or as PNG";
-      return result;
-    }
-    const std::size_t decoded_bytes = static_cast<std::size_t>(w) * static_cast<std::size_t>(h) * 4;
-    if (decoded_bytes > memory_limit) {
-      result.error = std::to_string(w) + "x" + std::to_string(h) + " needs " + format_bytes(static_cast<double>(decoded_bytes)) +
-                     ", more than the " + format_bytes(static_cast<double>(memory_limit)) + " of memory available";
-      return result;
-    }
-    stbi_uc* pixels = stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 4);
-    if (!pixels) {
-      result.error = stbi_failure_reason();
-      return result;
-    }
+    if (!image) return result;
     TextureData texture;
     texture.color_space = space;
-    texture.image = Image{w, h, std::vector<std::uint8_t>(pixels, pixels + decoded_bytes)};
-    stbi_image_free(pixels);
+    texture.image = std::move(*image);
     result.texture = std::move(texture);
   } catch (const std::bad_alloc&) {
     result.error = "out of memory while decoding it";

@@ -1,7 +1,7 @@
 // One texture file's bytes to TextureData, for every importer: PNG, JPEG, TGA,
-// BMP and the other formats stb_image reads, and DDS (dds.hpp), whose
-// block-compressed levels stay compressed. The decoded size is checked against
-// `memory_limit` before decoding.
+// BMP, 8-bit PGM and PPM (image_decoders.hpp says which library reads which),
+// and DDS (dds.hpp), whose block-compressed levels stay compressed. The
+// decoded size is checked against `memory_limit` before decoding.
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,9 @@
 #include "assets/progress.hpp"
 
 namespace atrium::assets {
+
+// What decode_texture reads, as its refusals name it.
+inline constexpr const char* kTextureFormats = "PNG, JPEG, TGA, BMP, 8-bit PGM and PPM, and DDS";
 
 struct DecodedTexture {
   std::optional<TextureData> texture;  // its name is left for the caller

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <stb_image.h>
 
 #include "assets/image.hpp"
 #include "assets/texture_decode.hpp"
@@ -22,6 +23,84 @@ Image decoded_image(const std::string& name) {
   const DecodedTexture decoded = decode_texture(read(kFixtures / name), ColorSpace::Srgb, std::size_t{1} << 30);
   EXPECT_TRUE(decoded.texture && !decoded.texture->compressed) << name << ": " << decoded.error;
   return decoded.texture ? decoded.texture->image : Image{};
+}
+
+// stb_image's picture of a file: the reader PNG and JPEG had before libspng
+// and TurboJPEG (natively), and the page's still.
+Image stb_image(const std::string& name) {
+  const std::vector<std::uint8_t> bytes = read(kFixtures / name);
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+  EXPECT_TRUE(pixels) << name;
+  if (!pixels) return {};
+  Image image{w, h, std::vector<std::uint8_t>(pixels, pixels + static_cast<std::size_t>(w) * h * 4)};
+  stbi_image_free(pixels);
+  return image;
+}
+
+// ImageMagick's PNGs in every layout the readers must expand (16-bit RGBA,
+// palette with transparency, grey with alpha, Adam7 interlacing) decode to
+// the pixels stb_image gave, and a gAMA chunk of 1.0 changes nothing: glTF
+// has colour-space chunks ignored.
+TEST(TextureDecode, PngInEveryLayoutDecodesToStbImagesPixels) {
+  for (const char* name : {"bricks.32.png", "leaves.rgba16.png", "leaves.palette.png", "leaves.grey-alpha.png", "bricks.interlaced.png",
+                           "bricks.gamma1.png"}) {
+    const Image decoded = decoded_image(name), reference = stb_image(name);
+    ASSERT_EQ(decoded.width, 32) << name;
+    ASSERT_EQ(decoded.height, 32) << name;
+    EXPECT_EQ(max_channel_difference(decoded, reference), 0) << name;
+  }
+  EXPECT_EQ(max_channel_difference(decoded_image("bricks.gamma1.png"), decoded_image("bricks.32.png")), 0);
+  EXPECT_EQ(max_channel_difference(decoded_image("bricks.interlaced.png"), decoded_image("bricks.32.png")), 0);
+  const Image palette = decoded_image("leaves.palette.png");
+  int transparent = 0, opaque = 0;
+  for (std::size_t i = 3; i < palette.rgba.size(); i += 4) {
+    transparent += palette.rgba[i] == 0;
+    opaque += palette.rgba[i] == 255;
+  }
+  EXPECT_GT(transparent, 0) << "the palette's tRNS entries become alpha";
+  EXPECT_GT(opaque, 0);
+}
+
+// ImageMagick's JPEGs (baseline 4:2:0, progressive, grey, Adobe CMYK) decode
+// to the picture they were made from, and to within a few levels of
+// stb_image's decode (IDCT and chroma upsampling differ by rounding).
+TEST(TextureDecode, JpegInEveryLayoutDecodesToItsSourcePicture) {
+  const Image source = decoded_image("bricks.32.png");
+  for (const char* name : {"bricks.baseline.jpg", "bricks.progressive.jpg", "bricks.grey.jpg", "bricks.cmyk.jpg"}) {
+    const Image decoded = decoded_image(name), reference = stb_image(name);
+    ASSERT_EQ(decoded.width, 32) << name;
+    ASSERT_EQ(decoded.height, 32) << name;
+    EXPECT_GT(psnr(decoded, reference), 40.0) << name << " against stb_image's decode";
+    if (std::string(name) != "bricks.grey.jpg") EXPECT_GT(psnr(decoded, source), 30.0) << name << " against bricks.32.png";
+    for (std::size_t i = 3; i < decoded.rgba.size(); i += 4) ASSERT_EQ(decoded.rgba[i], 255) << name;
+  }
+  const Image grey = decoded_image("bricks.grey.jpg");
+  for (std::size_t i = 0; i < grey.rgba.size(); i += 4) {
+    ASSERT_EQ(grey.rgba[i], grey.rgba[i + 1]);
+    ASSERT_EQ(grey.rgba[i], grey.rgba[i + 2]);
+  }
+}
+
+// A size the header declares beyond the memory available is refused before
+// anything is decoded, with the size in the message, in both formats.
+TEST(TextureDecode, PngAndJpegLargerThanTheMemoryAvailableAreRefused) {
+  for (const char* name : {"bricks.32.png", "bricks.baseline.jpg"}) {
+    const DecodedTexture decoded = decode_texture(read(kFixtures / name), ColorSpace::Srgb, 1000);
+    EXPECT_FALSE(decoded.texture) << name;
+    EXPECT_EQ(decoded.error, "32x32 needs 4.0 KiB, more than the 1000 bytes of memory available") << name;
+  }
+}
+
+// ImageMagick's GIF, PSD and HDR files, which stb_image would read, are
+// refused in one line that says what is read instead.
+TEST(TextureDecode, GifPsdAndHdrAreRefusedNamingTheFormatsRead) {
+  for (const auto& [name, format] : {std::pair{"bricks.8.gif", "GIF"}, std::pair{"bricks.8.psd", "Photoshop (PSD)"},
+                                     std::pair{"bricks.8.hdr", "Radiance HDR"}}) {
+    const DecodedTexture decoded = decode_texture(read(kFixtures / name), ColorSpace::Srgb, std::size_t{1} << 30);
+    EXPECT_FALSE(decoded.texture) << name;
+    EXPECT_EQ(decoded.error, std::string(format) + " images are not read as textures, only PNG, JPEG, TGA, BMP, 8-bit PGM and PPM, and DDS: save it as PNG");
+  }
 }
 
 // ImageMagick's 8-bit PGM and PPM (make_fixtures.sh) decode to the picture of

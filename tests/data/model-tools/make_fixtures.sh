@@ -35,6 +35,22 @@ for depth in 8 16; do
 done
 $im bricks.png -resize 16x16 -colorspace Gray -depth 8 bricks.grey8.png
 $im bricks.png -resize 16x16 -depth 8 bricks.rgb8.png
+# PNG and JPEG in the layouts libspng and TurboJPEG must read as stb_image did,
+# 32x32: 16-bit RGBA, palette with transparency, grey with alpha, Adam7
+# interlaced, a gAMA chunk of 1.0 (ignored, as glTF asks); baseline 4:2:0,
+# progressive, greyscale and CMYK JPEG.
+$im bricks.png -resize 32x32 bricks.32.png
+$im leaves.png -resize 32x32 -depth 16 PNG64:leaves.rgba16.png
+$im leaves.png -resize 32x32 -colors 64 PNG8:leaves.palette.png
+$im leaves.png -resize 32x32 -colorspace Gray -define png:color-type=4 leaves.grey-alpha.png
+$im bricks.32.png -interlace PNG bricks.interlaced.png
+$im bricks.32.png -set gamma 1.0 -define png:include-chunk=gAMA bricks.gamma1.png
+$im bricks.32.png -quality 90 -sampling-factor 2x2 bricks.baseline.jpg
+$im bricks.32.png -quality 90 -interlace JPEG bricks.progressive.jpg
+$im bricks.32.png -quality 90 -colorspace Gray bricks.grey.jpg
+$im bricks.32.png -quality 90 -colorspace CMYK bricks.cmyk.jpg
+# Formats stb_image reads that Atrium refuses as textures, 8x8.
+for format in gif psd hdr; do $im bricks.png -resize 8x8 bricks.8.$format; done
 
 # An asymmetric, single-sided, normal-mapped letter F by Blender, as modelled
 # and mirrored (scale -1 on X): glTF and FBX keep the node's scale, OBJ bakes
