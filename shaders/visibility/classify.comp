@@ -13,10 +13,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/lighting_targets.glsl"
 #include "visibility/visibility.glsl"
 #include "visibility/material_tiles.glsl"
-
-const uint kNone = 0xffffffffu;
-// Each sample's material (kNone: no geometry, or its pixel names it at an earlier sample).
-shared uint s_material[64 * kSamples];
+#include "visibility/tile_materials.glsl"
 
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
@@ -32,10 +29,10 @@ void main() {
       } else {
         uint triangle;
         material = visible_instance(id, triangle).material.x;
-        for (int j = 0; j < i; ++j) material = s_material[first + uint(j)] == material ? kNone : material;
+        for (int j = 0; j < i; ++j) material = s_slot_material[first + uint(j)] == material ? kNone : material;
       }
     }
-    s_material[first + uint(i)] = material;
+    s_slot_material[first + uint(i)] = material;
   }
   if (background != 0u) {
     g_shaded_pixel = pixel;
@@ -47,11 +44,8 @@ void main() {
   barrier();
   // The first sample of the tile to show a material lists the tile for it.
   for (int i = 0; i < kSamples; ++i) {
-    uint material = s_material[first + uint(i)];
-    if (material == kNone) continue;
-    bool listed = false;
-    for (uint k = 0u; k < first && !listed; ++k) listed = s_material[k] == material;
-    if (listed) continue;
+    if (!first_slot_of_its_material(first + uint(i))) continue;
+    uint material = s_slot_material[first + uint(i)];
     uint index = atomicAdd(u_dispatch[material].x, 1u);
     u_tiles[material * tile_capacity() + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
   }

@@ -34,10 +34,10 @@ void shade(ivec2 pixel, Instance instance, uint triangle, uint material) {
 }
 
 #ifdef BINDLESS_TEXTURES
-const uint kNone = 0xffffffffu;
-// Each surface's material, a slot per sample (kNone: none there), then the
-// tile's distinct materials: the loop over them is the same for every invocation.
-shared uint s_surface_material[64 * kSamples];
+#include "visibility/tile_materials.glsl"
+
+// Each surface's material takes a slot (kNone: none there); then the tile's
+// distinct materials, so that the loop over them is the same for every invocation.
 shared uint s_materials[64 * kSamples];
 shared uint s_material_count;
 
@@ -60,7 +60,7 @@ void main() {
   }
   for (int g = 0; g < kSamples; ++g) {
     uint triangle;
-    s_surface_material[first + uint(g)] = g < groups ? visible_instance(group_id[g], triangle).material.x : kNone;
+    s_slot_material[first + uint(g)] = g < groups ? visible_instance(group_id[g], triangle).material.x : kNone;
   }
   g_shaded_samples = background;
 #else
@@ -73,17 +73,13 @@ void main() {
     instance = visible_instance(id, triangle);
     material = instance.material.x;
   }
-  s_surface_material[first] = material;
+  s_slot_material[first] = material;
 #endif
   if (background != 0u) write_background();
   barrier();
   // The first slot of the tile to hold a material lists it.
   for (int i = 0; i < kSamples; ++i) {
-    uint m = s_surface_material[first + uint(i)];
-    if (m == kNone) continue;
-    bool listed = false;
-    for (uint k = 0u; k < first + uint(i) && !listed; ++k) listed = s_surface_material[k] == m;
-    if (!listed) s_materials[atomicAdd(s_material_count, 1u)] = m;
+    if (first_slot_of_its_material(first + uint(i))) s_materials[atomicAdd(s_material_count, 1u)] = s_slot_material[first + uint(i)];
   }
   barrier();
   uint count = s_material_count;
@@ -91,7 +87,7 @@ void main() {
     uint m = s_materials[k];
 #ifdef MSAA_SAMPLES
     for (int g = 0; g < groups; ++g) {
-      if (s_surface_material[first + uint(g)] != m) continue;
+      if (s_slot_material[first + uint(g)] != m) continue;
       g_shaded_samples = group_mask[g];
       uint triangle;
       Instance instance = visible_instance(group_id[g], triangle);
