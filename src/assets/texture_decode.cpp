@@ -42,14 +42,34 @@ std::string png_chunk_error(std::span<const std::uint8_t> bytes) {
   return {};
 }
 
-// A binary PGM or PPM with more than 8 bits a sample. Debian's stb_image
-// (2.27) reads those samples in the wrong byte order, and asked for RGBA it
-// converts them with its 8-bit converter and reads past its buffer (found by
-// the texture fuzzer; ImageMagick's 16-bit files do both).
-bool is_wide_pnm(std::span<const std::uint8_t> bytes) {
-  const int size = static_cast<int>(bytes.size());
-  return bytes.size() >= 2 && bytes[0] == 'P' && (bytes[1] == '5' || bytes[1] == '6') &&
-         stbi_is_16_bit_from_memory(bytes.data(), size);
+// Why stb_image must not read this binary PGM or PPM, or an empty string: its
+// header is read here as stb_image reads it (whitespace, '#' comments to the
+// end of the line, then width, height and the largest sample value).
+// - A number beyond 2^31 - 1 overflows stb_image's int (undefined behaviour,
+//   found by the texture fuzzer once stb was compiled into it).
+// - More than 8 bits a sample: Debian's stb_image (2.27) reads those samples
+//   in the wrong byte order, and asked for RGBA it converts them with its
+//   8-bit converter and reads past its buffer (found by the texture fuzzer;
+//   ImageMagick's 16-bit files do both).
+std::string pnm_header_error(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() < 2 || bytes[0] != 'P' || (bytes[1] != '5' && bytes[1] != '6')) return {};
+  const auto space = [](std::uint8_t c) { return c == ' ' || (c >= '\t' && c <= '\r'); };
+  std::size_t at = 2;
+  std::uint64_t value = 0;
+  for (int field = 0; field < 3; ++field) {
+    while (at < bytes.size() && (space(bytes[at]) || bytes[at] == '#')) {
+      while (at < bytes.size() && space(bytes[at])) ++at;
+      if (at < bytes.size() && bytes[at] == '#') {
+        while (at < bytes.size() && bytes[at] != '\n' && bytes[at] != '\r') ++at;
+      }
+    }
+    for (value = 0; at < bytes.size() && bytes[at] >= '0' && bytes[at] <= '9'; ++at) {
+      value = value * 10 + (bytes[at] - '0');
+      if (value > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) return "a PGM or PPM header number beyond 2147483647";
+    }
+  }
+  if (value > 255) return "16-bit PGM and PPM images are not read, as stb_image misreads them: save it with 8 bits a sample or as PNG";
+  return {};
 }
 
 // Formats stb_image reads that Atrium does not take as textures: none is a
@@ -102,14 +122,11 @@ std::optional<Image> decode_with_stb(std::span<const std::uint8_t> bytes, std::s
     error = std::string(format->name) + " images are not read as textures, only " + kTextureFormats + ": save it as PNG";
     return std::nullopt;
   }
+  if (error = pnm_header_error(bytes); !error.empty()) return std::nullopt;
   int width = 0, height = 0, channels = 0;
   const int size = static_cast<int>(bytes.size());
   if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels)) {
     error = stbi_failure_reason();
-    return std::nullopt;
-  }
-  if (is_wide_pnm(bytes)) {
-    error = "16-bit PGM and PPM images are not read, as stb_image misreads them: save it with 8 bits a sample or as PNG";
     return std::nullopt;
   }
   if (error = decoded_size_error(static_cast<std::uint64_t>(width), static_cast<std::uint64_t>(height), memory_limit); !error.empty()) {

@@ -91,6 +91,15 @@ TEST(FuzzRegressions, TexturesDecodeOrAreRefused) {
   }
 }
 
+// A PGM whose width has more digits than an int holds: refused before
+// stb_image parses it into an int that overflows.
+TEST(FuzzRegressions, APnmHeaderNumberBeyondAnIntIsRefusedUpFront) {
+  const DecodedTexture decoded =
+      decode_texture(read_bytes(kRegressions / "texture/pnm-header-number-overflows-stb-int.pgm"), ColorSpace::Srgb, std::size_t{1} << 30);
+  EXPECT_FALSE(decoded.texture);
+  EXPECT_EQ(decoded.error, "a PGM or PPM header number beyond 2147483647");
+}
+
 // A 33 KB PNG whose second IDAT chunk claims 1 GB: refused before stb_image
 // grows its buffer for it; the PNGs other tools wrote still decode.
 TEST(FuzzRegressions, APngChunkLongerThanTheFileIsRefusedUpFront) {
