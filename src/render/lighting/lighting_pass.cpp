@@ -35,9 +35,11 @@ void dispatch_per_pixel(gfx::ShaderProgram& program, glm::ivec2 size) {
   glDispatchCompute((pixels.x + group.x - 1) / group.x, (pixels.y + group.y - 1) / group.y, 1);
 }
 
-std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage) {
+std::uint32_t lights_per_run(glm::ivec2 size, int msaa, LightingStage stage) {
   const std::uint64_t budget = stage == LightingStage::Compute ? kComputeEvaluationsPerRun : kFragmentEvaluationsPerRun;
-  return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / std::max<std::uint64_t>(pixels, 1), 1, kMostLightsPerRun));
+  const glm::u64vec2 pixels(glm::max(size, glm::ivec2(0)));
+  const std::uint64_t samples = pixels.x * pixels.y * static_cast<std::uint64_t>(std::max(msaa, 1));
+  return static_cast<std::uint32_t>(std::clamp<std::uint64_t>(budget / std::max<std::uint64_t>(samples, 1), 1, kMostLightsPerRun));
 }
 
 void bind_lit_images(const render::PassResources& res, const render::FrameContext& frame, GLenum access) {

@@ -41,16 +41,18 @@ using render::kDiffuseLightImageUnit, render::kDisplayImageUnit, render::kLitCol
 void dispatch_per_pixel(gfx::ShaderProgram& program, glm::ivec2 size);
 
 // A full-screen pass that sums every light is split into runs of this many
-// lights (or fewer) at `pixels` pixels in `stage`, so that no dispatch or draw
+// lights (or fewer) over `size` in `stage`, so that no dispatch or draw
 // runs longer than about 20 ms on an H200: kLightEvaluationsPerRun evaluations
 // a run (the compute stage's 2^33 at 4.2e11 a second; the fragment stage's
 // 2^28 at 1.3e10, its 4 SMs of 132), and never more than kMostLightsPerRun,
-// which keeps a pixel's loop under llvmpipe's cap. At 2^20 lights and 1080p a
-// single dispatch took 5.2 s (docs/benchmarks.md).
+// which keeps a pixel's loop under llvmpipe's cap. With `msaa` samples every
+// pixel counts as that many: an edge pixel shades each of them, and a frame
+// may be edges throughout. At 2^20 lights and 1080p a single dispatch took
+// 5.2 s (docs/benchmarks.md).
 inline constexpr std::uint64_t kComputeEvaluationsPerRun = std::uint64_t{1} << 33;
 inline constexpr std::uint64_t kFragmentEvaluationsPerRun = std::uint64_t{1} << 28;
 inline constexpr std::uint32_t kMostLightsPerRun = 16384;
-[[nodiscard]] std::uint32_t lights_per_run(std::uint64_t pixels, LightingStage stage);
+[[nodiscard]] std::uint32_t lights_per_run(glm::ivec2 size, int msaa, LightingStage stage);
 
 // Binds the lit targets a compute lighting pass stores to (the HDR colour and,
 // with the split on, the two light sums) at their image units with `access`.

@@ -161,7 +161,7 @@ TEST_F(ComputeStageWith, ManyLightsSummedInRunsDrawForwardsPicture) {
     World world(options);
     world.registry().resource<RendererSettings>().technique_options.split_lighting = true;
     for (const LightingStage stage : {LightingStage::Fragment, LightingStage::Compute}) {
-      ASSERT_LT(lighting::lights_per_run(static_cast<std::uint64_t>(kSmall.x) * kSmall.y, stage), kLights) << "two runs or more";
+      ASSERT_LT(lighting::lights_per_run(kSmall, 1, stage), kLights) << "two runs or more";
       const assets::Image image = draw(world, stage);
       EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr) << mode << ", " << lighting::lighting_stage_name(stage);
     }
@@ -169,15 +169,18 @@ TEST_F(ComputeStageWith, ManyLightsSummedInRunsDrawForwardsPicture) {
 }
 
 // A run sums at most 2^33 light evaluations in compute and 2^28 as fragments
-// (about 20 ms each on an H200), and never more than 16,384 lights.
+// (about 20 ms each on an H200), and never more than 16,384 lights; with MSAA
+// every sample may be shaded (a frame of edges), so each counts.
 TEST(LightRuns, KeepEachDispatchShort) {
   using lighting::lights_per_run;
-  EXPECT_EQ(lights_per_run(1920u * 1080u, LightingStage::Compute), 4142u);
-  EXPECT_EQ(lights_per_run(1920u * 1080u, LightingStage::Fragment), 129u);
-  EXPECT_EQ(lights_per_run(320u * 180u, LightingStage::Compute), lighting::kMostLightsPerRun);
-  EXPECT_EQ(lights_per_run(320u * 180u, LightingStage::Fragment), 4660u);
-  EXPECT_EQ(lights_per_run(std::uint64_t{1} << 40, LightingStage::Fragment), 1u) << "always at least one light";
-  EXPECT_EQ(lights_per_run(0, LightingStage::Compute), lighting::kMostLightsPerRun);
+  EXPECT_EQ(lights_per_run({1920, 1080}, 1, LightingStage::Compute), 4142u);
+  EXPECT_EQ(lights_per_run({1920, 1080}, 1, LightingStage::Fragment), 129u);
+  EXPECT_EQ(lights_per_run({1920, 1080}, 4, LightingStage::Compute), 1035u);
+  EXPECT_EQ(lights_per_run({1920, 1080}, 4, LightingStage::Fragment), 32u);
+  EXPECT_EQ(lights_per_run({320, 180}, 0, LightingStage::Compute), lighting::kMostLightsPerRun) << "0: no MSAA";
+  EXPECT_EQ(lights_per_run({320, 180}, 1, LightingStage::Fragment), 4660u);
+  EXPECT_EQ(lights_per_run({1 << 20, 1 << 20}, 1, LightingStage::Fragment), 1u) << "always at least one light";
+  EXPECT_EQ(lights_per_run({0, 0}, 1, LightingStage::Compute), lighting::kMostLightsPerRun);
 }
 
 TEST_F(ComputeStageWith, ShadowsFirefliesAndTheOfferedDebugViews) {

@@ -29,8 +29,7 @@ void DeferredTechnique::add_passes(render::FrameGraph& graph, const render::Fram
 
 void DeferredTechnique::light(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
   const auto lights = static_cast<std::uint32_t>(frame.lights.size());
-  const std::uint32_t per_run = lighting::lights_per_run(std::uint64_t{static_cast<std::uint32_t>(targets.size.x)} * static_cast<std::uint32_t>(targets.size.y),
-                                               lighting_.stage());
+  const std::uint32_t per_run = lighting::lights_per_run(targets.size, options_.msaa, lighting_.stage());
   std::uint32_t first = 0;
   do {
     const std::uint32_t end = lights - first > per_run ? first + per_run : lights;
