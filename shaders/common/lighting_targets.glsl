@@ -21,7 +21,10 @@
 // g_shaded_samples names (all of them unless the pass says otherwise: the
 // visibility buffer's resolve shades each triangle of an edge pixel once, for
 // the samples that show it). EACH_SHADED_SAMPLE runs a statement per such
-// sample, LIT_AT is the sample's address in a lit image.
+// sample, LIT_AT is the sample's address in a lit image. The images are
+// declared in full in each branch: the GLSL dialect rewrite
+// (gfx/glsl_dialect.cpp) reads declarations before the preprocessor does, so
+// a macro cannot stand for their type.
 #ifdef MSAA_SAMPLES
 uint g_shaded_samples = (1u << MSAA_SAMPLES) - 1u;
 #define EACH_SHADED_SAMPLE(statement) for (int lit_sample = 0; lit_sample < MSAA_SAMPLES; ++lit_sample) { if ((g_shaded_samples & (1u << lit_sample)) != 0u) { statement; } }
