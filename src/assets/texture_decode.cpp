@@ -106,8 +106,15 @@ bool is_png(std::span<const std::uint8_t> bytes) {
   return bytes.size() >= 8 && std::equal(kSignature, kSignature + 8, bytes.begin());
 }
 
+// As stb_image knows a JPEG: a start-of-image marker after any number of 0xff
+// fill bytes. Every file it would take for one must go to decode_jpeg, never
+// to stb_image's JPEG reader (TurboJPEG refuses those that do not start
+// 0xff 0xd8).
 bool is_jpeg(std::span<const std::uint8_t> bytes) {
-  return bytes.size() >= 3 && bytes[0] == 0xff && bytes[1] == 0xd8 && bytes[2] == 0xff;
+  if (bytes.empty() || bytes[0] != 0xff) return false;
+  std::size_t at = 1;
+  while (at < bytes.size() && bytes[at] == 0xff) ++at;
+  return at < bytes.size() && bytes[at] == 0xd8;
 }
 
 std::string decoded_size_error(std::uint64_t width, std::uint64_t height, std::size_t memory_limit) {

@@ -100,6 +100,19 @@ TEST(FuzzRegressions, APnmHeaderNumberBeyondAnIntIsRefusedUpFront) {
   EXPECT_EQ(decoded.error, "a PGM or PPM header number beyond 2147483647");
 }
 
+// A JPEG behind twelve 0xff fill bytes: stb_image's JPEG reader (whose
+// Huffman tables overflow) takes it for one, so it goes to TurboJPEG, which
+// refuses it in one line.
+TEST(FuzzRegressions, AJpegAfterFillBytesNeverReachesStbImage) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the page reads JPEG with stb_image";
+#endif
+  const DecodedTexture decoded =
+      decode_texture(read_bytes(kRegressions / "texture/jpeg-after-fill-bytes-reaches-stb.jpg"), ColorSpace::Srgb, std::size_t{1} << 30);
+  EXPECT_FALSE(decoded.texture);
+  EXPECT_EQ(decoded.error.rfind("not a readable JPEG: ", 0), 0u) << decoded.error;
+}
+
 // A 33 KB PNG whose second IDAT chunk claims 1 GB: refused before stb_image
 // grows its buffer for it; the PNGs other tools wrote still decode.
 TEST(FuzzRegressions, APngChunkLongerThanTheFileIsRefusedUpFront) {
