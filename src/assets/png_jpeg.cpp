@@ -1,5 +1,7 @@
 #include "assets/image_decoders.hpp"
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 
 #include <spng.h>
@@ -13,8 +15,10 @@ std::optional<Image> decode_png(std::span<const std::uint8_t> bytes, std::size_t
     error = "out of memory while starting the PNG decoder";
     return std::nullopt;
   }
-  // Text, ICC and other ancillary chunks are held in memory too: the same limit.
-  spng_set_chunk_limits(png.get(), memory_limit, memory_limit);
+  // Text, ICC and other ancillary chunks are held in memory too: the same
+  // limit, a chunk's at most the 2^31 - 1 bytes libspng takes (it refuses
+  // a larger value and keeps its default).
+  spng_set_chunk_limits(png.get(), std::min<std::size_t>(memory_limit, std::numeric_limits<std::int32_t>::max()), memory_limit);
   spng_ihdr header{};
   int status = spng_set_png_buffer(png.get(), bytes.data(), bytes.size());
   if (status == 0) status = spng_get_ihdr(png.get(), &header);
