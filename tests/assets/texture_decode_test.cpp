@@ -4,9 +4,9 @@
 #include <vector>
 
 #include <gtest/gtest.h>
-#include <stb_image.h>
 
 #include "assets/image.hpp"
+#include "assets/image_decoders.hpp"
 #include "assets/texture_decode.hpp"
 
 namespace atrium::assets {
@@ -28,14 +28,10 @@ Image decoded_image(const std::string& name) {
 // stb_image's picture of a file: the reader PNG and JPEG had before libspng
 // and TurboJPEG (natively), and the page's still.
 Image stb_image(const std::string& name) {
-  const std::vector<std::uint8_t> bytes = read(kFixtures / name);
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4);
-  EXPECT_TRUE(pixels) << name;
-  if (!pixels) return {};
-  Image image{w, h, std::vector<std::uint8_t>(pixels, pixels + static_cast<std::size_t>(w) * h * 4)};
-  stbi_image_free(pixels);
-  return image;
+  std::string error;
+  std::optional<Image> image = decode_with_stb(read(kFixtures / name), std::size_t{1} << 30, error);
+  EXPECT_TRUE(image) << name << ": " << error;
+  return image ? std::move(*image) : Image{};
 }
 
 // ImageMagick's PNGs in every layout the readers must expand (16-bit RGBA,
