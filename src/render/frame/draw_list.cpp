@@ -1,6 +1,7 @@
 #include "render/frame/draw_list.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -38,21 +39,66 @@ auto state_key(const DrawBatch& b) {
 }
 
 // Opaque geometry before it is placed: one command, all instances of a
-// primitive drawn with one material.
+// primitive drawn with one material. Its instances are gathered in one array
+// for the whole list (Placed::command), not per command: a list with one
+// command per meshlet (DrawSelection::EachInView) has tens of thousands.
 struct PendingCommand {
-  DrawBatch state;
+  std::uint32_t state;  // into the list's distinct batch states
   DrawCommand command;
-  struct Placed {
-    float depth;  // view depth
-    InstanceData record;
-    std::uint32_t unit;  // its DrawList::visibility_units entry
-  };
-  std::vector<Placed> instances;  // never empty
   CullRecord cull;  // DrawSelection::EachInView
+  float nearest = 0.0f;  // view depth of its nearest instance
+  std::uint32_t first_placed = 0, placed_count = 0;  // its run of the placed instances, once sorted
+};
+
+struct Placed {
+  float depth;  // view depth
+  std::uint32_t record;  // its primitive instance's record, into the gathered ones
+  std::uint32_t first_triangle;  // within the primitive (InstanceData::material.y adds it)
+  std::uint32_t unit;  // its DrawList::visibility_units entry
+  std::uint32_t command;  // its PendingCommand
+};
+
+// A float's bits as an unsigned integer that orders as the float does.
+std::uint32_t ordered_bits(float value) {
+  const auto bits = std::bit_cast<std::uint32_t>(value);
+  return (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
+}
+
+// Each distinct (material, winding) is looked up once a list: the draw state
+// its primitives share (textures and samplers resolved), and its rank among
+// the list's states by state_key, equal for states that may share a batch.
+class BatchStates {
+ public:
+  BatchStates(const GpuAssets& gpu, GLuint vertex_array) : gpu_(gpu), vertex_array_(vertex_array) {}
+  std::uint32_t of(const assets::Material& material, bool mirrored) {
+    const auto [it, added] = index_.try_emplace({&material, mirrored}, static_cast<std::uint32_t>(states_.size()));
+    if (added) states_.push_back(batch_state(material, gpu_, vertex_array_, mirrored));
+    return it->second;
+  }
+  [[nodiscard]] const DrawBatch& operator[](std::uint32_t state) const { return states_[state]; }
+  // Ranks by state_key, after the last of(): masked last, then by GL state.
+  [[nodiscard]] std::vector<std::uint32_t> ranks() const {
+    std::vector<std::uint32_t> order(states_.size());
+    for (std::uint32_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) { return state_key(states_[a]) < state_key(states_[b]); });
+    std::vector<std::uint32_t> rank(states_.size());
+    std::uint32_t r = 0;
+    for (std::size_t i = 0; i < order.size(); ++i) {
+      if (i > 0 && state_key(states_[order[i - 1]]) != state_key(states_[order[i]])) ++r;
+      rank[order[i]] = r;
+    }
+    return rank;
+  }
+
+ private:
+  const GpuAssets& gpu_;
+  GLuint vertex_array_;
+  std::map<std::pair<const assets::Material*, bool>, std::uint32_t> index_;
+  std::vector<DrawBatch> states_;
 };
 
 struct PendingBlend {
-  DrawBatch state;
+  std::uint32_t state;
   DrawCommand command;
   InstanceData instance;
   float depth = 0.0f;
@@ -111,7 +157,10 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   using CommandKey = std::tuple<GLuint, std::uint32_t, std::uint32_t, std::int32_t, const assets::Material*, bool>;
   std::map<CommandKey, std::size_t> command_of;
   std::vector<PendingCommand> pending;
+  std::vector<Placed> placed;
+  std::vector<InstanceData> records;
   std::vector<PendingBlend> blended;
+  BatchStates states(gpu, gpu.vertex_array());
   const bool each_unit = selection == DrawSelection::EachInView;
 
   registry.view<Transform, MeshInstance>().each([&](ecs::Entity entity, const Transform& transform, const MeshInstance& instance) {
@@ -153,33 +202,33 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
                                    : glm::vec3(data.model * glm::vec4(0.5f * (primitive.bounds_min + primitive.bounds_max), 1.0f));
       const float depth = -(view * glm::vec4(centre, 1.0f)).z;
       const GLuint vertex_array = gpu.vertex_array();
+      const std::uint32_t state_index = states.of(material, mirrored);
       if (material.alpha_mode == assets::AlphaMode::Blend) {
         // Never occlusion-culled: blended surfaces go with every list but the late one.
         if (selection == DrawSelection::Revealed) continue;
         list.triangles_drawn += primitive.indices.size() / 3;
-        blended.push_back({batch_state(material, gpu, vertex_array, mirrored), {range.index_count, 1, range.first_index, range.base_vertex, 0},
+        blended.push_back({state_index, {range.index_count, 1, range.first_index, range.base_vertex, 0},
                            data, depth});
         continue;
       }
+      // One record for the primitive instance, which its meshlets' instances copy.
+      const auto record = static_cast<std::uint32_t>(records.size());
+      records.push_back(data);
       // (offset within the primitive, index count): one command per selected meshlet run.
       auto add_run = [&](std::uint32_t offset, std::uint32_t count) {
         list.triangles_drawn += count / 3;
         const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
-        if (added) pending.push_back({batch_state(material, gpu, vertex_array, mirrored), command, {}, {}});
-        InstanceData record = data;
-        record.material.y += offset / 3;
-        pending[it->second].instances.push_back({depth, record, unit});
+        if (added) pending.push_back({state_index, command, {}});
+        placed.push_back({depth, record, offset / 3, unit, static_cast<std::uint32_t>(it->second)});
       };
       // One command of its own per unit, with the box the GPU tests.
       auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
         list.triangles_drawn += count / 3;
         const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), cull_unit, count / 3, {0, 0}};
-        InstanceData record = data;
-        record.material.y += offset / 3;
-        pending.push_back({batch_state(material, gpu, vertex_array, mirrored), {count, 1, range.first_index + offset, range.base_vertex, 0},
-                           {{depth, record, unit}}, cull});
+        placed.push_back({depth, record, offset / 3, unit, static_cast<std::uint32_t>(pending.size())});
+        pending.push_back({state_index, {count, 1, range.first_index + offset, range.base_vertex, 0}, cull});
       };
       const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
                               bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
@@ -209,18 +258,44 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   // Opaque: masked last (its discard defeats early depth tests on GPUs), then
   // by state, so that a batch holds every command of one state, then front to
   // back (instances by depth, commands by their nearest instance).
+  // The instances grouped by command (a counting sort keeps their order), each
+  // group by depth.
+  std::vector<Placed> sorted(placed.size());
+  for (const Placed& p : placed) ++pending[p.command].placed_count;
+  std::uint32_t next = 0;
   for (PendingCommand& command : pending) {
-    std::stable_sort(command.instances.begin(), command.instances.end(), [](const auto& a, const auto& b) { return a.depth < b.depth; });
+    command.first_placed = next;
+    next += command.placed_count;
+    command.placed_count = 0;
   }
-  std::vector<std::size_t> order(pending.size());
-  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-    const PendingCommand& x = pending[a];
-    const PendingCommand& y = pending[b];
-    // alpha_masked leads the state key: false sorts first.
-    if (state_key(x.state) != state_key(y.state)) return state_key(x.state) < state_key(y.state);
-    return x.instances.front().depth < y.instances.front().depth;
-  });
+  for (const Placed& p : placed) {
+    PendingCommand& command = pending[p.command];
+    sorted[command.first_placed + command.placed_count++] = p;
+  }
+  for (PendingCommand& command : pending) {
+    const auto first = sorted.begin() + command.first_placed;
+    if (command.placed_count > 1) {
+      std::stable_sort(first, first + command.placed_count, [](const Placed& a, const Placed& b) { return a.depth < b.depth; });
+    }
+    command.nearest = first->depth;
+  }
+  // Commands in runs of one key (state rank, then nearest depth): the
+  // meshlets of one primitive instance, all at its depth. The runs are sorted,
+  // tied ones in gathering order, so that a list of one command per meshlet
+  // (tens of thousands) sorts as many runs as primitive instances.
+  const std::vector<std::uint32_t> rank = states.ranks();
+  struct Run {
+    std::uint64_t key;
+    std::uint32_t first, count;  // of the pending commands
+    bool operator<(const Run& other) const { return std::tie(key, first) < std::tie(other.key, other.first); }
+  };
+  std::vector<Run> order;
+  for (std::uint32_t i = 0; i < pending.size(); ++i) {
+    const std::uint64_t key = (std::uint64_t{rank[pending[i].state]} << 32) | ordered_bits(pending[i].nearest);
+    if (order.empty() || order.back().key != key) order.push_back({key, i, 0});
+    ++order.back().count;
+  }
+  std::sort(order.begin(), order.end());
   auto append = [&](std::vector<DrawBatch>& batches, const DrawBatch& state, DrawCommand command, float depth) {
     if (batches.empty() || state_key(batches.back()) != state_key(state)) {
       batches.push_back(state);
@@ -231,17 +306,24 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     list.command_depths.push_back(depth);
     ++batches.back().command_count;
   };
-  for (const std::size_t i : order) {
-    const PendingCommand& pending_command = pending[i];
+  list.instances.reserve(placed.size() + blended.size());
+  list.commands.reserve(pending.size() + blended.size());
+  list.command_depths.reserve(pending.size() + blended.size());
+  if (each_unit) list.cull_records.reserve(pending.size());
+  auto emit = [&](const PendingCommand& pending_command) {
     DrawCommand command = pending_command.command;
     command.base_instance = static_cast<std::uint32_t>(list.instances.size());
-    command.instance_count = static_cast<std::uint32_t>(pending_command.instances.size());
-    for (const PendingCommand::Placed& placed : pending_command.instances) {
-      list.visibility_units[placed.unit].record = static_cast<std::uint32_t>(list.instances.size());
-      list.instances.push_back(placed.record);
+    command.instance_count = pending_command.placed_count;
+    for (std::uint32_t p = pending_command.first_placed; p < pending_command.first_placed + pending_command.placed_count; ++p) {
+      list.visibility_units[sorted[p].unit].record = static_cast<std::uint32_t>(list.instances.size());
+      list.instances.push_back(records[sorted[p].record]);
+      list.instances.back().material.y += sorted[p].first_triangle;
     }
-    append(list.opaque, pending_command.state, command, pending_command.instances.front().depth);
+    append(list.opaque, states[pending_command.state], command, pending_command.nearest);
     if (each_unit) list.cull_records.push_back(pending_command.cull);
+  };
+  for (const Run& run : order) {
+    for (std::uint32_t c = run.first; c < run.first + run.count; ++c) emit(pending[c]);
   }
   for (std::size_t b = 0; b < list.opaque.size(); ++b) list.opaque[b].count_slot = static_cast<std::uint32_t>(b);
   // Blended: farthest first, one instance per command.
@@ -250,7 +332,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     DrawCommand command = item.command;
     command.base_instance = static_cast<std::uint32_t>(list.instances.size());
     list.instances.push_back(item.instance);
-    append(list.blended, item.state, command, item.depth);
+    append(list.blended, states[item.state], command, item.depth);
   }
   for (std::size_t b = 0; b < list.blended.size(); ++b) list.blended[b].count_slot = static_cast<std::uint32_t>(list.opaque.size() + b);
   return list;

@@ -1,6 +1,8 @@
 // The frame's draw list: the material table matches its GLSL twin byte for
 // byte, opaque draws come one multi-draw per state, masked after opaque, front
-// to back within a state, and blended draws farthest first.
+// to back within a state (commands by their nearest instance, instances of one
+// command nearest first), the GPU culling's list one command per unit in view,
+// and blended draws farthest first.
 #include "render/frame/draw_list.hpp"
 
 #include <algorithm>
@@ -58,6 +60,25 @@ TEST_F(DrawListTest, MaterialTableLayoutAndFlagsMatchTheirGlslTwins) {
 // Each batch's GL state, for counting distinct ones.
 auto state_of(const DrawBatch& b) { return std::tuple(b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored); }
 
+// Primitives without meshlets in view, and their meshlets in view, each one
+// or (`runs`) each run of neighbours one.
+std::size_t units_in_view(ecs::Registry& registry, bool runs) {
+  std::size_t units = 0;
+  registry.view<Visibility, WorldBounds>().each([&](const Visibility& visibility, const WorldBounds& bounds) {
+    if (!visibility.any) return;
+    for (std::uint32_t p = 0; p < visibility.primitives.size(); ++p) {
+      if (!(visibility.primitives[p] & seen::kInView)) continue;
+      const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
+      if (first == last) ++units;
+      for (std::uint32_t m = first; m < last; ++m) {
+        const bool in_view = visibility.meshlets[m] & seen::kInView;
+        units += in_view && (!runs || m == first || !(visibility.meshlets[m - 1] & seen::kInView));
+      }
+    }
+  });
+  return units;
+}
+
 TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIsVisible) {
   for (int view = 1; view <= 5; ++view) {
     World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .view = view, .size = {160, 90}});
@@ -86,22 +107,92 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
     }
     EXPECT_EQ(triangles, list.triangles_drawn) << "the built-in scene has no blended surface";
     // One instance per primitive in view, or per run of meshlets in view.
-    std::size_t runs = 0;
-    registry.view<Visibility, WorldBounds>().each([&](const Visibility& visibility, const WorldBounds& bounds) {
-      if (!visibility.any) return;
-      for (std::uint32_t p = 0; p < visibility.primitives.size(); ++p) {
-        if (!(visibility.primitives[p] & seen::kInView)) continue;
-        const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
-        if (first == last) ++runs;
-        for (std::uint32_t m = first; m < last; ++m) {
-          const bool in_view = visibility.meshlets[m] & seen::kInView;
-          runs += in_view && (m == first || !(visibility.meshlets[m - 1] & seen::kInView));
-        }
-      }
-    });
-    EXPECT_EQ(instances, runs) << view;
+    EXPECT_EQ(instances, units_in_view(registry, true)) << view;
     EXPECT_EQ(list.draw_calls(), world.renderer().stats().draw_calls);
     EXPECT_LE(list.draw_calls(), 10u) << "no more draws than the scene's 10 materials";
+  }
+}
+
+// GPU occlusion culling's list (DrawSelection::EachInView): one command and
+// one instance per meshlet or primitive in view, each with the box and unit
+// the culling shader tests, ordered as the other lists, and every primitive
+// instance in view findable by the visibility buffer's resolve.
+TEST_F(DrawListTest, EachInViewListHasOneCommandPerUnitInViewInDrawOrder) {
+  for (int view = 1; view <= 5; ++view) {
+    World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .view = view, .size = {160, 90}});
+    world.frame(0.0);
+    auto& registry = world.registry();
+    const auto& assets = registry.resource<assets::AssetManager>();
+    const auto& gpu = registry.resource<GpuAssets>();
+    const glm::mat4& eye = registry.resource<ViewState>().view;
+    const DrawList each = build_draw_list(registry, assets, gpu, eye, DrawSelection::EachInView);
+    const DrawList in_view = build_draw_list(registry, assets, gpu, eye, DrawSelection::InView);
+    EXPECT_EQ(each.triangles_drawn, in_view.triangles_drawn) << "the same geometry, view " << view;
+    const std::size_t units = units_in_view(registry, false);
+    ASSERT_EQ(each.cull_records.size(), units) << view;
+    std::size_t opaque_commands = 0;
+    std::set<decltype(state_of(DrawBatch{}))> states;
+    bool masked_seen = false;
+    std::set<std::uint32_t> cull_units;
+    for (const DrawBatch& batch : each.opaque) {
+      EXPECT_TRUE(states.insert(state_of(batch)).second) << "a state in two batches, view " << view;
+      EXPECT_TRUE(batch.alpha_masked || !masked_seen) << "an opaque batch after a masked one, view " << view;
+      masked_seen = masked_seen || batch.alpha_masked;
+      for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
+        const DrawCommand& command = each.commands[c];
+        EXPECT_EQ(command.instance_count, 1u);
+        EXPECT_EQ(command.base_instance, c) << "one instance per command, in command order";
+        EXPECT_EQ(each.cull_records[c].triangles, command.count / 3);
+        EXPECT_TRUE(cull_units.insert(each.cull_records[c].unit).second) << "a unit in two commands";
+        if (c > batch.first_command) EXPECT_LE(each.command_depths[c - 1], each.command_depths[c]) << "front to back";
+        ++opaque_commands;
+      }
+    }
+    EXPECT_EQ(opaque_commands, units);
+    EXPECT_EQ(each.visibility_units.size(), in_view.visibility_units.size());
+    for (std::size_t u = 0; u < each.visibility_units.size(); ++u) {
+      const VisibilityUnit& unit = each.visibility_units[u];
+      EXPECT_EQ(unit.first_id, in_view.visibility_units[u].first_id);
+      EXPECT_EQ(unit.record == VisibilityUnit::kNotDrawn, in_view.visibility_units[u].record == VisibilityUnit::kNotDrawn) << u;
+      if (unit.record == VisibilityUnit::kNotDrawn) continue;
+      ASSERT_LT(unit.record, each.instances.size());
+      // The record of one of its meshlets: its identifiers start inside the unit's.
+      EXPECT_GE(each.instances[unit.record].material.y, unit.first_id) << u;
+      EXPECT_EQ(each.instances[unit.record].material.z, in_view.instances[in_view.visibility_units[u].record].material.z) << u;
+    }
+  }
+}
+
+TEST_F(DrawListTest, InstancesOfOnePrimitiveShareACommandNearestFirst) {
+  // Five copies of one opaque pane at shuffled distances, and one mirrored copy.
+  assets::AssetManager manager;
+  assets::MeshAsset panes;
+  panes.materials.emplace_back();
+  panes.meshes.push_back({"pane", {assets::add_geometry(
+                                      panes, assets::shapes::grid(glm::vec3(-1, -1, 0), glm::vec3(2, 0, 0), glm::vec3(0, 2, 0), 1, 1, 1.0f), 0)}});
+  assets::SceneDescription scene;
+  const assets::MeshAssetHandle handle = manager.add_mesh_asset(std::move(panes));
+  for (const float z : {-3.0f, -9.0f, -1.0f, -7.0f, -5.0f, -2.0f}) {
+    Transform transform;
+    transform.position = glm::vec3(2.0f * z, 0.0f, z);
+    if (z == -2.0f) transform.scale = glm::vec3(-1.0f, 1.0f, 1.0f);
+    scene.instances.push_back({handle, 0, transform});
+  }
+  scene.views.push_back({"eye", glm::vec3(0.0f, 0.0f, 4.0f), 0.0f, 0.0f});
+  World world(std::move(manager), std::move(scene),
+              WorldOptions{.scene = "", .lights = 0u, .mode = "forward", .size = {64, 36}, .frustum_culling = false});
+  world.frame(0.0);
+  auto& registry = world.registry();
+  const DrawList list = build_draw_list(registry, registry.resource<assets::AssetManager>(),
+                                        registry.resource<GpuAssets>(), registry.resource<ViewState>().view);
+  ASSERT_EQ(list.opaque.size(), 2u) << "two windings: two draws";
+  ASSERT_EQ(list.commands.size(), 2u);
+  const DrawBatch& turned = list.opaque[0].mirrored ? list.opaque[0] : list.opaque[1];
+  const DrawCommand& shared = list.commands[list.opaque[0].mirrored ? list.opaque[1].first_command : list.opaque[0].first_command];
+  EXPECT_EQ(list.commands[turned.first_command].instance_count, 1u);
+  ASSERT_EQ(shared.instance_count, 5u);
+  for (std::uint32_t i = 0; i < 5; ++i) {
+    EXPECT_FLOAT_EQ(list.instances[shared.base_instance + i].model[3].z, -1.0f - 2.0f * static_cast<float>(i)) << "nearest first";
   }
 }
 
