@@ -1,7 +1,7 @@
 #include "render/frame/draw_list.hpp"
 
 #include <algorithm>
-#include <bit>
+#include <cstring>
 #include <map>
 #include <tuple>
 #include <unordered_map>
@@ -58,9 +58,11 @@ struct Placed {
   std::uint32_t command;  // its PendingCommand
 };
 
-// A float's bits as an unsigned integer that orders as the float does.
+// A float's bits as an unsigned integer that orders as the float does
+// (memcpy: the page's libc++ has no std::bit_cast).
 std::uint32_t ordered_bits(float value) {
-  const auto bits = std::bit_cast<std::uint32_t>(value);
+  std::uint32_t bits;
+  std::memcpy(&bits, &value, sizeof bits);
   return (bits & 0x80000000u) ? ~bits : bits | 0x80000000u;
 }
 
