@@ -83,12 +83,13 @@ class ShaderProgram {
   glm::uvec3 work_group_size_{1};
 };
 
-// Keeps the program in use across dispatches made inside a pass that draws
-// (whose program is live; at a frame's start the one in use may be a deleted one).
+// Keeps the program in use across dispatches made inside a pass that draws.
+// The one in use may be a deleted one (a World's, destroyed while in use):
+// GL frees it once another is used, and then none is put back.
 class KeepProgram {
  public:
   KeepProgram() { glGetIntegerv(GL_CURRENT_PROGRAM, &program_); }
-  ~KeepProgram() { glUseProgram(static_cast<GLuint>(program_)); }
+  ~KeepProgram() { glUseProgram(program_ != 0 && glIsProgram(static_cast<GLuint>(program_)) ? static_cast<GLuint>(program_) : 0); }
   KeepProgram(const KeepProgram&) = delete;
   KeepProgram& operator=(const KeepProgram&) = delete;
 
