@@ -8,6 +8,7 @@
 #include <unordered_set>
 
 #include "gfx/gl_features.hpp"
+#include "gfx/gpu_waits.hpp"
 
 namespace atrium::gfx {
 namespace {
@@ -171,6 +172,28 @@ void require_complete(GLuint framebuffer, std::string_view what) {
   std::snprintf(hex, sizeof hex, "%04x", static_cast<unsigned>(status));
   const char* why = gl_features().float_targets ? "" : "; this context cannot render to float targets (EXT_color_buffer_float)";
   throw std::runtime_error("render target " + std::string(what) + " is incomplete (status 0x" + hex + ")" + why);
+}
+
+void Fence::place() {
+  reset();
+  sync_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+void Fence::wait() {
+  if (!sync_) return;
+  if (const GLenum status = glClientWaitSync(sync_, 0, 0); status != GL_ALREADY_SIGNALED && status != GL_CONDITION_SATISFIED) {
+    count_gpu_wait();
+    // The flush submits the fence if it was not yet. A GPU that has not passed
+    // it in ten seconds is hung or lost: the caller goes on rather than freeze.
+    for (int second = 0; second < 10; ++second) {
+      if (glClientWaitSync(sync_, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) != GL_TIMEOUT_EXPIRED) break;
+    }
+  }
+  reset();
+}
+
+void Fence::reset() {
+  if (sync_) glDeleteSync(std::exchange(sync_, nullptr));
 }
 
 }  // namespace atrium::gfx

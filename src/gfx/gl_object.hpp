@@ -73,6 +73,33 @@ using Program = GlObject<GlKind::Program>;
 using Query = GlObject<GlKind::Query>;
 using Sampler = GlObject<GlKind::Sampler>;
 
+// A sync object placed in the command stream (glFenceSync), deleted with its
+// owner. Sync objects have no names, so they are not counted with the others.
+class Fence {
+ public:
+  Fence() = default;
+  ~Fence() { reset(); }
+  Fence(const Fence&) = delete;
+  Fence& operator=(const Fence&) = delete;
+  Fence(Fence&& other) noexcept : sync_(std::exchange(other.sync_, nullptr)) {}
+  Fence& operator=(Fence&& other) noexcept {
+    if (this != &other) {
+      reset();
+      sync_ = std::exchange(other.sync_, nullptr);
+    }
+    return *this;
+  }
+  // After every command submitted so far (replacing the fence before).
+  void place();
+  // Until the GPU has passed it (at once when none is placed): a wait, counted
+  // (gfx/gpu_waits.hpp), unless it has passed already. Leaves none placed.
+  void wait();
+  void reset();
+
+ private:
+  GLsync sync_ = nullptr;
+};
+
 // Creation through GL 4.5 direct state access.
 [[nodiscard]] Buffer create_buffer();
 // A buffer of vertex indices. WebGL2 fixes a buffer's kind at its first bind

@@ -1,8 +1,14 @@
 #include "gfx/stream_buffer.hpp"
 
 #include <algorithm>
+#include <cstring>
+
+#include "gfx/gl_features.hpp"
 
 namespace atrium::gfx {
+namespace {
+constexpr GLbitfield kMapping = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+}  // namespace
 
 void StreamBuffer::reserve(std::size_t bytes) {
   if (bytes <= capacity && buffer) return;
@@ -13,7 +19,39 @@ void StreamBuffer::reserve(std::size_t bytes) {
 
 void StreamBuffer::upload(const void* data, std::size_t bytes) {
   reserve(bytes);
-  if (bytes) glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
+  if (bytes == 0) return;
+  if (gl_features().buffer_storage && !unmappable_ && (staging_.empty() || staging_.front().capacity != capacity)) make_staging();
+  if (staging_.empty()) {
+    glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
+    return;
+  }
+  Staging& copy = staging_[next_];
+  next_ = (next_ + 1) % staging_.size();
+  copy.copied.wait();
+  std::memcpy(copy.mapped, data, bytes);
+  glCopyNamedBufferSubData(copy.buffer.id(), buffer.id(), 0, 0, static_cast<GLsizeiptr>(bytes));
+  copy.copied.place();
+}
+
+void StreamBuffer::make_staging() {
+  // Every copy at once and as large as the buffer, so that what a stream holds
+  // follows from its largest upload alone. Copies the GPU may still read are
+  // freed by GL once it has.
+  staging_.clear();
+  next_ = 0;
+  for (std::size_t i = 0; i < kStagingCopies; ++i) {
+    Staging copy;
+    copy.buffer = create_buffer();
+    copy.capacity = capacity;
+    glNamedBufferStorage(copy.buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, kMapping);
+    copy.mapped = glMapNamedBufferRange(copy.buffer.id(), 0, static_cast<GLsizeiptr>(capacity), kMapping);
+    if (!copy.mapped) {
+      staging_.clear();
+      unmappable_ = true;
+      return;
+    }
+    staging_.push_back(std::move(copy));
+  }
 }
 
 }  // namespace atrium::gfx
