@@ -194,7 +194,8 @@ done
 # is in view; the same triangles either way, the GPU path with nothing read back.
 for device in cpu gpu; do
   step "occlusion culling on the $device, grid" 30 "$out/.culling-$device.md" "$atrium" bench "$grid_scene" --modes clustered-deferred,tiled-deferred \
-    --views 2 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --culling "$device"
+    --views 2 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --culling "$device" \
+    --csv "$out/.culling-$device.csv"
 done
 # Bloom's cost per pixel (its three passes in the pass table), off against on.
 for bloom in 0 0.04; do
@@ -285,9 +286,14 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "MSAA 4x, both lighting stages, built-in scene, 1,024 lights" "$out/.msaa.md"
   section "Occlusion culling on the CPU (depth read back), grid, view 2" "$out/.culling-cpu.md"
   section "Occlusion culling on the GPU (nothing read back), grid, view 2" "$out/.culling-gpu.md"
+  # Each pass's CPU time (cpu_passes) beside each system's (cpu_systems): the
+  # renderer's CPU time outside its passes, which GPU culling's frames spent.
+  for device in cpu gpu; do
+    section "Occlusion culling on the $device, grid, view 2, as CSV (each pass's and each system's CPU time)" "$out/.culling-$device.csv"
+  done
   section "Pictures" "$out/.render-sponza.txt"
   cat "$out/.render-atrium.txt" 2>/dev/null | sed 's/^/    /'
 } >"$report"
-rm -f "$out"/.*.txt "$out"/.*.md "$out"/.health.png "$out"/.heatmap.png
+rm -f "$out"/.*.txt "$out"/.*.md "$out"/.*.csv "$out"/.health.png "$out"/.heatmap.png
 echo "run.sh: wrote $report; steps that failed: ${failed[*]:-none}" >&2
 [ ${#failed[@]} -eq 0 ]

@@ -56,6 +56,9 @@ for scene in atrium sponza shadows; do
     grep -q "^$mode," "$csv" || fail "$csv has no row for $mode"
   done
 done
+# The grid's culling runs as CSV too: the renderer's CPU time against its passes'.
+[ "$(grep -c "^clustered-deferred,1024,2,court,.*Render/mesh_renderer=" "$report")" = 2 ] ||
+  fail "no CSV rows of the grid's culling runs (cpu_passes, cpu_systems) in the report"
 for png in sponza.png atrium.png; do
   [ "$(head -c 4 "$work/out/$png" | tail -c 3)" = PNG ] || fail "$png is not a PNG"
 done
