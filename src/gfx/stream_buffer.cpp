@@ -20,7 +20,7 @@ void StreamBuffer::reserve(std::size_t bytes) {
 void StreamBuffer::upload(const void* data, std::size_t bytes) {
   reserve(bytes);
   if (bytes == 0) return;
-  if (gl_features().buffer_storage && !unmappable_ && (staging_.empty() || staging_.front().capacity != capacity)) make_staging();
+  if (gl_features().buffer_storage && !unmappable_ && (staging_.empty() || staging_bytes_ != capacity)) make_staging();
   if (staging_.empty()) {
     glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
     return;
@@ -38,11 +38,11 @@ void StreamBuffer::make_staging() {
   // follows from its largest upload alone. Copies the GPU may still read are
   // freed by GL once it has.
   staging_.clear();
+  staging_bytes_ = capacity;
   next_ = 0;
   for (std::size_t i = 0; i < kStagingCopies; ++i) {
     Staging copy;
     copy.buffer = create_buffer();
-    copy.capacity = capacity;
     glNamedBufferStorage(copy.buffer.id(), static_cast<GLsizeiptr>(capacity), nullptr, kMapping);
     copy.mapped = glMapNamedBufferRange(copy.buffer.id(), 0, static_cast<GLsizeiptr>(capacity), kMapping);
     if (!copy.mapped) {

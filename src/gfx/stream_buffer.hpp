@@ -37,11 +37,11 @@ struct StreamBuffer {
   struct Staging {
     Buffer buffer;
     void* mapped = nullptr;
-    std::size_t capacity = 0;
     Fence copied;  // placed after the copy out of it
   };
-  std::vector<Staging> staging_;  // none, or kStagingCopies of the buffer's capacity
-  std::size_t next_ = 0;          // the copy the next upload writes
+  std::vector<Staging> staging_;     // none, or kStagingCopies of staging_bytes_ each
+  std::size_t staging_bytes_ = 0;    // the buffer's capacity when they were made
+  std::size_t next_ = 0;             // the copy the next upload writes
   bool unmappable_ = false;       // the driver refused to map one: glBufferSubData from then on
   void make_staging();
 };
