@@ -1,12 +1,13 @@
-// The frame's instance records: one per drawn instance of a primitive (or a
-// run of its meshlets), read by common/mesh.vert through the instance-index
-// attribute and by the visibility buffer's resolve through its unit table.
+// The frame's instance records: one per primitive instance drawn (its
+// meshlets' draws share it), read by common/mesh.vert through the
+// instance-slot attribute and by the visibility buffer's resolve through its
+// unit table.
 // C++ twin: InstanceData in src/render/frame/draw_list.hpp.
 struct Instance {
   mat4 model;
   mat4 normal_matrix;  // the inverse transpose in the upper-left 3x3
   // x: index into the frame's material table (material_data.glsl); y: the
-  // visibility identifier of the record's first triangle; z, w: its primitive's
+  // visibility identifier of the primitive's first triangle; z, w: its
   // first index and base vertex in the geometry pools.
   uvec4 material;
 };

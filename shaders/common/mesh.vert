@@ -3,8 +3,8 @@
 // G-buffer pass, depth pre-passes): clip-space position plus world position,
 // normal, tangent, each texture slot's UV, the vertex colour and the material
 // for material evaluation.
-// Each vertex finds its instance's transforms through a_instance (the
-// instance-index attribute, offset by the draw's base instance). With
+// Each vertex finds its instance's record through a_instance (the
+// instance-slot attribute, offset by the draw's base instance: render::InstanceSlot). With
 // POSITION_ONLY (depth-only passes over surfaces without alpha tests) it
 // computes the clip-space position alone; with SHADOW_PASS it projects with
 // u_shadow_view_projection (a shadow map's view) instead of the camera's.
@@ -18,21 +18,23 @@ layout(location = 2) in vec4 a_tangent;
 layout(location = 3) in vec2 a_uv0;
 layout(location = 4) in vec2 a_uv1;
 layout(location = 5) in vec4 a_color;
-layout(location = 6) in uint a_instance;
+// x: the record; y: where the draw's triangles start in its primitive.
+layout(location = 6) in uvec2 a_instance;
 
 #include "common/instances.glsl"
 
 #ifdef NO_STORAGE_BUFFERS
-// Without base instances (WebGL2, GLES 3.0) a_instance is the draw's first
-// instance, set as a constant attribute, and gl_InstanceID counts from it.
-uint instance_index() { return a_instance + uint(gl_InstanceID); }
+// Without base instances (WebGL2, GLES 3.0) a_instance.x is the draw's first
+// instance, set as a constant attribute, and gl_InstanceID counts from it
+// (the tier's records are laid out slot by slot).
+uint instance_index() { return a_instance.x + uint(gl_InstanceID); }
 #else
-uint instance_index() { return a_instance; }
+uint instance_index() { return a_instance.x; }
 #endif
 
 #ifdef VISIBILITY_ID
-// The identifier of the instance record's first triangle (visibility/id.frag
-// adds gl_PrimitiveID).
+// The identifier of the draw's first triangle (visibility/id.frag adds
+// gl_PrimitiveID).
 flat out uint v_first_triangle_id;
 #endif
 #ifndef POSITION_ONLY
@@ -67,7 +69,7 @@ void main() {
   gl_Position = clip_position(u_view_projection * world);
 #endif
 #ifdef VISIBILITY_ID
-  v_first_triangle_id = instance.material.y;
+  v_first_triangle_id = instance.material.y + a_instance.y;
 #endif
 #ifndef POSITION_ONLY
   v_position = world.xyz;

@@ -67,6 +67,7 @@ GLbitfield barrier_for(Access access, ResourceKind kind) {
     case Access::Sampled: return GL_TEXTURE_FETCH_BARRIER_BIT;
     case Access::Storage: return kind == ResourceKind::Buffer ? GL_SHADER_STORAGE_BARRIER_BIT : GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
     case Access::Indirect: return GL_COMMAND_BARRIER_BIT;
+    case Access::Vertex: return GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT;
     case Access::Uniform: return GL_UNIFORM_BARRIER_BIT;
     // Texture transfers go through framebuffers too (blits, clears, glReadPixels).
     case Access::Transfer:

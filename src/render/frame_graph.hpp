@@ -37,6 +37,7 @@ enum class Access : std::uint8_t {
   Sampled,     // read through a sampler (texelFetch, texture)
   Storage,     // storage buffer or image load/store
   Indirect,    // indirect draw or dispatch commands
+  Vertex,      // vertex attributes (a list's instance slots)
   Uniform,     // a uniform block
   Transfer,    // clears, copies, blits, uploads and read-backs
 };

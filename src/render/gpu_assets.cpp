@@ -216,24 +216,29 @@ void GpuAssets::build_pools(const assets::AssetManager& assets) {
                               static_cast<GLuint>(attribute.offset));
     glVertexArrayAttribBinding(vao, attribute.location, 0);
   }
-  // Location 6: which instance record a vertex belongs to, from the
-  // instance-index buffer (binding 1, one value per instance). Instanced
-  // draws offset it by their base instance.
-  glEnableVertexArrayAttrib(vao, kInstanceIndexLocation);
-  glVertexArrayAttribIFormat(vao, kInstanceIndexLocation, 1, GL_UNSIGNED_INT, 0);
-  glVertexArrayAttribBinding(vao, kInstanceIndexLocation, 1);
+  // Location 6: which instance slot a vertex belongs to (binding 1, one slot
+  // per instance). Instanced draws offset it by their base instance.
+  glEnableVertexArrayAttrib(vao, kInstanceSlotLocation);
+  glVertexArrayAttribIFormat(vao, kInstanceSlotLocation, 2, GL_UNSIGNED_INT, 0);
+  glVertexArrayAttribBinding(vao, kInstanceSlotLocation, 1);
   glVertexArrayBindingDivisor(vao, 1, 1);
-  if (instance_indices_) glVertexArrayVertexBuffer(vao, 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
+  // Its buffer is bound by whichever list draws next (use_slots).
 }
 
-void GpuAssets::reserve_instances(std::size_t count) {
-  if (count <= instance_capacity_ && instance_indices_) return;
-  instance_capacity_ = std::max<std::size_t>({count, 2 * instance_capacity_, 1024});
-  std::vector<std::uint32_t> identity(instance_capacity_);
-  for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = static_cast<std::uint32_t>(i);
-  instance_indices_ = gfx::create_buffer();
-  glNamedBufferStorage(instance_indices_.id(), static_cast<GLsizeiptr>(identity.size() * sizeof(std::uint32_t)), identity.data(), 0);
-  if (vertex_array_) glVertexArrayVertexBuffer(vertex_array_.id(), 1, instance_indices_.id(), 0, sizeof(std::uint32_t));
+void GpuAssets::use_slots(GLuint buffer) {
+  if (!vertex_array_) return;
+  glVertexArrayVertexBuffer(vertex_array_.id(), 1, buffer, 0, kInstanceSlotBytes);
+}
+
+void GpuAssets::use_identity_slots(std::size_t count) {
+  if (count > identity_capacity_ || !identity_slots_) {
+    identity_capacity_ = std::max<std::size_t>({count, 2 * identity_capacity_, 1024});
+    std::vector<glm::uvec2> identity(identity_capacity_);
+    for (std::size_t i = 0; i < identity.size(); ++i) identity[i] = {static_cast<std::uint32_t>(i), 0u};
+    identity_slots_ = gfx::create_buffer();
+    glNamedBufferStorage(identity_slots_.id(), static_cast<GLsizeiptr>(identity.size() * sizeof(glm::uvec2)), identity.data(), 0);
+  }
+  use_slots(identity_slots_.id());
 }
 
 GLuint GpuAssets::sampler(const assets::SamplerDesc& desc) const {

@@ -19,8 +19,11 @@
 
 namespace atrium::render {
 
-// The vertex attribute that carries the instance index (see reserve_instances).
-inline constexpr GLuint kInstanceIndexLocation = 6;
+// The vertex attribute that says which instance a vertex belongs to: two
+// unsigned integers a draw instance (render::InstanceSlot), fed from binding 1
+// of the vertex array with a divisor of 1 (use_slots).
+inline constexpr GLuint kInstanceSlotLocation = 6;
+inline constexpr GLsizei kInstanceSlotBytes = 8;
 
 struct GpuPrimitive {
   std::uint32_t first_index = 0;  // in the index pool
@@ -45,17 +48,18 @@ class GpuAssets {
 
   [[nodiscard]] const GpuMeshAsset& mesh_asset(assets::MeshAssetHandle handle) const { return mesh_assets_.at(handle.index); }
   // The one vertex array every mesh is drawn through (the pools, and the
-  // instance indices at kInstanceIndexLocation).
+  // instance slots at kInstanceSlotLocation).
   [[nodiscard]] GLuint vertex_array() const { return vertex_array_.id(); }
   // The pools as storage buffers: assets::Vertex records (64 bytes) and 32-bit indices.
   [[nodiscard]] GLuint vertex_pool() const { return vertices_.id(); }
   [[nodiscard]] GLuint index_pool() const { return indices_.id(); }
   [[nodiscard]] std::size_t geometry_bytes() const { return geometry_bytes_; }
-  // The vertex array feeds attribute kInstanceIndexLocation from
-  // one buffer holding 0, 1, 2, ... with a divisor of 1, so an instanced draw
-  // with base instance B gives its instances B, B+1, ...: the index of their
-  // record in the frame's instance buffer. Grows that buffer to `count`.
-  void reserve_instances(std::size_t count);
+  // Feeds attribute kInstanceSlotLocation from `buffer`, a list's slots: an
+  // instanced draw with base instance B gives its instances slots B, B+1, ...
+  void use_slots(GLuint buffer);
+  // ... or from identity slots ({i, 0} at i), at least `count`, for a list
+  // whose instance i draws record i (the shadow casters).
+  void use_identity_slots(std::size_t count);
   // The texture's GL name, or the white default for an empty handle.
   [[nodiscard]] GLuint texture(assets::TextureHandle handle) const;
   // Whether it holds two channels (BC5): a normal map's z is then rebuilt from x and y.
@@ -85,8 +89,8 @@ class GpuAssets {
   std::vector<gfx::Texture> textures_;
   std::vector<bool> two_channel_;
   gfx::Texture white_;
-  gfx::Buffer instance_indices_;
-  std::size_t instance_capacity_ = 0;
+  gfx::Buffer identity_slots_;
+  std::size_t identity_capacity_ = 0;
   std::map<assets::SamplerDesc, gfx::Sampler> samplers_;
   std::map<std::pair<GLuint, GLuint>, GLuint64> handles_;
   gfx::ShaderLibrary shaders_;

@@ -12,6 +12,12 @@ void set_nearest(const gfx::Texture& texture) {
   glTextureParameteri(texture.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
+void append_texels(const InstanceData& instance, std::vector<glm::vec4>& texels) {
+  for (int c = 0; c < 4; ++c) texels.push_back(instance.model[c]);
+  for (int c = 0; c < 4; ++c) texels.push_back(instance.normal_matrix[c]);
+  texels.emplace_back(glm::vec4(instance.material));
+}
+
 }  // namespace
 
 void storage_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDefine>& defines) {
@@ -21,11 +27,14 @@ void storage_defines(const GlobalDefineInputs& inputs, std::vector<gfx::ShaderDe
 std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances) {
   std::vector<glm::vec4> texels;
   texels.reserve(instances.size() * kInstanceTexels);
-  for (const InstanceData& instance : instances) {
-    for (int c = 0; c < 4; ++c) texels.push_back(instance.model[c]);
-    for (int c = 0; c < 4; ++c) texels.push_back(instance.normal_matrix[c]);
-    texels.emplace_back(glm::vec4(instance.material));
-  }
+  for (const InstanceData& instance : instances) append_texels(instance, texels);
+  return texels;
+}
+
+std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances, std::span<const InstanceSlot> slots) {
+  std::vector<glm::vec4> texels;
+  texels.reserve(slots.size() * kInstanceTexels);
+  for (const InstanceSlot& slot : slots) append_texels(instances[slot.record], texels);
   return texels;
 }
 
@@ -78,7 +87,11 @@ void ListTextures::bind() const {
 
 void StorageFreeRecords::upload(std::span<const GpuLight> lights, const DrawList& draws) {
   lights_.upload(std::span<const glm::vec4>(reinterpret_cast<const glm::vec4*>(lights.data()), lights.size() * kLightTexels));
-  instances_.upload(instance_texels(draws.instances));
+  // No base instances here, so no instance-slot buffer: a draw's instances
+  // are the constant attribute plus gl_InstanceID (common/mesh.vert), and
+  // the records are laid out slot by slot (the list's meshlet runs of one
+  // primitive instance each hold a copy).
+  instances_.upload(instance_texels(draws.instances, draws.slots));
   materials_.upload(material_texels(draws.materials));
 }
 

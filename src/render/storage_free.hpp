@@ -41,6 +41,8 @@ static_assert(sizeof(MaterialData) == kMaterialTexels * sizeof(glm::vec4), "a ma
 
 // The texels of each record, in the shaders' order.
 [[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances);
+// ... of the record each slot names, slot by slot.
+[[nodiscard]] std::vector<glm::vec4> instance_texels(std::span<const InstanceData> instances, std::span<const InstanceSlot> slots);
 [[nodiscard]] std::vector<glm::vec4> material_texels(std::span<const MaterialData> materials);
 
 // Texels in a record-texture format: the shaders' float records (RGBA32F)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstring>
 #include <map>
+#include <optional>
 #include <tuple>
 #include <unordered_map>
 
@@ -52,8 +53,8 @@ struct PendingCommand {
 
 struct Placed {
   float depth;  // view depth
-  std::uint32_t record;  // its primitive instance's record, into the gathered ones
-  std::uint32_t first_triangle;  // within the primitive (InstanceData::material.y adds it)
+  std::uint32_t record;  // its primitive instance's, into DrawList::instances
+  std::uint32_t first_triangle;  // of its command's range within the primitive (InstanceSlot)
   std::uint32_t unit;  // its DrawList::visibility_units entry
   std::uint32_t command;  // its PendingCommand
 };
@@ -102,7 +103,7 @@ class BatchStates {
 struct PendingBlend {
   std::uint32_t state;
   DrawCommand command;
-  InstanceData instance;
+  std::uint32_t record;  // into DrawList::instances
   float depth = 0.0f;
 };
 
@@ -160,7 +161,6 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   std::map<CommandKey, std::size_t> command_of;
   std::vector<PendingCommand> pending;
   std::vector<Placed> placed;
-  std::vector<InstanceData> records;
   std::vector<PendingBlend> blended;
   BatchStates states(gpu, gpu.vertex_array());
   const bool each_unit = selection == DrawSelection::EachInView;
@@ -210,12 +210,20 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         if (selection == DrawSelection::Revealed) continue;
         list.triangles_drawn += primitive.indices.size() / 3;
         blended.push_back({state_index, {range.index_count, 1, range.first_index, range.base_vertex, 0},
-                           data, depth});
+                           static_cast<std::uint32_t>(list.instances.size()), depth});
+        list.instances.push_back(data);
         continue;
       }
-      // One record for the primitive instance, which its meshlets' instances copy.
-      const auto record = static_cast<std::uint32_t>(records.size());
-      records.push_back(data);
+      // One record for the primitive instance, which its meshlets' commands
+      // share, made when the first of them is selected.
+      std::optional<std::uint32_t> made;
+      auto record = [&] {
+        if (!made) {
+          made = static_cast<std::uint32_t>(list.instances.size());
+          list.instances.push_back(data);
+        }
+        return *made;
+      };
       // (offset within the primitive, index count): one command per selected meshlet run.
       auto add_run = [&](std::uint32_t offset, std::uint32_t count) {
         list.triangles_drawn += count / 3;
@@ -223,13 +231,13 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
         if (added) pending.push_back({state_index, command, {}});
-        placed.push_back({depth, record, offset / 3, unit, static_cast<std::uint32_t>(it->second)});
+        placed.push_back({depth, record(), offset / 3, unit, static_cast<std::uint32_t>(it->second)});
       };
       // One command of its own per unit, with the box the GPU tests.
       auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
         list.triangles_drawn += count / 3;
         const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), cull_unit, count / 3, {0, 0}};
-        placed.push_back({depth, record, offset / 3, unit, static_cast<std::uint32_t>(pending.size())});
+        placed.push_back({depth, record(), offset / 3, unit, static_cast<std::uint32_t>(pending.size())});
         pending.push_back({state_index, {count, 1, range.first_index + offset, range.base_vertex, 0}, cull});
       };
       const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
@@ -308,18 +316,17 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     list.command_depths.push_back(depth);
     ++batches.back().command_count;
   };
-  list.instances.reserve(placed.size() + blended.size());
+  list.slots.reserve(placed.size() + blended.size());
   list.commands.reserve(pending.size() + blended.size());
   list.command_depths.reserve(pending.size() + blended.size());
   if (each_unit) list.cull_records.reserve(pending.size());
   auto emit = [&](const PendingCommand& pending_command) {
     DrawCommand command = pending_command.command;
-    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
+    command.base_instance = static_cast<std::uint32_t>(list.slots.size());
     command.instance_count = pending_command.placed_count;
     for (std::uint32_t p = pending_command.first_placed; p < pending_command.first_placed + pending_command.placed_count; ++p) {
-      list.visibility_units[sorted[p].unit].record = static_cast<std::uint32_t>(list.instances.size());
-      list.instances.push_back(records[sorted[p].record]);
-      list.instances.back().material.y += sorted[p].first_triangle;
+      list.visibility_units[sorted[p].unit].record = sorted[p].record;
+      list.slots.push_back({sorted[p].record, sorted[p].first_triangle});
     }
     append(list.opaque, states[pending_command.state], command, pending_command.nearest);
     if (each_unit) list.cull_records.push_back(pending_command.cull);
@@ -332,8 +339,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   std::stable_sort(blended.begin(), blended.end(), [](const PendingBlend& a, const PendingBlend& b) { return a.depth > b.depth; });
   for (const PendingBlend& item : blended) {
     DrawCommand command = item.command;
-    command.base_instance = static_cast<std::uint32_t>(list.instances.size());
-    list.instances.push_back(item.instance);
+    command.base_instance = static_cast<std::uint32_t>(list.slots.size());
+    list.slots.push_back({item.record, 0});
     append(list.blended, states[item.state], command, item.depth);
   }
   for (std::size_t b = 0; b < list.blended.size(); ++b) list.blended[b].count_slot = static_cast<std::uint32_t>(list.opaque.size() + b);
@@ -369,11 +376,11 @@ void draw_items(std::span<const DrawBatch> batches, const CommandSource& source)
       glMultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_INT, first, static_cast<GLsizei>(batch.command_count), 0);
       continue;
     }
-    glDisableVertexAttribArray(kInstanceIndexLocation);
+    glDisableVertexAttribArray(kInstanceSlotLocation);
     for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count && c < cpu_commands.size(); ++c) {
       const DrawCommand& command = cpu_commands[c];
       if (command.instance_count == 0) continue;
-      glVertexAttribI4ui(kInstanceIndexLocation, command.base_instance, 0, 0, 0);
+      glVertexAttribI4ui(kInstanceSlotLocation, command.base_instance, 0, 0, 0);
       const auto* indices = reinterpret_cast<const void*>(static_cast<std::uintptr_t>(command.first_index) * sizeof(std::uint32_t));
       // Base vertex 0 throughout where the context has none (GpuAssets offsets the indices).
       if (command.base_vertex == 0) {
@@ -384,7 +391,7 @@ void draw_items(std::span<const DrawBatch> batches, const CommandSource& source)
                                           static_cast<GLsizei>(command.instance_count), command.base_vertex);
       }
     }
-    glEnableVertexAttribArray(kInstanceIndexLocation);
+    glEnableVertexAttribArray(kInstanceSlotLocation);
   }
   glEnable(GL_CULL_FACE);
   glFrontFace(GL_CCW);

@@ -27,16 +27,27 @@ namespace atrium::render {
 // Texture units 0-4: base colour, metallic-roughness, normal, occlusion, emissive.
 inline constexpr unsigned kMaterialTextureSlots = assets::Material::kTextureSlots;
 
-// std430 twin of Instance in shaders/common/mesh.vert: one drawn instance.
+// std430 twin of Instance in shaders/common/mesh.vert: one primitive instance's record.
 struct InstanceData {
   glm::mat4 model{1.0f};
   glm::mat4 normal_matrix{1.0f};  // inverse transpose of the model's 3x3, in a mat4 to keep std430 simple
   // x: index into DrawList::materials; y: the visibility identifier of the
-  // record's first triangle (VisibilityUnit); z, w: its primitive's first
+  // primitive's first triangle (VisibilityUnit::first_id); z, w: its first
   // index and base vertex in the GPU's pools (GpuPrimitive).
   glm::uvec4 material{0};
 };
 static_assert(sizeof(InstanceData) == 144, "must match Instance in shaders/common/mesh.vert");
+
+// One instance a command draws: the value of the instance-slot attribute
+// (kInstanceSlotLocation, a_instance in shaders/common/mesh.vert), read at
+// the command's base instance plus the instance's index. The meshlets of one
+// primitive instance are commands of their own that share its record, so a
+// list of one command per meshlet carries 8 bytes a command, not a record.
+struct InstanceSlot {
+  std::uint32_t record = 0;          // into DrawList::instances
+  std::uint32_t first_triangle = 0;  // where the command's triangles start in the primitive (visibility identifiers)
+};
+static_assert(sizeof(InstanceSlot) == kInstanceSlotBytes, "two 32-bit components of the instance-slot attribute (common/mesh.vert)");
 
 // std430 twin of Unit in shaders/visibility/visibility.glsl. Every triangle of
 // the scene has a 32-bit identifier for the frame, stable through occlusion
@@ -47,7 +58,7 @@ static_assert(sizeof(InstanceData) == 144, "must match Instance in shaders/commo
 struct VisibilityUnit {
   static constexpr std::uint32_t kNotDrawn = 0xffffffffu;
   std::uint32_t first_id = 0;
-  std::uint32_t record = kNotDrawn;  // an opaque instance record of this primitive instance in the list
+  std::uint32_t record = kNotDrawn;  // its record in the list's instances, if an opaque command draws it
 };
 static_assert(sizeof(VisibilityUnit) == 8, "must match Unit in shaders/visibility/visibility.glsl");
 // The graph's name for the target of those identifiers (R32UI), which the
@@ -136,7 +147,10 @@ struct DrawList {
   std::vector<DrawBatch> blended;
   std::vector<DrawCommand> commands;
   std::vector<float> command_depths;  // per command: view depth of its nearest instance's primitive centre
+  // One record per primitive instance drawn, and what each command's
+  // instances draw with (DrawCommand::base_instance indexes the slots).
   std::vector<InstanceData> instances;
+  std::vector<InstanceSlot> slots;
   std::vector<MaterialData> materials;
   // DrawSelection::EachInView only: one record per opaque command (commands
   // [0, cull_records.size())), and how many units the scene has in all.
@@ -179,7 +193,8 @@ struct CommandSource {
   // Empty: the bound GL_DRAW_INDIRECT_BUFFER. Else, on the compute-free tier
   // (no indirect draws or base instances on WebGL2 and OpenGL ES 3.0), these
   // CPU copies, one draw each, the first instance given as the constant value
-  // of the instance-index attribute (common/mesh.vert adds gl_InstanceID).
+  // of the instance-slot attribute (common/mesh.vert adds gl_InstanceID; the
+  // tier's records are laid out slot by slot, StorageFreeRecords).
   std::span<const DrawCommand> cpu_commands;
   // GPU occlusion culling where GL 4.6 or ARB_indirect_parameters has
   // glMultiDrawElementsIndirectCount: each batch draws the first commands of

@@ -29,7 +29,7 @@ class FrameDraws;
 // its pass writes for the passes after it). Invalid on the compute-free tier,
 // whose records are textures and whose commands stay on the CPU.
 struct DrawResources {
-  ResourceId instances, materials, commands;
+  ResourceId instances, slots, materials, commands;
 };
 
 // What a technique reads each frame. The frame uniform block and the light
@@ -88,12 +88,13 @@ inline void read_shading_inputs(PassBuilder& pass, const FrameContext& frame) {
   if (frame.shadow_atlas.valid()) pass.sample_at(frame.shadow_atlas, kShadowAtlasUnit);
 }
 
-// What every pass that draws the frame's list reads: its instances,
-// materials and indirect commands (so that the graph orders it after the pass
-// that culls them, with the barrier indirect draws need).
+// What every pass that draws the frame's list reads: its instances, their
+// slots, materials and indirect commands (so that the graph orders it after
+// the pass that culls them, with the barrier indirect draws need).
 inline void read_draws(PassBuilder& pass, const FrameContext& frame) {
   if (frame.draw_buffers.commands.valid()) pass.read(frame.draw_buffers.commands, Access::Indirect);
   if (frame.draw_buffers.instances.valid()) pass.read(frame.draw_buffers.instances, Access::Storage);
+  if (frame.draw_buffers.slots.valid()) pass.read(frame.draw_buffers.slots, Access::Vertex);
   if (frame.draw_buffers.materials.valid()) pass.read(frame.draw_buffers.materials, Access::Storage);
 }
 

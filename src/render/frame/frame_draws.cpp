@@ -22,10 +22,10 @@ void FrameDraws::begin_frame(ecs::Registry& registry, CullingChoice culling, boo
 }
 
 void FrameDraws::upload(const DrawList& list) {
-  gpu_.reserve_instances(list.instances.size());
   // The compute-free tier's records went to textures (StorageFreeRecords) and its commands stay on the CPU.
   if (!compute_free_) {
     instances_.upload(list.instances.data(), list.instances.size() * sizeof(InstanceData));
+    slots_.upload(list.slots.data(), list.slots.size() * sizeof(InstanceSlot));
     materials_.upload(list.materials.data(), list.materials.size() * sizeof(MaterialData));
     commands_.upload(list.commands.data(), list.commands.size() * sizeof(DrawCommand));
   }
@@ -41,6 +41,7 @@ void FrameDraws::bind() {
     return;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInstanceStorageBinding, instances_.buffer.id());
+  gpu_.use_slots(slots_.buffer.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaterialStorageBinding, materials_.buffer.id());
   if (active_phase_) {
     source_ = {{}, gpu_culling_.bind(*active_phase_)};
@@ -55,6 +56,7 @@ DrawResources FrameDraws::import_into(FrameGraph& graph) const {
   // As allocated: with occlusion culling on the CPU the first pass uploads
   // more into them (what it reveals), within what earlier frames needed.
   return {graph.import_buffer("draw-instances", instances_.buffer.id(), {instances_.capacity}),
+          graph.import_buffer("draw-slots", slots_.buffer.id(), {slots_.capacity}),
           graph.import_buffer("draw-materials", materials_.buffer.id(), {materials_.capacity}),
           graph.import_buffer("draw-commands", commands_.buffer.id(), {commands_.capacity})};
 }

@@ -1,5 +1,5 @@
 // The frame's draws, with one owner: the draw list, the GPU buffers it is
-// uploaded to (instances, materials, indirect commands; on the compute-free
+// uploaded to (instances and their slots, materials, indirect commands; on the compute-free
 // tier the records' textures and the CPU's commands), and occlusion culling's
 // phases, on the GPU or the CPU. Every pass that draws the list finds it bound
 // by bind(); the first pass over opaque geometry draws through
@@ -70,7 +70,7 @@ class FrameDraws {
   bool compute_free_ = false;
   bool occlusion_pending_ = false;  // list_ holds only what the last frame showed; draw_first_pass tests the rest
   std::size_t triangles_occluded_ = 0;
-  gfx::StreamBuffer instances_, materials_, commands_;
+  gfx::StreamBuffer instances_, slots_, materials_, commands_;
   StorageFreeRecords storage_free_;  // the compute-free tier's lights, instances and materials
   DepthReader depth_reader_;
   GpuOcclusionCulling gpu_culling_;

@@ -427,7 +427,7 @@ void ShadowAtlas::draw_maps(const std::vector<std::uint32_t>& views, std::span<c
           });
     }
   }
-  gpu_.reserve_instances(caster_instances_.size());
+  gpu_.use_identity_slots(caster_instances_.size());
   if (compute_free_) {
     // The tier's twins: records in textures, commands drawn from the CPU.
     instance_texture_.upload(render::instance_texels(caster_instances_));

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "app/world.hpp"
@@ -60,6 +61,27 @@ TEST_F(DrawListTest, MaterialTableLayoutAndFlagsMatchTheirGlslTwins) {
 // Each batch's GL state, for counting distinct ones.
 auto state_of(const DrawBatch& b) { return std::tuple(b.vertex_array, b.textures, b.samplers, b.double_sided, b.mirrored); }
 
+// The record instance `i` of `command` draws with, through its slot.
+const InstanceData& record_of(const DrawList& list, const DrawCommand& command, std::uint32_t i = 0) {
+  return list.instances.at(list.slots.at(command.base_instance + i).record);
+}
+
+// Every instance of every opaque command names a record of its primitive
+// and where the command's triangles start in it: the index the vertex
+// shader's identifiers count from (common/mesh.vert adds the two).
+void expect_slots_match_commands(const DrawList& list, const std::string& where) {
+  for (const DrawBatch& batch : list.opaque) {
+    for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
+      const DrawCommand& command = list.commands[c];
+      for (std::uint32_t i = 0; i < command.instance_count; ++i) {
+        const InstanceSlot& slot = list.slots.at(command.base_instance + i);
+        ASSERT_LT(slot.record, list.instances.size()) << where;
+        EXPECT_EQ(command.first_index, list.instances[slot.record].material.z + 3u * slot.first_triangle) << where << ", command " << c;
+      }
+    }
+  }
+}
+
 // Primitives without meshlets in view, and their meshlets in view, each one
 // or (`runs`) each run of neighbours one.
 std::size_t units_in_view(ecs::Registry& registry, bool runs) {
@@ -96,7 +118,7 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
       const bool masked = batch.alpha_masked;
       for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
         const DrawCommand& command = list.commands[c];
-        const MaterialData& material = list.materials[list.instances[command.base_instance].material.x];
+        const MaterialData& material = list.materials[record_of(list, command).material.x];
         EXPECT_EQ((material.flags & kMaterialAlphaMasked) != 0u, masked) << "a batch mixing masked and opaque, view " << view;
         if (c > batch.first_command) EXPECT_LE(list.command_depths[c - 1], list.command_depths[c]) << "front to back";
         instances += command.instance_count;
@@ -108,6 +130,8 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
     EXPECT_EQ(triangles, list.triangles_drawn) << "the built-in scene has no blended surface";
     // One instance per primitive in view, or per run of meshlets in view.
     EXPECT_EQ(instances, units_in_view(registry, true)) << view;
+    EXPECT_EQ(list.slots.size(), instances) << view;
+    expect_slots_match_commands(list, "view " + std::to_string(view));
     EXPECT_EQ(list.draw_calls(), world.renderer().stats().draw_calls);
     EXPECT_LE(list.draw_calls(), 10u) << "no more draws than the scene's 10 materials";
   }
@@ -115,8 +139,9 @@ TEST_F(DrawListTest, OpaqueDrawsAreOneMultiDrawPerStateFrontToBackAndCoverWhatIs
 
 // GPU occlusion culling's list (DrawSelection::EachInView): one command and
 // one instance per meshlet or primitive in view, each with the box and unit
-// the culling shader tests, ordered as the other lists, and every primitive
-// instance in view findable by the visibility buffer's resolve.
+// the culling shader tests, ordered as the other lists; one record per
+// primitive instance in view, which its meshlets' slots share, and every
+// primitive instance in view findable by the visibility buffer's resolve.
 TEST_F(DrawListTest, EachInViewListHasOneCommandPerUnitInViewInDrawOrder) {
   for (int view = 1; view <= 5; ++view) {
     World world({.scene = "atrium", .lights = 8u, .mode = "deferred", .view = view, .size = {160, 90}});
@@ -149,17 +174,21 @@ TEST_F(DrawListTest, EachInViewListHasOneCommandPerUnitInViewInDrawOrder) {
       }
     }
     EXPECT_EQ(opaque_commands, units);
+    expect_slots_match_commands(each, "view " + std::to_string(view));
     EXPECT_EQ(each.visibility_units.size(), in_view.visibility_units.size());
+    std::size_t drawn_units = 0;
     for (std::size_t u = 0; u < each.visibility_units.size(); ++u) {
       const VisibilityUnit& unit = each.visibility_units[u];
       EXPECT_EQ(unit.first_id, in_view.visibility_units[u].first_id);
       EXPECT_EQ(unit.record == VisibilityUnit::kNotDrawn, in_view.visibility_units[u].record == VisibilityUnit::kNotDrawn) << u;
       if (unit.record == VisibilityUnit::kNotDrawn) continue;
       ASSERT_LT(unit.record, each.instances.size());
-      // The record of one of its meshlets: its identifiers start inside the unit's.
-      EXPECT_GE(each.instances[unit.record].material.y, unit.first_id) << u;
+      ++drawn_units;
+      EXPECT_EQ(each.instances[unit.record].material.y, unit.first_id) << u;
       EXPECT_EQ(each.instances[unit.record].material.z, in_view.instances[in_view.visibility_units[u].record].material.z) << u;
     }
+    EXPECT_EQ(each.instances.size(), drawn_units) << "one record per primitive instance in view, view " << view;
+    EXPECT_LT(each.instances.size(), each.slots.size()) << "meshlets share their primitive instance's record, view " << view;
   }
 }
 
@@ -192,7 +221,7 @@ TEST_F(DrawListTest, InstancesOfOnePrimitiveShareACommandNearestFirst) {
   EXPECT_EQ(list.commands[turned.first_command].instance_count, 1u);
   ASSERT_EQ(shared.instance_count, 5u);
   for (std::uint32_t i = 0; i < 5; ++i) {
-    EXPECT_FLOAT_EQ(list.instances[shared.base_instance + i].model[3].z, -1.0f - 2.0f * static_cast<float>(i)) << "nearest first";
+    EXPECT_FLOAT_EQ(record_of(list, shared, i).model[3].z, -1.0f - 2.0f * static_cast<float>(i)) << "nearest first";
   }
 }
 
@@ -224,7 +253,7 @@ TEST_F(DrawListTest, BlendedDrawsComeFarthestFirstAndNeighboursOfOneStateShareAD
   ASSERT_EQ(list.blended[0].command_count, 5u);
   for (std::uint32_t c = 0; c < 5; ++c) {
     EXPECT_EQ(list.commands[c].instance_count, 1u);
-    const float z = list.instances[list.commands[c].base_instance].model[3].z;
+    const float z = record_of(list, list.commands[c]).model[3].z;
     EXPECT_FLOAT_EQ(z, -9.0f + 2.0f * static_cast<float>(c)) << "farthest first";
     EXPECT_FLOAT_EQ(list.command_depths[c], 4.0f - z);
   }

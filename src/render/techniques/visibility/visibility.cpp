@@ -181,8 +181,8 @@ std::vector<const render::DrawBatch*> VisibilityTechnique::batches_by_material(c
   std::vector<const render::DrawBatch*> batch_of(list.materials.size(), nullptr);
   for (const render::DrawBatch& batch : list.opaque) {
     for (std::uint32_t c = batch.first_command; c < batch.first_command + batch.command_count; ++c) {
-      const std::uint32_t record = list.commands[c].base_instance;
-      if (record < list.instances.size()) batch_of[list.instances[record].material.x] = &batch;
+      const std::uint32_t slot = list.commands[c].base_instance;
+      if (slot < list.slots.size()) batch_of[list.instances[list.slots[slot].record].material.x] = &batch;
     }
   }
   return batch_of;
