@@ -45,13 +45,16 @@ void run(benchmark::State& state, render::DrawSelection selection, CullingDevice
   const auto& assets = registry.resource<assets::AssetManager>();
   const auto& gpu = registry.resource<render::GpuAssets>();
   const glm::mat4 view = registry.resource<ViewState>().view;
-  std::size_t commands = 0;
+  std::size_t commands = 0, instance_bytes = 0;
   for (auto _ : state) {
     const render::DrawList list = render::build_draw_list(registry, assets, gpu, view, selection);
     commands = list.commands.size();
+    instance_bytes = list.instances.size() * sizeof(render::InstanceData) + list.slots.size() * sizeof(render::InstanceSlot);
     benchmark::DoNotOptimize(list.commands.data());
   }
   state.counters["commands"] = static_cast<double>(commands);
+  // What the frame uploads for its instances: records and their slots.
+  state.counters["instance_bytes"] = static_cast<double>(instance_bytes);
   std::size_t entities = 0;
   registry.view<Transform, MeshInstance>().each([&](ecs::Entity, const Transform&, const MeshInstance&) { ++entities; });
   state.counters["entities"] = static_cast<double>(entities);
