@@ -292,6 +292,8 @@ void MeshRenderer::render(ecs::Registry& registry) {
   timer_.begin_frame();
   try {
     graph_.execute(&timer_);
+    // The shadow pass counts its triangles as it draws, after update().
+    frame_stats_.shadows = shadows_.stats();
     // The list as the first pass left it (what the passes after it drew).
     frame_stats_.draw_calls = draws_.list().draw_calls();
     frame_stats_.triangles = draws_.list().triangles;

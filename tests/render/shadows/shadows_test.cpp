@@ -281,8 +281,11 @@ TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
   const auto& stats = world.renderer().stats().shadows;
   EXPECT_EQ(stats.lights, 8u);
   EXPECT_GT(stats.maps_rendered, 0u);
+  const std::size_t all_triangles = stats.triangles;
+  EXPECT_GT(all_triangles, 0u);
   world.frame(0.0);
   EXPECT_EQ(stats.maps_rendered, 0u) << "nothing moved";
+  EXPECT_EQ(stats.triangles, 0u) << "no map drawn";
   const std::uint32_t maps = stats.maps_reused;
   EXPECT_GE(maps, 8u);
   // Move one shadowed point light a little (its map keeps its size).
@@ -296,6 +299,8 @@ TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
   world.frame(0.0);
   EXPECT_EQ(stats.maps_rendered, 6u) << "one point light's six faces";
   EXPECT_EQ(stats.maps_reused, maps - 6u);
+  EXPECT_GT(stats.triangles, 0u);
+  EXPECT_LT(stats.triangles, all_triangles) << "only its six faces drawn";
 }
 
 TEST_F(Shadows, MovingGeometryRedrawsTheMapsItReaches) {
