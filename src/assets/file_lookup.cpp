@@ -16,6 +16,13 @@ std::string lower(std::string s) {
   return s;
 }
 
+// "/" + s, built in place: GCC 12 reports a false -Wrestrict overlap for
+// operator+ of a literal and a string (its bug 105329).
+std::string rooted(std::string s) {
+  s.insert(s.begin(), '/');
+  return s;
+}
+
 }  // namespace
 
 std::string lowercase_extension(const fs::path& path) { return lower(path.extension().string()); }
@@ -39,13 +46,13 @@ FoundFile find_named_file(const fs::path& folder, const std::string& written) {
   // author's machine: look for the file name beside the model and below it,
   // preferring the file whose folders end the written path.
   const std::string wanted = lower(fs::path(path).filename().string());
-  const std::string written_lower = "/" + lower(path);
+  const std::string written_lower = rooted(lower(path));
   std::size_t best = 0;
   for (auto it = fs::recursive_directory_iterator(folder, fs::directory_options::skip_permission_denied, ec);
        !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     if (it.depth() > 4) it.disable_recursion_pending();
     if (!it->is_regular_file(ec) || lower(it->path().filename().string()) != wanted) continue;
-    const std::string candidate = "/" + lower(fs::relative(it->path(), folder, ec).generic_string());
+    const std::string candidate = rooted(lower(fs::relative(it->path(), folder, ec).generic_string()));
     const std::size_t match = written_lower.ends_with(candidate) ? candidate.size() : 1;
     if (!result.path || match > best) {
       result.path = it->path();

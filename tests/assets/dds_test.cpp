@@ -4,6 +4,7 @@
 // when uncompressed and within block compression's error otherwise. Broken and
 // unsupported files give one phrase, never a crash. BC4, BC5 and BC7 have no
 // packaged encoder here: their blocks are built from the formats' definitions.
+#include <algorithm>
 #include <filesystem>
 #include <cstring>
 #include <fstream>
@@ -86,7 +87,8 @@ TEST(Dds, DecodeTextureKeepsBlocksCompressed) {
 
 // A DX10 DDS of one 4x4 block per level, as the formats define it.
 std::vector<std::uint8_t> dx10_dds(std::uint32_t dxgi, const std::vector<std::uint8_t>& block) {
-  std::vector<std::uint8_t> file(4 + 124 + 20, 0);
+  constexpr std::size_t kHeader = 4 + 124 + 20;
+  std::vector<std::uint8_t> file(kHeader + block.size(), 0);
   auto put = [&](std::size_t offset, std::uint32_t value) { std::memcpy(&file[offset], &value, 4); };
   std::memcpy(file.data(), "DDS ", 4);
   put(4, 124);
@@ -99,7 +101,7 @@ std::vector<std::uint8_t> dx10_dds(std::uint32_t dxgi, const std::vector<std::ui
   put(128, dxgi);
   put(132, 3);  // TEXTURE2D
   put(140, 1);  // one array element
-  file.insert(file.end(), block.begin(), block.end());
+  std::copy(block.begin(), block.end(), file.begin() + kHeader);
   return file;
 }
 
