@@ -305,10 +305,10 @@ TEST_F(ObjText, FacesTooCostlyToCutAreRefusedNamingTheLines) {
     std::string text = "# a circle\n";
     for (std::size_t i = 0; i < corners; ++i) {
       const double a = 6.283185307179586 * static_cast<double>(i) / static_cast<double>(corners);
-      text += "v " + std::to_string(std::cos(a)) + " " + std::to_string(std::sin(a)) + " 0\n";
+      text.append("v ").append(std::to_string(std::cos(a))).append(" ").append(std::to_string(std::sin(a))).append(" 0\n");
     }
     std::string face = "f";
-    for (std::size_t i = 1; i <= corners; ++i) face += " " + std::to_string(i);
+    for (std::size_t i = 1; i <= corners; ++i) face.append(" ").append(std::to_string(i));
     for (std::size_t c = 0; c < copies; ++c) text += face + "\n";
     return text;
   };
