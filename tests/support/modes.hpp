@@ -48,7 +48,8 @@ inline TechniqueOptions with_layout(GBufferLayout layout) {
 
 // A gtest-safe name: "clustered-deferred", Compact -> "clustered_deferred_compact".
 inline std::string test_name(std::string mode, GBufferLayout layout) {
-  mode += "_" + std::string(kGBufferLayoutNames[static_cast<std::size_t>(layout)]);
+  mode += '_';
+  mode += kGBufferLayoutNames[static_cast<std::size_t>(layout)];
   for (char& c : mode) if (c == '-') c = '_';
   return mode;
 }

@@ -97,8 +97,9 @@ TEST_F(GBufferBytes, AreWhatTheirGlFormatsHoldAndWhatTheDocsSay) {
   const std::string text((std::istreambuf_iterator<char>(readme)), std::istreambuf_iterator<char>());
   for (const auto& [name, layout] : {std::pair{"full", GBufferLayout::Full}, std::pair{"compact", GBufferLayout::Compact}}) {
     const std::string stated = std::to_string(lighting::GBuffer::bytes_per_pixel(layout)) + " B/px";
-    EXPECT_NE(text.find("`" + std::string(name) + "` (" + std::to_string(lighting::GBuffer::targets(layout).size()) + " targets, " + stated),
-              std::string::npos)
+    std::string row = "`";
+    row.append(name).append("` (").append(std::to_string(lighting::GBuffer::targets(layout).size())).append(" targets, ").append(stated);
+    EXPECT_NE(text.find(row), std::string::npos)
         << name << ": README states another size than " << stated;
     EXPECT_NE(help_text(Command::Render).find(std::string(name) + " (" + std::to_string(lighting::GBuffer::targets(layout).size()) +
                                               " targets, " + stated),
