@@ -90,6 +90,10 @@ void main() {
       if (s_slot_material[first + uint(g)] != m) continue;
       g_shaded_samples = group_mask[g];
       uint triangle;
+      // Looked up again, not kept from the first loop: kSamples instance
+      // records (36 words each) held across the barriers would cost registers
+      // in every invocation, and the second lookup (a binary search over the
+      // units, one record) reads what the first brought into the cache.
       Instance instance = visible_instance(group_id[g], triangle);
       shade(pixel, instance, triangle, m);
     }

@@ -83,7 +83,8 @@ Page* g_page = nullptr;
 // last frames' cost per light, is refused until asked for again: a frame is
 // not interruptible, and a software renderer at 2^20 lights takes minutes.
 // Changes whose cost cannot be judged beforehand (a mode, MSAA, shadows) are
-// undone when one of their first kTrialFrames frames took longer.
+// undone when one of their first kTrialFrames frames took longer (fewer
+// lights never are).
 constexpr double kSlowFrameMs = 5000.0;
 constexpr int kTrialFrames = 3;
 
@@ -291,10 +292,13 @@ void set_option(Page& page, const std::string& option, const std::string& value)
   const WorldOptions before = world_options(parse_args(page.args));
   const WorldOptions after = world_options(parse_args(args));
   if (after.lights && after.lights != before.lights) refuse_slow_lights(page, *after.lights, change);
+  // Fewer lights cannot have made a frame slow: on a page whose frames already
+  // take over kSlowFrameMs a trial would undo the change meant to speed it up.
+  const bool fewer_lights = after.lights && *after.lights < world.light_count();
   std::vector<std::string> previous = page.args;
   carry_out(page, std::move(args));
   page.confirm.clear();
-  if (insisted) {
+  if (insisted || fewer_lights) {
     page.trial.reset();
   } else {
     page.trial = Page::Trial{std::move(previous), change};
