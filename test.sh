@@ -7,13 +7,20 @@
 #                         browser tests (label browser): WebAssembly, which the sanitizers do not see;
 #                         less the run on Mesa's zink (label zink): the same test program runs
 #                         sanitized on llvmpipe, and zink's bindless path adds a few lines of C++;
-#                         and less four kinds of test whose C++ the rest of the sanitized run goes
-#                         through already, at a fraction of their cost under ASan (~250 s of test time):
-#                         GpuWaits (they count a frame's GL calls that could wait for the GPU, which
-#                         sanitizers do not change), the largest frame drawn in forward and
-#                         clustered-deferred, every debug view
-#                         of every mode shown and hidden, and Sponza exported to OBJ (the OBJ importer
-#                         runs under ASan on the smaller OBJ/FBX tests, the regressions and the fuzzer)
+#                         and less the tests whose C++ the rest of the sanitized run goes through
+#                         already, at a fraction of their cost under ASan (~600 s of test time):
+#                         - GpuWaits and Leaks' thousand mode switches: they count GL calls that
+#                           could wait and GL objects, which sanitizers do not change (the switches
+#                           run sanitized in ModeSwitching's hundred, the shadow atlas's frees in
+#                           AtlasAllocator and Shadows.OffGivesTheAtlasBack);
+#                         - MsaaMatchesForward and TechniqueMatchesForwardShaded: cli.compare_msaa,
+#                           cli.compare_phong and cli.compare_blinn_phong run every mode from every
+#                           view on the same scene with MSAA and each Phong model, and
+#                           Msaa.SilhouettesOfABlenderExport every G-buffer layout with MSAA;
+#                         - the largest frame drawn in forward and clustered-deferred, every debug
+#                           view of every mode shown and hidden, and Sponza exported to OBJ (the OBJ
+#                           importer runs under ASan on the smaller OBJ/FBX tests, the regressions
+#                           and the fuzzer)
 set -euo pipefail
 cd "$(dirname "$0")"
 build=build
@@ -25,7 +32,7 @@ case "${1:-}" in
   --sanitize) build=build-sanitize
     flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
            -DATRIUM_SANITIZE=ON -DATRIUM_BUILD_BENCH=OFF)
-    skip=(-LE 'browser|zink' -E '^(GpuWaits\.|RenderSize\.ABigSquareImage|DebugViewRender\.EveryViewAModeOffers|ModelRender\.SponzaExportedAsObj)') ;;
+    skip=(-LE 'browser|zink' -E '^(GpuWaits\.|Leaks\.AThousand|Modes/MsaaMatchesForward\.|Modes/TechniqueMatchesForwardShaded\.|RenderSize\.ABigSquareImage|DebugViewRender\.EveryViewAModeOffers|ModelRender\.SponzaExportedAsObj)') ;;
   "") ;;
   *) echo "usage: ./test.sh [--sanitize]" >&2; exit 2 ;;
 esac
