@@ -10,7 +10,7 @@ atrium=$1 out=$2
 . "$(dirname "$0")/window_driver.sh"
 rm -rf "$out" && mkdir -p "$out" && cd "$out" || exit 1
 
-start_atrium --size 320x180 --lights 16 --gl-debug
+start_atrium --size 160x90 --lights 16 --gl-debug
 expect_line "^renderer: "
 expect_line "^mode: forward$"
 expect_line "^view: 1 court$"
