@@ -10,7 +10,7 @@
 // Only fragments the depth test keeps may mark: run the test first.
 layout(early_fragment_tests) in;
 
-#include "common/mesh_inputs.glsl"
+#include "common/mesh_interface.glsl"
 
 void main() {
   // The view position and cluster as shade_cluster_lights computes them.

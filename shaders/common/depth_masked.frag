@@ -8,7 +8,7 @@
 #include "common/fragment_count.glsl"
 #include "common/shading_depth.glsl"
 
-#include "common/mesh_inputs.glsl"
+#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

@@ -76,8 +76,7 @@ Surface evaluate_material(uint material, uint flags, vec3 position, vec3 normal,
 #ifndef EXPLICIT_GRADIENTS
 // The fragment's material: its index and flags come flat from mesh.vert's
 // instance record, its texture coordinates (v_uv) ready per slot.
-flat in uint v_material;
-flat in uint v_material_flags;
+#include "mesh_interface.glsl"
 
 // < 0 when the fragment's material is not alpha-masked.
 float material_alpha_cutoff() { return material_at(v_material).alpha_cutoff; }

@@ -32,25 +32,8 @@ uint instance_index() { return a_instance.x + uint(gl_InstanceID); }
 uint instance_index() { return a_instance.x; }
 #endif
 
-#ifdef VISIBILITY_ID
-// The identifier of the draw's first triangle (visibility/id.frag adds
-// gl_PrimitiveID).
-flat out uint v_first_triangle_id;
-#endif
-#ifndef POSITION_ONLY
-out vec3 v_position;
-out vec3 v_normal;
-out vec4 v_tangent;
-// Per material texture slot (base colour, metallic-roughness, normal,
-// occlusion, emissive): the UV set it reads through its KHR_texture_transform.
-// An affine map commutes with interpolation, so it is applied here once per
-// vertex; fragments then take derivatives of values no storage read feeds
-// (llvmpipe's helper invocations read zeros from storage buffers).
-out vec2 v_uv[5];
-out vec4 v_color;
-flat out uint v_material;
-flat out uint v_material_flags;  // Material.flags, for branches that must agree across a pixel quad
-#endif
+#define MESH_VERTEX_STAGE
+#include "common/mesh_interface.glsl"
 
 #ifdef SHADOW_PASS
 uniform mat4 u_shadow_view_projection;
@@ -79,6 +62,10 @@ void main() {
   float handedness = determinant(mat3(instance.model)) < 0.0 ? -a_tangent.w : a_tangent.w;
   v_tangent = vec4(mat3(instance.model) * a_tangent.xyz, handedness);
   Material material = material_at(instance.material.x);
+  // Each slot's KHR_texture_transform, applied once per vertex: an affine map
+  // commutes with interpolation, and fragments then take derivatives of values
+  // no storage read feeds (llvmpipe's helper invocations read zeros from
+  // storage buffers).
   for (int slot = 0; slot < 5; ++slot) {
     vec3 uv = vec3((material.uv_sets & (1u << slot)) != 0u ? a_uv1 : a_uv0, 1.0);
     v_uv[slot] = vec2(dot(material.uv_transform[2 * slot].xyz, uv), dot(material.uv_transform[2 * slot + 1].xyz, uv));

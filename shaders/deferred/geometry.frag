@@ -8,7 +8,7 @@
 #define GBUFFER_WRITE
 #include "common/gbuffer.glsl"
 
-#include "common/mesh_inputs.glsl"
+#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

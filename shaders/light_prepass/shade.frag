@@ -15,7 +15,7 @@ layout(binding = 5) uniform target2D u_light_diffuse;
 layout(binding = 6) uniform target2D u_light_specular_f0;
 layout(binding = 7) uniform target2D u_light_specular;
 
-#include "common/mesh_inputs.glsl"
+#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

@@ -11,7 +11,7 @@
 layout(early_fragment_tests) in;
 #endif
 
-#include "common/mesh_inputs.glsl"
+#include "common/mesh_interface.glsl"
 
 layout(location = 0) out vec4 out_color;
 

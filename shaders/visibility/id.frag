@@ -9,12 +9,12 @@
 #include "common/fragment_count.glsl"
 #define SHADING_DEPTH_LOCATION 1
 #include "common/shading_depth.glsl"
+// Before material.glsl, which includes it too: a file is included once, and
+// there it would sit inside the ALPHA_TEST branch.
+#include "common/mesh_interface.glsl"
 #ifdef ALPHA_TEST
 #include "common/material.glsl"
-#include "common/mesh_inputs.glsl"
 #endif
-
-flat in uint v_first_triangle_id;
 layout(location = 0) out uint out_id;
 
 void main() {

@@ -115,10 +115,15 @@ DialectText to_dialect(const std::string& text, GLenum stage, const GlslDialect&
   }
 
   if (!dialect.stage_locations) {
-    const std::string passed = stage == GL_VERTEX_SHADER ? "out" : stage == GL_FRAGMENT_SHADER ? "in" : "";
-    if (!passed.empty()) {
-      const std::regex kLocation(R"re(layout\s*\(\s*location\s*=\s*\d+\s*\)\s*((?:(?:flat|smooth|centroid)\s+)*))re" + passed + R"re(\b)re");
-      out = std::regex_replace(out, kLocation, "$1" + passed);
+    // ES 3.00 takes a location on a vertex shader's inputs and a fragment
+    // shader's outputs only. What a stage passes on may be declared through a
+    // macro (common/mesh_interface.glsl's MESH_VARYING), so every other
+    // location goes, whatever word follows its interpolation qualifiers.
+    const std::string kept = stage == GL_VERTEX_SHADER ? "in" : stage == GL_FRAGMENT_SHADER ? "out" : "";
+    if (!kept.empty()) {
+      const std::regex kLocation(R"re(layout\s*\(\s*location\s*=\s*\d+\s*\)(?!\s*(?:(?:flat|smooth|centroid)\s+)*)re" + kept +
+                                 R"re(\b)\s*)re");
+      out = std::regex_replace(out, kLocation, "");
     }
   }
 

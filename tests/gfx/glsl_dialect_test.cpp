@@ -100,6 +100,21 @@ TEST(GlslDialect, FragmentInputsLoseTheirLocationsOutputsKeepThem) {
   EXPECT_EQ(lines[2], "layout(location = 1) out vec4 o_color;");
 }
 
+TEST(GlslDialect, ValuesPassedThroughAMacroLoseTheirLocationsInBothStages) {
+  // common/mesh_interface.glsl declares both stages' side in one file: `out` or `in` through MESH_VARYING.
+  const std::string text = "#version 450 core\nlayout(location = 0) in vec3 a_position;\n"
+                           "layout(location = 10) flat MESH_VARYING uint v_material;\nlayout(location=4) MESH_VARYING vec2 v_uv[5];\n"
+                           "layout(location = 0) out uint out_id;\n";
+  const std::vector<std::string> vertex = lines_of(to_dialect(text, GL_VERTEX_SHADER, es30()).text);
+  EXPECT_TRUE(vertex[1].ends_with("layout(location = 0) in vec3 a_position;")) << vertex[1];
+  EXPECT_EQ(vertex[2], "flat MESH_VARYING uint v_material;");
+  EXPECT_EQ(vertex[3], "MESH_VARYING vec2 v_uv[5];");
+  const std::vector<std::string> fragment = lines_of(to_dialect(text, GL_FRAGMENT_SHADER, es30()).text);
+  EXPECT_EQ(fragment[2], "flat MESH_VARYING uint v_material;");
+  EXPECT_EQ(fragment[4], "layout(location = 0) out uint out_id;");
+  EXPECT_EQ(lines_of(to_dialect(text, GL_VERTEX_SHADER, gl41()).text)[2], "layout(location = 10) flat MESH_VARYING uint v_material;");
+}
+
 TEST(GlslDialect, OneNameWithTwoBindingsIsRefusedNamingIt) {
   try {
     (void)to_dialect("#version 450 core\n#ifdef A\nlayout(binding = 0) uniform sampler2D u_x;\n#else\n"
