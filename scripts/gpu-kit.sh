@@ -1,29 +1,34 @@
 #!/usr/bin/env bash
 # Packs one folder that gets every GPU figure in one command on a machine that
 # has nothing but Linux (glibc 2.36 or newer) and an NVIDIA driver: the Release
-# atrium, the shared libraries it needs that such a machine lacks (not libc,
-# libGL, libEGL or the driver), shaders, scene files, the real Sponza, and
-# run.sh (scripts/gpu-kit/run.sh; docs/benchmarks.md says how to run it).
+# atrium, the shared libraries it needs that such a machine lacks (not libc or
+# the driver), glvnd's GL loaders for a machine without them (glvnd/, used only
+# there), shaders, scene files, the real Sponza, and run.sh
+# (scripts/gpu-kit/run.sh; docs/benchmarks.md says how to run it).
 #   scripts/gpu-kit.sh DIR                 builds Release atrium in build/ and packs it
 #   scripts/gpu-kit.sh DIR --binary FILE   packs FILE instead (the kit test packs its build's)
 #   scripts/gpu-kit.sh DIR --sponza DIR    Sponza's glTF folder (default: assets/sponza/glTF,
 #                                          else ../shared/testdata/scenes/sponza-crytek)
+#   scripts/gpu-kit.sh DIR --xz FILE       also writes the kit as FILE (tar.xz, about 32 MiB):
+#                                          what a device run carries beside the repository
+#                                          within its 64 MiB (unpack it with tar -xJf FILE -C /tmp)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 readonly max_bytes=$((60 * 1024 * 1024))
 
 usage() {
-  echo "usage: scripts/gpu-kit.sh DIR [--binary FILE] [--sponza DIR]" >&2
+  echo "usage: scripts/gpu-kit.sh DIR [--binary FILE] [--sponza DIR] [--xz FILE]" >&2
   exit 2
 }
 [ $# -ge 1 ] || usage
 kit=$1
 shift
-binary="" sponza=""
+binary="" sponza="" tarball=""
 while [ $# -gt 0 ]; do
   case $1 in
     --binary) [ $# -ge 2 ] || usage; binary=$2; shift 2 ;;
     --sponza) [ $# -ge 2 ] || usage; sponza=$2; shift 2 ;;
+    --xz) [ $# -ge 2 ] || usage; tarball=$2; shift 2 ;;
     *) usage ;;
   esac
 done
@@ -43,7 +48,7 @@ fi
   { echo "gpu-kit: no Sponza.gltf found; run scripts/fetch-scenes.sh sponza or pass --sponza DIR" >&2; exit 1; }
 
 rm -rf "$kit"
-mkdir -p "$kit/bin" "$kit/lib" "$kit/assets/sponza"
+mkdir -p "$kit/bin" "$kit/lib" "$kit/glvnd" "$kit/assets/sponza"
 strip --strip-unneeded -o "$kit/bin/atrium" "$binary"
 # What the dynamic linker resolves, less what every Linux with a GL driver has:
 # glibc's libraries and the GL loaders, which must be the machine's own.
@@ -52,6 +57,15 @@ ldd "$binary" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }' | while read -r 
     libc.so.* | libm.so.* | libdl.so.* | libpthread.so.* | librt.so.* | ld-linux* | libGL* | libEGL* | libOpenGL*) continue ;;
   esac
   cp -L "$path" "$kit/lib/$name"
+done
+# glvnd's loaders dispatch to whichever vendor library the machine's driver
+# installed (NVIDIA's, through its EGL vendor file): the lent GPU machines have
+# the driver without them. run.sh puts them on the path only where the dynamic
+# linker finds no libEGL.so.1 of the machine's own.
+for name in libEGL.so.1 libOpenGL.so.0 libGL.so.1 libGLX.so.0 libGLdispatch.so.0; do
+  path=$({ ldconfig -p 2>/dev/null || /sbin/ldconfig -p; } | awk -v n="$name" '$1 == n && /x86-64/ { print $NF; exit }')
+  [ -n "$path" ] || { echo "gpu-kit: this machine has no $name (Debian: apt-get install libegl1 libopengl0 libgl1)" >&2; exit 1; }
+  cp -L "$path" "$kit/glvnd/$name"
 done
 cp -r "$root/shaders" "$kit/shaders"
 cp -r "$root/scenes" "$kit/scenes"
@@ -70,3 +84,8 @@ if [ "$bytes" -gt "$max_bytes" ]; then
   exit 1
 fi
 echo "gpu-kit: $kit ($((bytes / 1024 / 1024)) MiB, $(ls "$kit/lib" | wc -l) libraries); run: $kit/run.sh OUT [--quick]"
+if [ -n "$tarball" ]; then
+  mkdir -p "$(dirname "$tarball")"
+  tar -C "$(dirname "$kit")" -cf - "$(basename "$kit")" | xz -T0 -4 >"$tarball"
+  echo "gpu-kit: $tarball ($(($(stat -c %s "$tarball") / 1024 / 1024)) MiB); on the GPU machine: tar -xJf $(basename "$tarball") -C /tmp && /tmp/$(basename "$kit")/run.sh OUT"
+fi

@@ -27,6 +27,11 @@ mkdir -p "$1" || exit 1
 out=$(cd "$1" && pwd)
 
 export LD_LIBRARY_PATH="$kit/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+# A machine with the driver but not glvnd (the lent GPU machines) takes the kit's loaders.
+if ! { ldconfig -p || /sbin/ldconfig -p; } 2>/dev/null | grep -q 'libEGL\.so\.1 '; then
+  echo "run.sh: no libEGL.so.1 on this machine: using the kit's glvnd loaders" >&2
+  LD_LIBRARY_PATH="$kit/glvnd:$LD_LIBRARY_PATH"
+fi
 export ATRIUM_SHADER_DIR="$kit/shaders" ATRIUM_TOOLS_DIR="$kit"
 # glvnd finds NVIDIA's EGL through this file; some driver-only machines keep it
 # where the loader does not look.

@@ -14,7 +14,18 @@ fail() {
 }
 rm -rf "$work"
 mkdir -p "$work"
-"$root/scripts/gpu-kit.sh" "$work/kit" --binary "$binary"
+"$root/scripts/gpu-kit.sh" "$work/kit" --binary "$binary" --xz "$work/kit.tar.xz"
+
+# The tarball a device run carries holds the kit, and the kit's glvnd loaders
+# (for a machine with the driver alone) dispatch to the machine's driver: here
+# Mesa's, through its EGL vendor file.
+tar -tJf "$work/kit.tar.xz" >"$work/tarball.txt"
+grep -qx "kit/run.sh" "$work/tarball.txt" || fail "the tarball holds no kit/run.sh"
+grep -qx "kit/glvnd/libEGL.so.1" "$work/tarball.txt" || fail "the tarball holds no glvnd loader"
+env -i PATH=/usr/bin:/bin LD_LIBRARY_PATH="$work/kit/glvnd:$work/kit/lib" LD_DEBUG=libs ATRIUM_SHADER_DIR="$work/kit/shaders" \
+  "$work/kit/bin/atrium" info >"$work/glvnd.txt" 2>&1 || fail "atrium info fails through the kit's loaders: $(tail -n 5 "$work/glvnd.txt")"
+grep -q "calling init: $work/kit/glvnd/libEGL.so.1" "$work/glvnd.txt" || fail "the kit's libEGL.so.1 was not the one loaded"
+grep -q "^gl  .*egl-surfaceless" "$work/glvnd.txt" || fail "no GL context through the kit's loaders: $(grep -v "^ *[0-9]*:" "$work/glvnd.txt")"
 
 # Every library the kit's atrium loads comes from the kit, except those the
 # kit leaves to the machine: glibc's and the GL loaders.
