@@ -9,7 +9,7 @@
 #   scripts/gpu-kit.sh DIR --binary FILE   packs FILE instead (the kit test packs its build's)
 #   scripts/gpu-kit.sh DIR --sponza DIR    Sponza's glTF folder (default: assets/sponza/glTF,
 #                                          else ../shared/testdata/scenes/sponza-crytek)
-#   scripts/gpu-kit.sh DIR --xz FILE       also writes the kit as FILE (tar.xz, about 32 MiB):
+#   scripts/gpu-kit.sh DIR --xz FILE       also writes the kit as FILE (tar.xz, about 30 MiB):
 #                                          what a device run carries beside the repository
 #                                          within its 64 MiB (unpack it with tar -xJf FILE -C /tmp)
 set -euo pipefail
