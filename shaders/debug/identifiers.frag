@@ -29,9 +29,9 @@ vec3 hashed_colour(uint x) {
 void main() {
 #ifdef SHOW_SHARED
   ivec2 pixel = ivec2(gl_FragCoord.xy);
-  uint ids[kSamples], group_id[kSamples], group_mask[kSamples];
+  uint ids[kSamples], group_of;
   for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
-  bool shared_pixel = surface_groups(pixel, ids, kAnyMaterial, group_id, group_mask) > 1;
+  bool shared_pixel = bitCount(surface_groups(pixel, ids, kAnyMaterial, group_of)) > 1;
   out_color = shared_pixel ? vec4(1.0, 0.1, 0.1, 1.0) : vec4(0.0, 0.0, 0.0, 0.6);
 #else
   uint id = texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r;

@@ -159,10 +159,10 @@ VisibleSurface visible_surface(ivec2 pixel, Instance instance, uint triangle) {
 // material and the lights the same inputs, within what the deferred modes'
 // edge test lets pass (gbuffer_samples_differ): position within 0.1% of the
 // distance, normals within about 2 degrees, tangents, colours and texture
-// coordinates alike (the latter within 1% of a pixel's step, taken from
-// g_uv_dx/g_uv_dy of the surface rebuilt last). Two triangles of one flat or
-// smooth surface meet this on the pixels their shared edge crosses.
-bool same_surface(VisibleSurface a, VisibleSurface b) {
+// coordinates alike (the latter within 1% of a pixel's step, `texel_step`:
+// texel_steps() of one of them). Two triangles of one flat or smooth surface
+// meet this on the pixels their shared edge crosses.
+bool same_surface(VisibleSurface a, VisibleSurface b, vec2 texel_step[5]) {
   if (a.material != b.material || a.front_facing != b.front_facing) return false;
   float range = length(a.position - u_camera_position.xyz);
   if (distance(a.position, b.position) > 1e-3 * range) return false;
@@ -171,43 +171,102 @@ bool same_surface(VisibleSurface a, VisibleSurface b) {
     return false;
   }
   for (int slot = 0; slot < 5; ++slot) {
-    vec2 texel_step = abs(g_uv_dx[slot]) + abs(g_uv_dy[slot]);
-    if (any(greaterThan(abs(a.uv[slot] - b.uv[slot]), 0.01 * texel_step + 1e-7))) return false;
+    if (any(greaterThan(abs(a.uv[slot] - b.uv[slot]), 0.01 * texel_step[slot] + 1e-7))) return false;
   }
   return true;
 }
 
-// The surfaces that `pixel`'s samples (identifiers `ids`) show, each shaded
-// once for all its samples: samples of one triangle always share, samples of
-// different triangles when same_surface() holds. Only triangles of `material`
-// count (kAnyMaterial: all). Fills each group's first identifier and sample
-// mask; returns how many groups.
+// Each texture slot's UV step to the next pixel, of the surface visible_surface() rebuilt last.
+void texel_steps(out vec2 texel_step[5]) {
+  for (int slot = 0; slot < 5; ++slot) texel_step[slot] = abs(g_uv_dx[slot]) + abs(g_uv_dy[slot]);
+}
+
+// The surfaces that `pixel`'s samples (identifiers `ids`) show, each to be
+// shaded once for all its samples: samples of one triangle always share,
+// samples of different triangles when same_surface() holds. Only triangles of
+// `material` count (kAnyMaterial: all). A group is named by its first sample
+// (its leader): returns a bit per leader, and `group_of` gives each sample's
+// leader in 4 bits (kNoGroup where the sample shows no triangle that counts).
+//
+// Only a pixel whose samples show two triangles or more rebuilds surfaces:
+// each later triangle's once, and each earlier group's again for each
+// comparison, rather than keeping them. An array of surfaces held in every
+// invocation and indexed by a count lives in memory, not registers, on a GPU
+// (the 4x resolve that kept one took 15 times the single-sample resolve on an
+// H200), while ALU is plentiful there.
 const uint kAnyMaterial = 0xffffffffu;
-int surface_groups(ivec2 pixel, uint ids[kSamples], uint material, out uint group_id[kSamples], out uint group_mask[kSamples]) {
-  VisibleSurface kept[kSamples];
-  int groups = 0;
-  for (int i = 0; i < kSamples; ++i) {
-    uint id = ids[i];
-    bool seen = id == 0u;
-    for (int j = 0; j < i; ++j) seen = seen || ids[j] == id;
-    if (seen) continue;
-    uint triangle;
-    Instance instance = visible_instance(id, triangle);
-    if (material != kAnyMaterial && instance.material.x != material) continue;
-    uint mask = 0u;
-    for (int j = i; j < kSamples; ++j) mask |= ids[j] == id ? 1u << j : 0u;
-    VisibleSurface surface = visible_surface(pixel, instance, triangle);
-    int joined = -1;
-    for (int g = 0; g < groups && joined < 0; ++g) joined = same_surface(kept[g], surface) ? g : -1;
-    if (joined >= 0) {
-      group_mask[joined] |= mask;
-      continue;
-    }
-    kept[groups] = surface;
-    group_id[groups] = id;
-    group_mask[groups] = mask;
-    ++groups;
+const uint kNoGroup = 0xfu;
+#if defined(MSAA_SAMPLES) && MSAA_SAMPLES > 8
+#error "surface_groups packs a sample's leader in 4 bits of 32: at most 8 samples"
+#endif
+
+uint group_at(uint group_of, int s) { return (group_of >> (4 * s)) & 0xfu; }
+uint with_group(uint group_of, int s, uint leader) { return (group_of & ~(0xfu << (4 * s))) | (leader << (4 * s)); }
+// The samples whose leader is `leader`.
+uint group_mask(uint group_of, int leader) {
+  uint mask = 0u;
+  for (int s = 0; s < kSamples; ++s) mask |= group_at(group_of, s) == uint(leader) ? 1u << s : 0u;
+  return mask;
+}
+// ids[s] through a constant index each (a chain of selects, not an array in memory).
+uint id_at(uint ids[kSamples], int s) {
+  uint id = ids[0];
+  for (int k = 1; k < kSamples; ++k) id = k == s ? ids[k] : id;
+  return id;
+}
+
+// The surface that sample `s` of `pixel` shows (identifiers `ids`).
+VisibleSurface sample_surface(ivec2 pixel, uint ids[kSamples], int s) {
+  uint triangle;
+  Instance instance = visible_instance(id_at(ids, s), triangle);
+  return visible_surface(pixel, instance, triangle);
+}
+
+// Moves the samples of group `from` to group `to` (kNoGroup: out of every group).
+uint regroup(uint group_of, int from, uint to) {
+  for (int s = from; s < kSamples; ++s) {
+    if (group_at(group_of, s) == uint(from)) group_of = with_group(group_of, s, to);
   }
-  return groups;
+  return group_of;
+}
+
+uint surface_groups(ivec2 pixel, uint ids[kSamples], uint material, out uint group_of) {
+  uint leaders = 0u;
+  group_of = 0xffffffffu;  // kNoGroup everywhere
+  for (int i = 0; i < kSamples; ++i) {
+    if (ids[i] == 0u) continue;
+    int earlier = i;
+    for (int j = i - 1; j >= 0; --j) earlier = ids[j] == ids[i] ? j : earlier;
+    group_of = with_group(group_of, i, uint(earlier));
+    if (earlier == i) leaders |= 1u << i;
+  }
+  for (uint rest = material == kAnyMaterial ? 0u : leaders; rest != 0u; rest &= rest - 1u) {
+    int leader = findLSB(rest);
+    uint triangle;
+    if (visible_instance(id_at(ids, leader), triangle).material.x == material) continue;
+    group_of = regroup(group_of, leader, kNoGroup);
+    leaders &= ~(1u << leader);
+  }
+  // Each later leader joins the first earlier group whose surface it shares.
+  // The first group's surface is kept (in registers: one surface, not an
+  // array), the others' rebuilt for each comparison.
+  if ((leaders & (leaders - 1u)) == 0u) return leaders;
+  int first_leader = findLSB(leaders);
+  VisibleSurface first_surface = sample_surface(pixel, ids, first_leader);
+  for (uint rest = leaders & (leaders - 1u); rest != 0u; rest &= rest - 1u) {
+    int leader = findLSB(rest);
+    VisibleSurface surface = sample_surface(pixel, ids, leader);
+    vec2 texel_step[5];
+    texel_steps(texel_step);
+    int joined = same_surface(first_surface, surface, texel_step) ? first_leader : -1;
+    for (uint before = leaders & ((1u << leader) - 1u) & ~(1u << first_leader); before != 0u && joined < 0; before &= before - 1u) {
+      int other = findLSB(before);
+      if (same_surface(sample_surface(pixel, ids, other), surface, texel_step)) joined = other;
+    }
+    if (joined < 0) continue;
+    group_of = regroup(group_of, leader, uint(joined));
+    leaders &= ~(1u << leader);
+  }
+  return leaders;
 }
 #endif
