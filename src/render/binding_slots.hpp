@@ -28,6 +28,7 @@ inline constexpr unsigned kShadowViewBinding = 9;       // ShadowViews
 inline constexpr unsigned kDepthTilesBinding = 10;      // Pyramid, TileDepths: occlusion culling's depth
 inline constexpr unsigned kBlockSumsBinding = 11;       // BlockSums: the debug counters' sums
 inline constexpr unsigned kBigLightsBinding = 12, kOverflowLightsBinding = 13, kLightFitsBinding = 14, kLongBinsBinding = 15;
+inline constexpr unsigned kScanBlocksBinding = 22;      // ScanBlocks: the light lists' scan, per block of bins
 inline constexpr unsigned kCommandTemplateBinding = 16, kCullOutBinding = 17, kCullShownBinding = 18, kCullRecordsBinding = 19,
                           kLastShownBinding = 20, kCullCountersBinding = 21;  // GPU occlusion culling
 inline constexpr unsigned kVisibilityUnitsBinding = 24;  // Units: the visibility buffer's identifiers (render/frame/draw_list.hpp)
@@ -80,7 +81,7 @@ inline constexpr BlockSlot kBlockSlots[] = {
     {"ReadbackSlot", kReadbackSlotBinding},     {"Units", kVisibilityUnitsBinding},
     {"VertexPool", kVertexPoolBinding},         {"IndexPool", kIndexPoolBinding},
     {"MaterialDispatch", kMaterialDispatchBinding}, {"MaterialTileLists", kMaterialTilesBinding},
-    {"MaterialTextures", kMaterialTexturesBinding},
+    {"MaterialTextures", kMaterialTexturesBinding}, {"ScanBlocks", kScanBlocksBinding},
 };
 
 }  // namespace atrium::render

@@ -17,6 +17,9 @@ constexpr GLuint kScatterGroup = 64, kSortGroupBins = 64, kMaxGroups = 65535;
 constexpr std::uint32_t kStepCount = 0, kStepCountLarge = 1, kStepWrite = 2, kStepWriteLarge = 3, kStepOverflow = 4;
 // Bins of a gather work group (shaders/common/light_gather.glsl); it walks its lights 1,024 at a time.
 constexpr GLuint kGatherGroup = 64, kGatherBatch = 1024;
+// Bins a work group of the scan takes (kScanBlock in shaders/common/light_list_scan.comp), and its steps (u_step).
+constexpr GLuint kScanBlock = 1024;
+constexpr std::uint32_t kScanReduce = 0, kScanBlocks = 1, kScanWrite = 2;
 // LongBins in shaders/common/light_list_sort.glsl and BigLights in
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
 constexpr std::size_t kListHeader = 4;
@@ -35,6 +38,7 @@ LightIndexList::LightIndexList(glm::uvec3 shape)
       total_(gfx::create_buffer()),
       bin_counts_(gfx::create_buffer()),
       long_bins_(gfx::create_buffer()),
+      scan_blocks_(gfx::create_buffer()),
       totals_(sizeof(Total)) {
   static_assert(sizeof(Total) == 24, "must match LightTotal in shaders/common/light_lists.glsl");
   glNamedBufferStorage(ranges_.id(), static_cast<GLsizeiptr>(std::size_t{bins_} * 2 * sizeof(std::uint32_t)), nullptr, 0);
@@ -43,6 +47,7 @@ LightIndexList::LightIndexList(glm::uvec3 shape)
   const Total none;
   glNamedBufferStorage(total_.id(), sizeof(Total), &none, 0);
   glNamedBufferStorage(long_bins_.id(), static_cast<GLsizeiptr>((kListHeader + std::size_t{bins_}) * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(scan_blocks_.id(), static_cast<GLsizeiptr>((bins_ + kScanBlock - 1) / kScanBlock * sizeof(std::uint32_t)), nullptr, 0);
   const std::uint32_t zero = 0;
   glClearNamedBufferData(ranges_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   resize(static_cast<std::uint32_t>(std::min<std::uint64_t>(4096, std::max<std::uint64_t>(max_entries_, 1))));
@@ -188,6 +193,7 @@ void LightIndexList::run(std::uint32_t light_count, const LightAssignmentProgram
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kBinCountsBinding, bin_counts_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightFitsBinding, fits_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kBigLightsBinding, big_lights_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kScanBlocksBinding, scan_blocks_.id());
   bind_inputs();
   if (method == LightAssignment::Gather) gather(light_count, programs);
   else scatter(light_count, programs);
@@ -203,9 +209,7 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
   programs.gather.set("u_step", kStepCount);
   dispatch_bins();
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  programs.scan.use();
-  programs.scan.set("u_bins", bins_);
-  glDispatchCompute(1, 1, 1);
+  scan(programs);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   programs.gather.use();
   programs.gather.set("u_step", kStepWrite);
@@ -216,6 +220,21 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
     programs.gather.set("u_step", kStepOverflow);
     glDispatchCompute(light_groups, 1, 1);
   }
+}
+
+void LightIndexList::scan(const LightAssignmentPrograms& programs) const {
+  const GLuint blocks = (bins_ + kScanBlock - 1) / kScanBlock;
+  auto dispatch_blocks = [&] { glDispatchCompute(std::min(blocks, kMaxGroups), (blocks + kMaxGroups - 1) / kMaxGroups, 1); };
+  programs.scan.use();
+  programs.scan.set("u_bins", bins_);
+  programs.scan.set("u_step", kScanReduce);
+  dispatch_blocks();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  programs.scan.set("u_step", kScanBlocks);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  programs.scan.set("u_step", kScanWrite);
+  dispatch_blocks();
 }
 
 void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPrograms& programs) {
@@ -237,9 +256,7 @@ void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPro
     large_lights(kStepCountLarge);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
-  programs.scan.use();
-  programs.scan.set("u_bins", bins_);
-  glDispatchCompute(1, 1, 1);
+  scan(programs);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   if (light_groups > 0) {
     programs.scatter.use();

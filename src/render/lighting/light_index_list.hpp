@@ -42,7 +42,7 @@
 
 namespace atrium::lighting {
 
-using render::kBigLightsBinding, render::kBinCountsBinding, render::kLightFitsBinding, render::kLightIndicesBinding,
+using render::kBigLightsBinding, render::kBinCountsBinding, render::kScanBlocksBinding, render::kLightFitsBinding, render::kLightIndicesBinding,
     render::kLightRangesBinding, render::kLightTotalBinding, render::kLongBinsBinding, render::kOverflowLightsBinding;
 
 // Entries per light the array is first sized for, before any total has arrived.
@@ -182,6 +182,8 @@ class LightIndexList {
   void run(std::uint32_t light_count, const LightAssignmentPrograms& programs, const std::function<void()>& bind_inputs);
   void scatter(std::uint32_t light_count, const LightAssignmentPrograms& programs);
   void gather(std::uint32_t light_count, const LightAssignmentPrograms& programs);
+  // The bins' counts into ranges and cursors (shaders/common/light_list_scan.comp's three steps).
+  void scan(const LightAssignmentPrograms& programs) const;
 
   glm::uvec3 shape_;
   std::uint32_t bins_;
@@ -189,6 +191,7 @@ class LightIndexList {
   std::uint32_t loop_limit_;   // gfx::shader_loop_limit(): the longest loop a pixel may run
   bool software_;              // gfx::is_software_renderer(), asked once
   gfx::Buffer ranges_, indices_, total_, bin_counts_, long_bins_, overflow_, fits_, big_lights_;
+  gfx::Buffer scan_blocks_;  // per block of the scan's bins: its sum, then its offset
   // The total's start (with the capacity) and an empty list's header, which
   // each frame copies over total_, long_bins_ and big_lights_ (made in resize).
   gfx::Buffer resets_;
