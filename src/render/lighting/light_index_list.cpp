@@ -18,7 +18,7 @@ constexpr std::uint32_t kStepCount = 0, kStepCountLarge = 1, kStepWrite = 2, kSt
 // Bins of a gather work group (shaders/common/light_gather.glsl); it walks its lights 1,024 at a time.
 constexpr GLuint kGatherGroup = 64, kGatherBatch = 1024;
 // Bins a work group of the scan takes (kScanBlock in shaders/common/light_list_scan.comp), and its steps (u_step).
-constexpr GLuint kScanBlock = 1024;
+constexpr GLuint kScanBlock = 4096;
 constexpr std::uint32_t kScanReduce = 0, kScanBlocks = 1, kScanWrite = 2;
 // LongBins in shaders/common/light_list_sort.glsl and BigLights in
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
