@@ -153,17 +153,19 @@ step "compare, Sponza" 90 "$out/.compare-sponza.txt" "$atrium" compare "$sponza"
 # It is measured against the G-buffer it replaces and forward, each
 # scene at 1,024 lights (issue 42's goals): its geometry pass ("visibility")
 # and its resolve ("resolve", and "material classification" when bound) are
-# columns of the pass table. Auto binds materials bindless where the driver
+# columns of the pass table, and --pass-steps times their parts (GL_TIMESTAMP
+# queries: no wait) in brackets: the geometry pass's draws and occlusion
+# culling's pyramids, the light assignment's marking, count, scan and write. Auto binds materials bindless where the driver
 # has ARB_bindless_texture; the bound path (one dispatch per material) beside it.
 grid_scene=$kit/scenes/courtyard-grid.json
 for scene in built-in sponza grid; do
   case $scene in built-in) file=() ;; sponza) file=("$sponza") ;; grid) file=("$grid_scene") ;; esac
   step "visibility buffer, $scene" 25 "$out/.visibility-$scene.md" "$atrium" bench "${file[@]}" \
     --modes forward,clustered-deferred,visibility-buffer --views 1 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" \
-    --frame-limit 1000 --lighting-stage compute
+    --frame-limit 1000 --lighting-stage compute --pass-steps
   step "visibility buffer bound, $scene" 20 "$out/.visibility-bound-$scene.md" "$atrium" bench "${file[@]}" \
     --modes visibility-buffer --views 1 --lights 1024 --size "$size" --frames "$frames" --warmup "$warmup" \
-    --frame-limit 1000 --lighting-stage compute --material-binding bound
+    --frame-limit 1000 --lighting-stage compute --material-binding bound --pass-steps
 done
 # The visibility buffer as a process's first mode, each binding, beside
 # clustered-deferred: the bench and compare run it after raster modes, and one
@@ -188,7 +190,7 @@ grids="16x9x32 64px 32px 24px 16px"
 for grid in $grids; do
   step "clusters $grid" 40 "$out/.clusters-$grid.md" "$atrium" bench --modes clustered-deferred,tiled-deferred --views 1 --size "$size" \
     --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$cluster_lights" --cluster-grid "$grid" \
-    --lighting-stage compute
+    --lighting-stage compute --pass-steps
 done
 # Light assignment, each way forced (--light-assignment): at constant density,
 # and with dense lights (Sponza's lion view, lights of 4 m), where the gather wins on llvmpipe.
@@ -216,7 +218,7 @@ done
 # per-sample draws against the compute stage's shared-out edge samples, and
 # the visibility buffer, which shades each triangle of a pixel once.
 step "msaa 4x, built-in" 40 "$out/.msaa.md" "$atrium" bench --modes tiled-deferred,clustered-deferred,visibility-buffer --views 1 \
-  --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --lights 1024 --msaa 4 --lighting-stage fragment,compute
+  --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --lights 1024 --msaa 4 --lighting-stage fragment,compute --pass-steps
 gpu_state "after the bench"
 step "picture, Sponza" 30 "$out/.render-sponza.txt" "$atrium" render "$sponza" --mode clustered-deferred --lights "$picture_lights" \
   --light-radius "$picture_radius" --size "$size" --out "$out/sponza.png"

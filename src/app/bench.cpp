@@ -110,6 +110,9 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   std::vector<double> frame_ms, gpu_ms;
   std::map<std::string, std::vector<double>> pass_ms, pass_cpu_ms;
   std::vector<std::string> pass_order;
+  // Per pass, its steps' names in order and their times (keyed by pass, then step).
+  std::map<std::string, std::vector<std::string>> step_order;
+  std::map<std::pair<std::string, std::string>, std::vector<double>> step_ms;
   std::map<std::string, std::vector<double>> system_ms;
   std::vector<std::string> system_order;
   auto slices_depth = [&] {
@@ -145,6 +148,11 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
       pass_ms[pass.name].push_back(pass.milliseconds);
       pass_cpu_ms[pass.name].push_back(pass.cpu_milliseconds);
       frame_gpu_ms += pass.milliseconds;
+      for (const gfx::StepTime& step : pass.steps) {
+        std::vector<double>& times = step_ms[{pass.name, step.name}];
+        if (times.empty()) step_order[pass.name].push_back(step.name);
+        times.push_back(step.milliseconds);
+      }
     }
     gpu_ms.push_back(frame_gpu_ms);
     for (const ecs::SystemTime& system : world.scheduler().last_frame_times()) {
@@ -176,7 +184,8 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.triangles_occluded = world.renderer().stats().triangles_occluded;
   row.draw_calls = world.renderer().stats().draw_calls;
   for (const std::string& name : pass_order) {
-    row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5)});
+    row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5), {}});
+    for (const std::string& step : step_order[name]) row.pass_medians.back().steps.push_back({step, percentile(step_ms[{name, step}], 0.5)});
   }
   for (const std::string& name : system_order) row.system_medians.push_back({name, percentile(system_ms[name], 0.5)});
   // Counting costs one more frame: not for a mode already over the limit.
@@ -279,6 +288,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   std::size_t done = 0;
   auto& settings = world.registry().resource<RendererSettings>();
   settings.redraw_shadows = options.shadow_redraw;
+  world.renderer().timer().time_steps(options.pass_steps);
   for (const std::uint32_t lights : light_counts) {
     if (lights != world.light_count()) world.set_light_count(lights);
     if (options.light_radius || options.constant_density) world.set_light_radius(bench_radius(options, lights));
@@ -421,12 +431,17 @@ std::string bench_markdown(const BenchResult& result) {
         "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
         "in one frame that could wait for the GPU; pipelined is the frame with frames submitted back to back, one frame's CPU work "
         "overlapping the GPU's of the one before, as in a window; systems are the CPU time of those over 0.05 ms, the renderer's including its "
-        "passes' submission):\n\n"
+        "passes' submission; in brackets after a pass, with --pass-steps, the steps it names):\n\n"
         "| mode | lights | view | median | p5 | p95 | fps | pipelined | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists | systems (CPU, median) |\n"
         "|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
-    for (const auto& pass : row.pass_medians) passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
+    for (const auto& pass : row.pass_medians) {
+      passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
+      std::string steps;
+      for (const gfx::StepTime& step : pass.steps) steps += (steps.empty() ? "" : ", ") + step.name + " " + fixed(step.milliseconds, 2);
+      if (!steps.empty()) passes += " [" + steps + "]";
+    }
     if (!row.refused.empty()) passes = "refused: " + row.refused;
     if (!row.skipped.empty()) passes = "skipped: " + row.skipped;
     if (!row.stopped.empty()) passes = "stopped: " + row.stopped + "; " + passes;
@@ -450,13 +465,17 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
+    std::string pass_steps;  // "pass/step=ms;..."
     for (const auto& pass : row.pass_medians) {
       passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
       cpu_passes += (cpu_passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.cpu_milliseconds, 4);
+      for (const gfx::StepTime& step : pass.steps) {
+        pass_steps += (pass_steps.empty() ? "" : ";") + pass.name + "/" + step.name + "=" + fixed(step.milliseconds, 4);
+      }
     }
     std::string cpu_systems;
     for (const ecs::SystemTime& system : row.system_medians) {
@@ -474,7 +493,7 @@ std::string bench_csv(const BenchResult& result) {
         << "\","
         << (std::isnan(row.median_ms) ? std::string_view() : kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
         << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << ",\"" << row.technique_variant
-        << "\"\n";
+        << "\",\"" << pass_steps << "\"\n";
   }
   return csv.str();
 }

@@ -47,6 +47,7 @@ struct BenchOptions {
   // --shadows LIST: every mode is measured with each shadowed-light count (empty: none).
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame
+  bool pass_steps = false;                   // --pass-steps: the steps each pass names, timed apart
   // --frame-limit: a run stops after a frame slower than this, and a mode is
   // skipped at the larger light counts that would pass it (BenchRow::skipped).
   double frame_limit_ms = 1000.0;

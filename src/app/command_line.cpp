@@ -287,6 +287,10 @@ const std::vector<OptionSpec>& option_table() {
        }},
       {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)",
        set_flag([](CliOptions& o) -> bool& { return o.bench.shadow_redraw; })},
+      {"--pass-steps", "", kBench,
+       "also time the steps inside passes (the light lists' count, scan and write; occlusion culling's pyramid, test and "
+       "draws), listed in brackets after their pass; on a software renderer each step adds two waits for the GPU",
+       set_flag([](CliOptions& o) -> bool& { return o.bench.pass_steps; })},
       {"--debug-view", "V", kWindow | kRender,
        "show a debug view: " + render::debug_view_names() +
            ", or any resource the mode's frame graph declares viewable, by its name; `render --debug-view list` "

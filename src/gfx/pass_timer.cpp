@@ -5,6 +5,10 @@
 #include "gfx/limits.hpp"
 
 namespace atrium::gfx {
+namespace {
+// The timer whose pass is open on this thread with steps timed (PassTimer::Step).
+thread_local PassTimer* t_stepping = nullptr;
+}  // namespace
 
 // Software renderers are timed with glFinish and the clock (their queries
 // add little and cost much), where glFinish waits; a browser's does not, so
@@ -53,25 +57,28 @@ void PassTimer::end_frame() {
 }
 
 void PassTimer::begin_pass(const std::string& name) {
+  t_stepping = time_steps_ ? this : nullptr;
   if (method_ == TimingMethod::CpuFinish) {
     glFinish();  // the previous work must not be charged to this pass
-    current_.push_back({name, 0.0});
+    current_.push_back({name, 0.0, 0, 0.0, {}});
     if (counts_fragments_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, cpu_fragments_.id());
     pass_start_ = std::chrono::steady_clock::now();
     return;
   }
   FrameQueries& frame = frames_[frame_ % kFramesInFlight];
   if (frame.used == frame.passes.size()) {
-    frame.passes.push_back({name, create_query(GL_TIME_ELAPSED), counts_fragments_ ? create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB) : Query{}});
+    frame.passes.push_back({name, create_query(GL_TIME_ELAPSED), counts_fragments_ ? create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB) : Query{}, 0.0, {}, 0});
   }
   QueryPass& pass = frame.passes[frame.used++];
   pass.name = name;
+  pass.steps_used = 0;
   glBeginQuery(GL_TIME_ELAPSED, pass.query.id());
   if (counts_fragments_) glBeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB, pass.fragments.id());
   pass_start_ = std::chrono::steady_clock::now();
 }
 
 void PassTimer::end_pass() {
+  t_stepping = nullptr;
   const double cpu_milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - pass_start_).count();
   if (method_ == TimingMethod::CpuFinish) {
     current_.back().cpu_milliseconds = cpu_milliseconds;
@@ -118,11 +125,54 @@ void PassTimer::collect() {
       GLuint64 nanoseconds = 0, fragments = 0;
       glGetQueryObjectui64v(frame.passes[i].query.id(), GL_QUERY_RESULT, &nanoseconds);
       if (counts_fragments_) glGetQueryObjectui64v(frame.passes[i].fragments.id(), GL_QUERY_RESULT, &fragments);
-      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6, fragments, frame.passes[i].cpu_milliseconds});
+      times.push_back({frame.passes[i].name, static_cast<double>(nanoseconds) / 1e6, fragments, frame.passes[i].cpu_milliseconds, {}});
+      for (std::size_t k = 0; k < frame.passes[i].steps_used; ++k) {
+        const QueryStep& step = frame.passes[i].steps[k];
+        GLuint64 begin = 0, end = 0;
+        glGetQueryObjectui64v(step.begin.id(), GL_QUERY_RESULT, &begin);
+        glGetQueryObjectui64v(step.end.id(), GL_QUERY_RESULT, &end);
+        times.back().steps.push_back({step.name, static_cast<double>(end - begin) / 1e6});
+      }
     }
     latest_ = std::move(times);
     frame.pending = false;
   }
+}
+
+void PassTimer::begin_step(std::string_view name) {
+  if (method_ == TimingMethod::CpuFinish) {
+    glFinish();
+    current_.back().steps.push_back({std::string(name), 0.0});
+    step_start_ = std::chrono::steady_clock::now();
+    return;
+  }
+  QueryPass& pass = frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1];
+  if (pass.steps_used == pass.steps.size()) pass.steps.push_back({{}, create_query(GL_TIMESTAMP), create_query(GL_TIMESTAMP)});
+  QueryStep& step = pass.steps[pass.steps_used++];
+  step.name = name;
+  glQueryCounter(step.begin.id(), GL_TIMESTAMP);
+}
+
+void PassTimer::end_step() {
+  if (method_ == TimingMethod::CpuFinish) {
+    glFinish();
+    current_.back().steps.back().milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - step_start_).count();
+    return;
+  }
+  const QueryPass& pass = frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1];
+  glQueryCounter(pass.steps[pass.steps_used - 1].end.id(), GL_TIMESTAMP);
+}
+
+PassTimer::Step::Step(std::string_view name) : timer_(t_stepping) {
+  if (!timer_) return;
+  t_stepping = nullptr;  // a step inside this one is not timed apart
+  timer_->begin_step(name);
+}
+
+PassTimer::Step::~Step() {
+  if (!timer_) return;
+  timer_->end_step();
+  t_stepping = timer_;
 }
 
 }  // namespace atrium::gfx

@@ -6,12 +6,16 @@
 // counts pipeline statistics (GL 4.6 or ARB_pipeline_statistics_query, llvmpipe
 // included), each pass also counts its fragment shader invocations: the
 // fragments it shaded, overdraw and helper invocations included. Either way
-// each pass also reports the CPU time spent issuing its commands.
+// each pass also reports the CPU time spent issuing its commands. With
+// time_steps() on, the steps a pass names inside itself (PassTimer::Step:
+// the light lists' count, scan and write, the occlusion culling's pyramid)
+// are timed too, by GL_TIMESTAMP queries or glFinish and the clock.
 #pragma once
 
 #include <array>
 #include <chrono>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "gfx/gl_object.hpp"
@@ -19,6 +23,12 @@
 namespace atrium::gfx {
 
 enum class TimingMethod { GpuQueries, CpuFinish };
+
+// A named part of a pass (PassTimer::Step), timed where time_steps() is on.
+struct StepTime {
+  std::string name;
+  double milliseconds = 0.0;
+};
 
 struct PassTime {
   std::string name;
@@ -28,6 +38,7 @@ struct PassTime {
   // issued (before any wait for the GPU). On llvmpipe this includes vertex
   // processing and binning, which run in the calling thread.
   double cpu_milliseconds = 0.0;
+  std::vector<StepTime> steps;  // in the order they ran; empty unless time_steps() is on
 };
 
 class PassTimer {
@@ -45,6 +56,26 @@ class PassTimer {
   void end_frame();
   void begin_pass(const std::string& name);
   void end_pass();
+
+  // Whether steps are timed (off by default: with glFinish timing each step
+  // adds two waits inside its pass).
+  void time_steps(bool on) { time_steps_ = on; }
+  [[nodiscard]] bool times_steps() const { return time_steps_; }
+
+  // A step of the pass running on this thread, timed for its scope where that
+  // pass's timer times steps (else nothing): code deep inside a pass names its
+  // parts without being handed the timer. Steps do not nest: one begun inside
+  // another is not timed apart.
+  class Step {
+   public:
+    explicit Step(std::string_view name);
+    ~Step();
+    Step(const Step&) = delete;
+    Step& operator=(const Step&) = delete;
+
+   private:
+    PassTimer* timer_ = nullptr;
+  };
 
   // The most recent frame whose timings are complete (with queries, a few
   // frames old), in pass order; empty until one is.
@@ -70,11 +101,17 @@ class PassTimer {
 
  private:
   static constexpr std::size_t kFramesInFlight = 4;
+  struct QueryStep {
+    std::string name;
+    Query begin, end;  // GL_TIMESTAMP
+  };
   struct QueryPass {
     std::string name;
     Query query;
     Query fragments;  // empty without pipeline statistics
     double cpu_milliseconds = 0.0;
+    std::vector<QueryStep> steps;
+    std::size_t steps_used = 0;
   };
   struct FrameQueries {
     std::vector<QueryPass> passes;
@@ -83,6 +120,8 @@ class PassTimer {
   };
 
   void collect();
+  void begin_step(std::string_view name);
+  void end_step();
 
   TimingMethod method_;
   bool counts_fragments_;
@@ -92,6 +131,8 @@ class PassTimer {
   std::vector<PassTime> current_;  // CpuFinish: the frame being timed
   std::chrono::steady_clock::time_point pass_start_;  // after the GPU went idle (CpuFinish) or the pass began
   std::vector<PassTime> latest_;
+  bool time_steps_ = false;
+  std::chrono::steady_clock::time_point step_start_;  // CpuFinish: after the GPU went idle
 };
 
 }  // namespace atrium::gfx

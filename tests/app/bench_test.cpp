@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "app/bench.hpp"
@@ -51,7 +53,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 32u);
+  ASSERT_EQ(header.size(), 33u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -69,6 +71,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[29], "cpu_systems");
   EXPECT_EQ(header[30], "pipelined_ms");
   EXPECT_EQ(header[31], "technique_variant");
+  EXPECT_EQ(header[32], "pass_steps");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -93,6 +96,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_LE(std::stod(f[24]), std::stod(f[7]) * 1.05) << "the passes fit in the frame";
     EXPECT_EQ(f[26], "") << "nothing skipped";
     EXPECT_EQ(f[28], "") << "neither mode has light lists";
+    EXPECT_EQ(f[32], "") << "steps are timed only with --pass-steps";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
@@ -124,7 +128,7 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
     std::istringstream csv(read_text(folder / "s.csv"));
     std::string line;
     std::getline(csv, line);
-    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant")) << line;
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps")) << line;
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     return rows;
@@ -170,7 +174,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 32u) << line;
+    ASSERT_EQ(f.size(), 33u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     // A pixel grid never has fewer tiles than 16x9 (32x18 pixels: 2-pixel tiles), each cut into 32 slices.
     if (f[0] == "clustered-forward") EXPECT_TRUE(f[28].starts_with("16x9x32 clusters, ")) << f[28];
@@ -224,6 +228,51 @@ using EfficiencyCounters = testing::GlTest;
 
 // A plane that fills the whole view from above, two lights whose radius covers
 // all of it and four whose radius reaches none of it.
+// --pass-steps: the steps a pass names are timed inside it, listed after it
+// in the table and as pass/step in the CSV, and never add up to more than the pass.
+TEST(BenchCommand, PassStepsAreTimedInsideTheirPasses) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_steps_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string command = std::string(ATRIUM_BINARY) +
+                              " bench --modes clustered-deferred,tiled-deferred --lights 40 --views 1 --size 32x18 --frames 1"
+                              " --warmup 0 --culling gpu --pass-steps --csv " + (folder / "s.csv").string() + " > " +
+                              (folder / "stdout.txt").string();
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+  std::istringstream csv(read_text(folder / "s.csv"));
+  std::string line;
+  std::getline(csv, line);
+  int rows = 0;
+  while (std::getline(csv, line)) {
+    const std::vector<std::string> f = csv_fields(line);
+    ASSERT_EQ(f.size(), 33u) << line;
+    std::map<std::string, double> passes, step_sums;
+    std::istringstream pass_list(f[14]), step_list(f[32]);
+    for (std::string item; std::getline(pass_list, item, ';');) passes[item.substr(0, item.find('='))] = std::stod(item.substr(item.find('=') + 1));
+    std::set<std::string> steps;
+    for (std::string item; std::getline(step_list, item, ';');) {
+      const std::string name = item.substr(0, item.find('='));
+      steps.insert(name);
+      step_sums[name.substr(0, name.find('/'))] += std::stod(item.substr(item.find('=') + 1));
+    }
+    const std::string assignment = f[0] == "tiled-deferred" ? "light culling" : "light assignment";
+    for (const char* step : {"/count", "/scan", "/write"}) EXPECT_TRUE(steps.contains(assignment + step)) << f[32];
+    EXPECT_TRUE(steps.contains(f[0] == "tiled-deferred" ? "light culling/bounds" : "light assignment/mark")) << f[32];
+    for (const char* step : {"geometry/first draws", "geometry/reveal", "geometry/revealed draws", "geometry/remember"}) {
+      EXPECT_TRUE(steps.contains(step)) << f[32];
+    }
+    for (const auto& [pass, sum] : step_sums) {
+      ASSERT_TRUE(passes.contains(pass)) << pass;
+      EXPECT_LE(sum, passes[pass] * 1.001 + 1e-3) << pass << ": its steps run inside it";
+    }
+    ++rows;
+  }
+  EXPECT_EQ(rows, 2);
+  const std::string md = read_text(folder / "stdout.txt");
+  EXPECT_NE(md.find("light assignment "), std::string::npos);
+  EXPECT_NE(md.find(" [mark "), std::string::npos) << md;
+  fs::remove_all(folder);
+}
+
 TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   assets::AssetManager manager;
   assets::MeshAsset plane;

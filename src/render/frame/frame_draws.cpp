@@ -2,6 +2,7 @@
 
 #include "assets/asset_manager.hpp"
 #include "components/frame_resources.hpp"
+#include "gfx/pass_timer.hpp"
 
 namespace atrium::render {
 
@@ -62,15 +63,25 @@ DrawResources FrameDraws::import_into(FrameGraph& graph) const {
 }
 
 void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& draw, GLuint depth, glm::ivec2 size) {
-  draw(list_.opaque, source_);
+  {
+    const gfx::PassTimer::Step step("first draws");
+    draw(list_.opaque, source_);
+  }
   // Once a frame: a debug view's own geometry pass draws the list as it stands.
   if (!occlusion_pending_) return;
   occlusion_pending_ = false;
   if (culling_.on_gpu) {
     // The same phases on the GPU: the revealed commands, then the shown ones
     // for every pass after this one.
-    gpu_culling_.reveal(depth, size);
-    draw(list_.opaque, {{}, gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed)});
+    {
+      const gfx::PassTimer::Step step("reveal");
+      gpu_culling_.reveal(depth, size);
+    }
+    {
+      const gfx::PassTimer::Step step("revealed draws");
+      draw(list_.opaque, {{}, gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed)});
+    }
+    const gfx::PassTimer::Step step("remember");
     gpu_culling_.remember(depth, size);
     active_phase_ = GpuOcclusionCulling::Phase::Shown;
     bind();

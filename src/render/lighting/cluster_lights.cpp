@@ -1,6 +1,7 @@
 #include "render/lighting/cluster_lights.hpp"
 
 #include "gfx/depth.hpp"
+#include "gfx/pass_timer.hpp"
 #include "render/frame/frame_draws.hpp"
 #include "render/lighting/cpu_light_lists.hpp"
 
@@ -84,7 +85,11 @@ void ClusterLights::assign(const render::PassResources& res, const render::Frame
     cpu_lists_.upload(bin_lights_in_clusters(frame.lights, frame.view, *grid_));
     return;
   }
-  const GLuint per_cluster = pixel_bounds_ || active_only_ ? mark_clusters(res, frame, targets, bind_positions) : 0;
+  GLuint per_cluster = 0;
+  if (pixel_bounds_ || active_only_) {
+    const gfx::PassTimer::Step step("mark");
+    per_cluster = mark_clusters(res, frame, targets, bind_positions);
+  }
   grid_->assign(*assign_, static_cast<std::uint32_t>(frame.lights.size()), per_cluster);
 }
 

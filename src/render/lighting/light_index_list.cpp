@@ -9,6 +9,7 @@
 #include "base/format.hpp"
 #include "gfx/gpu_waits.hpp"
 #include "gfx/limits.hpp"
+#include "gfx/pass_timer.hpp"
 
 namespace atrium::lighting {
 namespace {
@@ -204,13 +205,17 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
   // Blocks of 8x8 bins (kGatherGroup), per slice.
   const GLuint groups = ((shape_.x + 7) / 8) * ((shape_.y + 7) / 8) * shape_.z;
   auto dispatch_bins = [&] { glDispatchCompute(std::min(groups, kMaxGroups), (groups + kMaxGroups - 1) / kMaxGroups, 1); };
-  programs.gather.use();
-  programs.gather.set("u_bin_shape", shape_);
-  programs.gather.set("u_step", kStepCount);
-  dispatch_bins();
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  {
+    const gfx::PassTimer::Step step("count");
+    programs.gather.use();
+    programs.gather.set("u_bin_shape", shape_);
+    programs.gather.set("u_step", kStepCount);
+    dispatch_bins();
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   scan(programs);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  const gfx::PassTimer::Step step("write");
   programs.gather.use();
   programs.gather.set("u_step", kStepWrite);
   dispatch_bins();
@@ -223,6 +228,7 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
 }
 
 void LightIndexList::scan(const LightAssignmentPrograms& programs) const {
+  const gfx::PassTimer::Step step("scan");
   const GLuint blocks = (bins_ + kScanBlock - 1) / kScanBlock;
   auto dispatch_blocks = [&] { glDispatchCompute(std::min(blocks, kMaxGroups), (blocks + kMaxGroups - 1) / kMaxGroups, 1); };
   programs.scan.use();
@@ -248,6 +254,7 @@ void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPro
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   };
   if (light_groups > 0) {
+    const gfx::PassTimer::Step step("count");
     programs.scatter.use();
     programs.scatter.set("u_big_light", big_light_candidates(light_count, software_));
     programs.scatter.set("u_step", kStepCount);
@@ -259,11 +266,15 @@ void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPro
   scan(programs);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   if (light_groups > 0) {
-    programs.scatter.use();
-    programs.scatter.set("u_step", kStepWrite);
-    glDispatchCompute(light_groups, 1, 1);
-    large_lights(kStepWriteLarge);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    {
+      const gfx::PassTimer::Step step("write");
+      programs.scatter.use();
+      programs.scatter.set("u_step", kStepWrite);
+      glDispatchCompute(light_groups, 1, 1);
+      large_lights(kStepWriteLarge);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    const gfx::PassTimer::Step step("sort");
     const GLuint sort_groups = (bins_ + kSortGroupBins - 1) / kSortGroupBins;
     programs.sort_short.use();
     programs.sort_short.set("u_bins", bins_);

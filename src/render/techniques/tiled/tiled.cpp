@@ -2,6 +2,7 @@
 #include "render/techniques/tiled/tiled.hpp"
 
 #include "gfx/depth.hpp"
+#include "gfx/pass_timer.hpp"
 #include "render/frame/scene_passes.hpp"
 #include "render/lighting/cpu_light_lists.hpp"
 
@@ -35,10 +36,13 @@ void TiledTechnique::resize(const render::FrameTargets& targets) {
 }
 
 void TiledTechnique::assign_lights(lighting::LightIndexList& list, gfx::ShaderProgram& bounds, std::uint32_t light_count) {
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id());
-  bounds.use();
-  glDispatchCompute(tiles_.x, tiles_.y, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  {
+    const gfx::PassTimer::Step step("bounds");
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id());
+    bounds.use();
+    glDispatchCompute(tiles_.x, tiles_.y, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
   list.assign(light_count, *assign_, [&] { glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileBoundsBinding, tile_bounds_.id()); });
 }
 
