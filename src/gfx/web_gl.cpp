@@ -45,7 +45,7 @@
   X(glNamedBufferSubData) X(glNamedFramebufferDrawBuffer) X(glNamedFramebufferDrawBuffers) \
   X(glNamedFramebufferTexture) X(glPixelStorei) X(glPolygonOffset) X(glProgramUniform1f) X(glProgramUniform1i) \
   X(glProgramUniform1iv) X(glProgramUniform1ui) X(glProgramUniform2fv) X(glProgramUniform2uiv) X(glProgramUniform3uiv) X(glProgramUniform3fv) \
-  X(glProgramUniform4fv) X(glProgramUniform4iv) X(glProgramUniformMatrix3fv) X(glProgramUniformMatrix4fv) \
+  X(glProgramUniform4fv) X(glProgramUniform4iv) X(glProgramUniformMatrix3fv) X(glProgramUniformMatrix4fv) X(glQueryCounter) \
   X(glReadBuffer) X(glReadPixels) X(glSamplerParameterf) X(glSamplerParameteri) X(glScissor) X(glShaderSource) \
   X(glStencilFunc) X(glStencilMask) X(glStencilOp) X(glStencilOpSeparate) X(glTexImage2D) X(glTexImage2DMultisample) \
   X(glTexParameteri) X(glTexParameteriv) X(glTexStorage2D) X(glTexStorage2DMultisample) X(glTexSubImage2D) \
