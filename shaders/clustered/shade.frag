@@ -2,6 +2,8 @@
 // Clustered forward+ shading: after the depth pre-pass, each visible fragment
 // evaluates its material and only its cluster's lights.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/cluster_shading.glsl"
@@ -9,8 +11,6 @@
 #ifdef COUNT_LIGHTS
 layout(early_fragment_tests) in;
 #endif
-
-#include "common/mesh_interface.glsl"
 
 layout(location = 0) out vec4 out_color;
 

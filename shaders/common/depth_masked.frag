@@ -4,11 +4,11 @@
 // POSITION_ONLY and common/depth_only.frag): writes depth only, and discards
 // fragments below the cutoff, or they would hide (or shadow) what is behind holes.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/shading_depth.glsl"
-
-#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

@@ -7,6 +7,8 @@
 // SHOW_SHARED marks instead, in red over a dark veil, the pixels whose samples
 // show two surfaces or more (surface_groups): those the resolve shades more than once.
 #include "common/frame.glsl"
+// Before the SHOW_SHARED block, whose material.glsl includes it too, for visibility.glsl.
+#include "common/material_table.glsl"
 #ifdef SHOW_SHARED
 // Surfaces are rebuilt, not evaluated: no texture is sampled.
 #define EXPLICIT_GRADIENTS

@@ -3,12 +3,12 @@
 // it to the G-buffer (alpha-masked fragments below the cutoff are discarded).
 // Opaque and masked geometry only; blended geometry is drawn forward later.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #define GBUFFER_WRITE
 #include "common/gbuffer.glsl"
-
-#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

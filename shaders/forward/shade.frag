@@ -4,6 +4,8 @@
 // later-occluded fragments are shaded too). Writes linear HDR colour; the
 // deferred techniques draw blended geometry with it too.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/shading.glsl"
@@ -13,8 +15,6 @@
 #ifdef COUNT_LIGHTS
 layout(early_fragment_tests) in;
 #endif
-
-#include "common/mesh_interface.glsl"
 
 layout(location = 0) out vec4 out_color;
 

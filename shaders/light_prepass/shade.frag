@@ -6,6 +6,8 @@
 // only the visible fragment passes the test. With MSAA, PER_SAMPLE builds the
 // edge pixels' variant, which reads the light of each sample.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/lighting_targets.glsl"
@@ -14,8 +16,6 @@
 layout(binding = 5) uniform target2D u_light_diffuse;
 layout(binding = 6) uniform target2D u_light_specular_f0;
 layout(binding = 7) uniform target2D u_light_specular;
-
-#include "common/mesh_interface.glsl"
 
 void main() {
   count_fragment();

@@ -3,6 +3,8 @@
 // with its tile's lights from the blended list (assign.comp with BLENDED), whose
 // depth bounds span the glass in front of the opaque surfaces.
 #include "common/frame.glsl"
+// Before material.glsl, which includes it inside a conditional block.
+#include "common/mesh_interface.glsl"
 #include "common/material.glsl"
 #include "common/fragment_count.glsl"
 #include "common/tile_shading.glsl"
@@ -10,8 +12,6 @@
 #ifdef COUNT_LIGHTS
 layout(early_fragment_tests) in;
 #endif
-
-#include "common/mesh_interface.glsl"
 
 layout(location = 0) out vec4 out_color;
 

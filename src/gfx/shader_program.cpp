@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -93,10 +94,55 @@ std::string read_text(const fs::path& path) {
   return out.str();
 }
 
+// The directive a line opens with (`if`, `ifdef`, `else`, `endif`, ...), or empty.
+std::string_view directive(std::string_view line) {
+  std::size_t at = line.find_first_not_of(" \t");
+  if (at == std::string_view::npos || line[at] != '#') return {};
+  at = line.find_first_not_of(" \t", at + 1);
+  if (at == std::string_view::npos) return {};
+  line.remove_prefix(at);
+  return line.substr(0, line.find_first_not_of("abcdefghijklmnopqrstuvwxyz"));
+}
+
+// Files are pasted in where they are first included and left out after (the
+// GLSL preprocessor, which runs later, has no #pragma once). So a file first
+// included inside a conditional block is missing wherever that block compiled
+// out: a later #include outside the block is refused, naming both lines.
 struct Preprocessor {
   const ShaderSearchPath& path;
   PreprocessedShader result;
   std::set<std::string> included;
+  // The conditional blocks (#if..., each #elif and #else a block of its own)
+  // open at the current line, across the files being pasted, by number.
+  std::vector<int> blocks;
+  int next_block = 0;
+  struct FirstInclude {
+    std::vector<int> blocks;
+    std::string where;  // "file:line"
+  };
+  std::map<std::string, FirstInclude> first_includes;
+
+  void track_conditionals(std::string_view line) {
+    const std::string_view name = directive(line);
+    if (name == "if" || name == "ifdef" || name == "ifndef") {
+      blocks.push_back(next_block++);
+    } else if (name == "elif" || name == "else") {
+      if (!blocks.empty()) blocks.back() = next_block++;
+    } else if (name == "endif") {
+      if (!blocks.empty()) blocks.pop_back();
+    }
+  }
+
+  // Throws where `target`, included already, was first included inside a block this line is not in.
+  void check_included_here(const std::string& target, const std::string& where) const {
+    const auto first = first_includes.find(target);
+    if (first == first_includes.end()) return;
+    const std::vector<int>& outer = first->second.blocks;
+    if (outer.size() <= blocks.size() && std::equal(outer.begin(), outer.end(), blocks.begin())) return;
+    throw ShaderError(where + ": error: \"" + target + "\" is first included inside a conditional block (" + first->second.where +
+                      "), and a file is included once: where that block compiles out it is missing here too; include it "
+                      "before the block");
+  }
 
   // Appends `name` (a root-relative path) to result.text. `defines` is non-null for
   // the stage's main file only: they go right after its #version line.
@@ -115,14 +161,18 @@ struct Preprocessor {
       ++line_number;
       if (const auto included_name = include_target(line)) {
         const std::string target = resolve(name, *included_name, line_number);
+        const std::string where = name + ":" + std::to_string(line_number);
         if (!included.contains(target)) {
+          first_includes[target] = {blocks, where};
           append(target, nullptr);
           result.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(source_index) + "\n";
         } else {
+          check_included_here(target, where);
           result.text += "\n";
         }
         continue;
       }
+      track_conditionals(line);
       result.text += line + "\n";
       if (defines && line.rfind("#version", 0) == 0) {
         for (const auto& define : *defines) result.text += "#define " + define.name + " " + define.value + "\n";
@@ -188,7 +238,7 @@ std::vector<ShaderDefine> context_defines(const std::vector<ShaderDefine>& defin
 
 PreprocessedShader preprocess_shader(const ShaderSearchPath& path, const std::string& file,
                                      const std::vector<ShaderDefine>& defines) {
-  Preprocessor preprocessor{path, {}, {}};
+  Preprocessor preprocessor{path, {}, {}, {}, 0, {}};
   preprocessor.append(fs::path(file).lexically_normal().generic_string(), &defines);
   return std::move(preprocessor.result);
 }

@@ -52,6 +52,36 @@ TEST_F(ShaderFiles, IncludesAreResolvedOnceAndDefinesFollowTheVersionLine) {
   EXPECT_NE(load_error({"main.vert", "main.frag"}).find("main.frag:9:"), std::string::npos);
 }
 
+// A file is pasted in once, where it is first included: first included inside
+// a conditional block, it is missing wherever that block compiles out, and a
+// later #include outside the block is refused naming both lines. Inside the
+// same block (or a block within it) a second #include is fine.
+TEST_F(ShaderFiles, AFileFirstIncludedInsideAConditionalIsNotIncludedOutsideIt) {
+  write("lib/helper.glsl", "float helper() { return 0.5; }\n");
+  write("lib/user.glsl", "#include \"helper.glsl\"\nfloat user() { return helper(); }\n");
+  write("main.vert", kVertex);
+  write("trap.frag",
+        "#version 450 core\n#ifdef FANCY\n#include \"lib/helper.glsl\"\n#endif\n#include \"lib/user.glsl\"\nout vec4 c;\n"
+        "void main() { c = vec4(user()); }\n");
+  EXPECT_EQ(load_error({"main.vert", "trap.frag"}),
+            "lib/user.glsl:1: error: \"lib/helper.glsl\" is first included inside a conditional block (trap.frag:3), and a file is "
+            "included once: where that block compiles out it is missing here too; include it before the block");
+  // An #else is a block of its own.
+  write("branches.frag",
+        "#version 450 core\n#ifdef FANCY\n#include \"lib/helper.glsl\"\n#else\n#include \"lib/user.glsl\"\n#endif\n"
+        "out vec4 c;\nvoid main() { c = vec4(0.0); }\n");
+  EXPECT_NE(load_error({"main.vert", "branches.frag"}).find("lib/user.glsl:1: error:"), std::string::npos);
+  // Included again inside the block it was first included in, or first included outside any: loads.
+  write("inside.frag",
+        "#version 450 core\n#include \"lib/helper.glsl\"\n#if 1\n#include \"lib/user.glsl\"\n#endif\nout vec4 c;\n"
+        "void main() { c = vec4(user()); }\n");
+  EXPECT_EQ(load_error({"main.vert", "inside.frag"}), "(no error)");
+  write("nested.frag",
+        "#version 450 core\n#ifndef PLAIN\n#include \"lib/helper.glsl\"\n  #  if 1\n#include \"lib/user.glsl\"\n#endif\n"
+        "out vec4 c;\nvoid main() { c = vec4(user()); }\n#else\nout vec4 c;\nvoid main() { c = vec4(1.0); }\n#endif\n");
+  EXPECT_EQ(load_error({"main.vert", "nested.frag"}), "(no error)");
+}
+
 TEST_F(ShaderFiles, CompileErrorsNameTheIncludedFileAndLine) {
   write("lib/bad.glsl", "// a helper\nfloat ok() { return 1.0; }\n\nfloat broken() { return nope; }\n");
   write("main.frag", "#version 450 core\n#include \"lib/bad.glsl\"\nout vec4 c;\nvoid main() { c = vec4(ok()); }\n");
