@@ -63,7 +63,9 @@ done
 # the driver without them. run.sh puts them on the path only where the dynamic
 # linker finds no libEGL.so.1 of the machine's own.
 for name in libEGL.so.1 libOpenGL.so.0 libGL.so.1 libGLX.so.0 libGLdispatch.so.0; do
-  path=$({ ldconfig -p 2>/dev/null || /sbin/ldconfig -p; } | awk -v n="$name" '$1 == n && /x86-64/ { print $NF; exit }')
+  # awk reads to the end: leaving at the first match can end ldconfig by
+  # SIGPIPE, which pipefail turns into a silent exit of this script.
+  path=$({ ldconfig -p 2>/dev/null || /sbin/ldconfig -p; } | awk -v n="$name" '!found && $1 == n && /x86-64/ { print $NF; found = 1 }')
   [ -n "$path" ] || { echo "gpu-kit: this machine has no $name (Debian: apt-get install libegl1 libopengl0 libgl1)" >&2; exit 1; }
   cp -L "$path" "$kit/glvnd/$name"
 done

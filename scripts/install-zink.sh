@@ -23,7 +23,9 @@ echo "install-zink: fetching Mesa from bookworm-backports into $prefix" >&2
 apt-get "${apt_options[@]}" update -qq
 packages=(mesa-libgallium libgl1-mesa-dri libegl-mesa0 libgbm1 mesa-vulkan-drivers libdrm2 libdrm-amdgpu1 libdrm-intel1)
 # The LLVM that backports' Mesa was built against, where the system lacks it.
-llvm=$(apt-cache "${apt_options[@]}" show mesa-libgallium | sed -n 's/^Depends:.*\(libllvm[0-9]*\).*/\1/p' | head -n 1)
+# (awk reads to the end: a reader that leaves early can end apt-cache by SIGPIPE, and pipefail this script.)
+llvm=$(apt-cache "${apt_options[@]}" show mesa-libgallium |
+       awk '!found && /^Depends:/ && match($0, /libllvm[0-9]+/) { print substr($0, RSTART, RLENGTH); found = 1 }')
 if [ -n "$llvm" ] && ! dpkg-query -W -f='${Status}' "$llvm" 2>/dev/null | grep -q "install ok installed"; then packages+=("$llvm"); fi
 dpkg-query -W -f='${Status}' libvulkan1 2>/dev/null | grep -q "install ok installed" || packages+=(libvulkan1)
 (cd "$work/debs" && apt-get "${apt_options[@]}" download "${packages[@]}" >&2 || true)

@@ -28,7 +28,9 @@ out=$(cd "$1" && pwd)
 
 export LD_LIBRARY_PATH="$kit/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 # A machine with the driver but not glvnd (the lent GPU machines) takes the kit's loaders.
-if ! { ldconfig -p || /sbin/ldconfig -p; } 2>/dev/null | grep -q 'libEGL\.so\.1 '; then
+# (Here and below grep reads to the end, without -q: a reader that leaves early
+# can end the writer by SIGPIPE, which pipefail turns into "no match".)
+if ! { ldconfig -p || /sbin/ldconfig -p; } 2>/dev/null | grep 'libEGL\.so\.1 ' >/dev/null; then
   echo "run.sh: no libEGL.so.1 on this machine: using the kit's glvnd loaders" >&2
   LD_LIBRARY_PATH="$kit/glvnd:$LD_LIBRARY_PATH"
 fi
@@ -173,7 +175,7 @@ done
 # resolve. Equal light evaluations per pixel (the heatmap's count) say every
 # pixel was shaded.
 firsts=(clustered-deferred:auto visibility-buffer:bound)
-"$atrium" info 2>/dev/null | grep -q "materials bindless" && firsts+=(visibility-buffer:bindless)
+"$atrium" info 2>/dev/null | grep "materials bindless" >/dev/null && firsts+=(visibility-buffer:bindless)
 for first in "${firsts[@]}"; do
   mode=${first%%:*} binding=${first#*:}
   step "first mode $first" 20 "$out/.first-$mode-$binding.txt" "$atrium" render --mode "$mode" --material-binding "$binding" \
@@ -261,7 +263,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   echo "- steps that failed: ${failed[*]:-none}"
   [ -n "$gpu_lost" ] && echo "- stopped early: $gpu_lost"
   grep "^== GPU state" "$log" | sed 's/^== /- /'
-  if command -v dmesg >/dev/null && dmesg 2>/dev/null | grep -q "NVRM: Xid"; then
+  if command -v dmesg >/dev/null && dmesg 2>/dev/null | grep "NVRM: Xid" >/dev/null; then
     echo "- the driver logged GPU faults (dmesg, NVRM Xid): $(dmesg 2>/dev/null | grep "NVRM: Xid" | tail -n 3 | tr '\n' ' ')"
   fi
   [ -n "$plot_note" ] && echo "- $plot_note"
