@@ -185,7 +185,10 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   row.draw_calls = world.renderer().stats().draw_calls;
   for (const std::string& name : pass_order) {
     row.pass_medians.push_back({name, percentile(pass_ms[name], 0.5), 0, percentile(pass_cpu_ms[name], 0.5), {}});
-    for (const std::string& step : step_order[name]) row.pass_medians.back().steps.push_back({step, percentile(step_ms[{name, step}], 0.5)});
+    for (const std::string& step : step_order[name]) {
+      const std::vector<double>& times = step_ms[{name, step}];
+      row.pass_medians.back().steps.push_back({step, percentile(times, 0.5), times.size(), pass_ms[name].size()});
+    }
   }
   for (const std::string& name : system_order) row.system_medians.push_back({name, percentile(system_ms[name], 0.5)});
   // Counting costs one more frame: not for a mode already over the limit.
@@ -431,7 +434,8 @@ std::string bench_markdown(const BenchResult& result) {
         "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
         "in one frame that could wait for the GPU; pipelined is the frame with frames submitted back to back, one frame's CPU work "
         "overlapping the GPU's of the one before, as in a window; systems are the CPU time of those over 0.05 ms, the renderer's including its "
-        "passes' submission; in brackets after a pass, with --pass-steps, the steps it names):\n\n"
+        "passes' submission; in brackets after a pass, with --pass-steps, the steps it names, a step that ran in some of the frames "
+        "only with its median over those):\n\n"
         "| mode | lights | view | median | p5 | p95 | fps | pipelined | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists | systems (CPU, median) |\n"
         "|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const BenchRow& row : result.rows) {
@@ -439,7 +443,10 @@ std::string bench_markdown(const BenchResult& result) {
     for (const auto& pass : row.pass_medians) {
       passes += (passes.empty() ? "" : ", ") + pass.name + " " + fixed(pass.milliseconds, 2);
       std::string steps;
-      for (const gfx::StepTime& step : pass.steps) steps += (steps.empty() ? "" : ", ") + step.name + " " + fixed(step.milliseconds, 2);
+      for (const gfx::StepTime& step : pass.steps) {
+        steps += (steps.empty() ? "" : ", ") + step.name + " " + fixed(step.milliseconds, 2);
+        if (step.frames < step.pass_frames) steps += " (" + std::to_string(step.frames) + " of " + std::to_string(step.pass_frames) + " frames)";
+      }
       if (!steps.empty()) passes += " [" + steps + "]";
     }
     if (!row.refused.empty()) passes = "refused: " + row.refused;
@@ -469,12 +476,13 @@ std::string bench_csv(const BenchResult& result) {
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
-    std::string pass_steps;  // "pass/step=ms;..."
+    std::string pass_steps;  // "pass/step=ms;...", "=ms@N/M" for a step that ran in N of the pass's M frames
     for (const auto& pass : row.pass_medians) {
       passes += (passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.milliseconds, 4);
       cpu_passes += (cpu_passes.empty() ? "" : ";") + pass.name + "=" + fixed(pass.cpu_milliseconds, 4);
       for (const gfx::StepTime& step : pass.steps) {
         pass_steps += (pass_steps.empty() ? "" : ";") + pass.name + "/" + step.name + "=" + fixed(step.milliseconds, 4);
+        if (step.frames < step.pass_frames) pass_steps += "@" + std::to_string(step.frames) + "/" + std::to_string(step.pass_frames);
       }
     }
     std::string cpu_systems;

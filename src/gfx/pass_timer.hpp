@@ -28,6 +28,10 @@ enum class TimingMethod { GpuQueries, CpuFinish };
 struct StepTime {
   std::string name;
   double milliseconds = 0.0;
+  // Where this is a median over frames (bench): how many of them ran the step,
+  // of how many ran its pass. A step that runs in some frames only (the sort
+  // of a frame whose lists were scattered) is its median over those.
+  std::size_t frames = 1, pass_frames = 1;
 };
 
 struct PassTime {

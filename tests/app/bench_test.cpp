@@ -273,6 +273,25 @@ TEST(BenchCommand, PassStepsAreTimedInsideTheirPasses) {
   fs::remove_all(folder);
 }
 
+// A step that ran in some of the measured frames only (the sort of a frame
+// whose lists were scattered, when auto chose gather for the others) is its
+// median over those frames, and the table and the CSV say how many.
+TEST(BenchTables, AStepThatRanInSomeFramesSaysInHowMany) {
+  BenchResult result;
+  result.options.frames = 3;
+  BenchRow& row = result.rows.emplace_back();
+  row.mode = "tiled-deferred";
+  row.lights = 1024;
+  gfx::PassTime& pass = row.pass_medians.emplace_back();
+  pass.name = "light culling";
+  pass.milliseconds = 82.5;
+  pass.steps = {{"count", 17.5, 3, 3}, {"sort", 264.0, 1, 3}};
+  const std::string md = bench_markdown(result);
+  EXPECT_NE(md.find("light culling 82.50 [count 17.50, sort 264.00 (1 of 3 frames)]"), std::string::npos) << md;
+  const std::string csv = bench_csv(result);
+  EXPECT_NE(csv.find("\"light culling/count=17.5000;light culling/sort=264.0000@1/3\""), std::string::npos) << csv;
+}
+
 TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   assets::AssetManager manager;
   assets::MeshAsset plane;
