@@ -150,10 +150,13 @@ OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& dept
 }
 
 void write_depth_tiles(gfx::ShaderLibrary& shaders, GLuint depth, glm::ivec2 tiles, GLuint buffer) {
-  shaders.get({"culling/depth_tiles.comp"}).use();
+  gfx::ShaderProgram& program = shaders.get({"culling/depth_tiles.comp"});
+  program.use();
+  program.set("u_tiles", glm::uvec2(tiles));
   glBindTextureUnit(kDepthTextureUnit, depth);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStorageBinding, buffer);
-  glDispatchCompute(static_cast<GLuint>(tiles.x), static_cast<GLuint>(tiles.y), 1);
+  // 8 tiles side by side per work group.
+  glDispatchCompute(static_cast<GLuint>(tiles.x + 7) / 8, static_cast<GLuint>(tiles.y), 1);
   glBindTextureUnit(kDepthTextureUnit, 0);
 }
 

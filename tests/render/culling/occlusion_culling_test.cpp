@@ -5,9 +5,12 @@
 // after the camera jumps (when what the last frame showed says little).
 #include "render/culling/occlusion_culling.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -15,6 +18,11 @@
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/depth.hpp"
+#include "gfx/gl_object.hpp"
+#include "gfx/gpu_waits.hpp"
+#include "gfx/shader_library.hpp"
+#include "render/binding_slots.hpp"
+#include "render/frame/frame_uniforms.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
 
@@ -158,6 +166,62 @@ INSTANTIATE_TEST_SUITE_P(Device, OcclusionCulling, ::testing::Values(CullingDevi
                          [](const ::testing::TestParamInfo<CullingDevice>& info) {
                            return info.param == CullingDevice::Cpu ? std::string("Cpu") : std::string("Gpu");
                          });
+
+// The pyramid's finest level (culling/depth_tiles.comp), against a loop over
+// the pixels: each 8x8 tile holds the farthest view depth of its pixels,
+// infinity where one shows the background, tiles cut by the viewport's edge
+// only the pixels inside it (70x45: 9x6 tiles, the last column 6 pixels wide,
+// the last row 5 high; two work groups of 8 tiles across, the second mostly
+// past the edge).
+using DepthTiles = testing::GlTest;
+
+TEST_F(DepthTiles, HoldTheFarthestViewDepthOfTheirPixelsUpToTheViewportsEdge) {
+  constexpr glm::ivec2 kViewport{70, 45};
+  constexpr float kNear = 0.1f, kFar = 100.0f;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<float> depth_of(0.001f, 1.0f);
+  std::vector<float> depth(static_cast<std::size_t>(kViewport.x * kViewport.y));
+  for (float& d : depth) d = depth_of(random);
+  depth[static_cast<std::size_t>(20 * kViewport.x + 33)] = gfx::kDepthFar;  // background in tile (4, 2)
+  gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
+  glTextureStorage2D(texture.id(), 1, GL_DEPTH_COMPONENT32F, kViewport.x, kViewport.y);
+  glTextureSubImage2D(texture.id(), 0, 0, 0, kViewport.x, kViewport.y, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+
+  render::FrameUniforms frame{};
+  frame.viewport_size = glm::vec2(kViewport);
+  frame.near_plane = kNear;
+  frame.far_plane = kFar;
+  gfx::Buffer uniforms = gfx::create_buffer();
+  glNamedBufferStorage(uniforms.id(), sizeof frame, &frame, 0);
+  glBindBufferBase(GL_UNIFORM_BUFFER, render::kFrameUniformBinding, uniforms.id());
+  const glm::ivec2 tiles = (kViewport + 7) / 8;
+  const auto count = static_cast<std::size_t>(tiles.x * tiles.y);
+  gfx::Buffer out = gfx::create_buffer();
+  glNamedBufferStorage(out.id(), static_cast<GLsizeiptr>(count * sizeof(float)), nullptr, 0);
+  gfx::ShaderLibrary shaders;
+  render::write_depth_tiles(shaders, texture.id(), tiles, out.id());
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<float> farthest(count);
+  gfx::read_buffer(out.id(), 0, static_cast<GLsizeiptr>(count * sizeof(float)), farthest.data());
+  glUseProgram(0);
+
+  for (int ty = 0; ty < tiles.y; ++ty) {
+    for (int tx = 0; tx < tiles.x; ++tx) {
+      float smallest = gfx::kDepthNear;
+      for (int y = ty * 8; y < std::min(ty * 8 + 8, kViewport.y); ++y) {
+        for (int x = tx * 8; x < std::min(tx * 8 + 8, kViewport.x); ++x) smallest = std::min(smallest, depth[static_cast<std::size_t>(y * kViewport.x + x)]);
+      }
+      const float expected = smallest <= gfx::kDepthFar ? kInfinity : kNear * kFar / (kNear + smallest * (kFar - kNear));
+      const float got = farthest[static_cast<std::size_t>(ty * tiles.x + tx)];
+      if (std::isinf(expected)) {
+        EXPECT_TRUE(std::isinf(got)) << "tile " << tx << "," << ty;
+      } else {
+        EXPECT_NEAR(got, expected, expected * 1e-5f) << "tile " << tx << "," << ty;
+      }
+    }
+  }
+  EXPECT_TRUE(std::isinf(farthest[static_cast<std::size_t>(2 * tiles.x + 4)])) << "the tile with a background pixel";
+}
 
 // The GPU's box test is the CPU's twin: from the same depth both leave out the
 // same triangles, view after view, and the GPU's frame reads nothing back.
