@@ -139,6 +139,11 @@ void PassTimer::collect() {
   }
 }
 
+PassTimer::QueryPass& PassTimer::open_pass() {
+  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  return frame.passes[frame.used - 1];
+}
+
 void PassTimer::begin_step(std::string_view name) {
   if (method_ == TimingMethod::CpuFinish) {
     glFinish();
@@ -146,7 +151,7 @@ void PassTimer::begin_step(std::string_view name) {
     step_start_ = std::chrono::steady_clock::now();
     return;
   }
-  QueryPass& pass = frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1];
+  QueryPass& pass = open_pass();
   if (pass.steps_used == pass.steps.size()) pass.steps.push_back({{}, create_query(GL_TIMESTAMP), create_query(GL_TIMESTAMP)});
   QueryStep& step = pass.steps[pass.steps_used++];
   step.name = name;
@@ -159,7 +164,7 @@ void PassTimer::end_step() {
     current_.back().steps.back().milliseconds = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - step_start_).count();
     return;
   }
-  const QueryPass& pass = frames_[frame_ % kFramesInFlight].passes[frames_[frame_ % kFramesInFlight].used - 1];
+  const QueryPass& pass = open_pass();
   glQueryCounter(pass.steps[pass.steps_used - 1].end.id(), GL_TIMESTAMP);
 }
 

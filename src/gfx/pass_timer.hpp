@@ -124,6 +124,8 @@ class PassTimer {
   };
 
   void collect();
+  // GpuQueries: the pass begun last in the frame being recorded (a step's).
+  QueryPass& open_pass();
   void begin_step(std::string_view name);
   void end_step();
 

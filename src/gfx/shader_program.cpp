@@ -4,7 +4,6 @@
 #include <fstream>
 #include <map>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <string_view>
 
@@ -23,16 +22,23 @@ ShaderSearchPath default_shader_path() {
 
 namespace {
 
+// The directive a line opens with (`if`, `ifdef`, `include`, ...), a view
+// into `line`, or empty.
+std::string_view directive(std::string_view line) {
+  std::size_t at = line.find_first_not_of(" \t");
+  if (at == std::string_view::npos || line[at] != '#') return {};
+  at = line.find_first_not_of(" \t", at + 1);
+  if (at == std::string_view::npos) return {};
+  line.remove_prefix(at);
+  return line.substr(0, line.find_first_not_of("abcdefghijklmnopqrstuvwxyz"));
+}
+
 // The quoted name of an `#include "name"` line, or nullopt for any other line.
 std::optional<std::string> include_target(std::string_view line) {
-  auto skip_space = [&] { while (!line.empty() && (line.front() == ' ' || line.front() == '\t')) line.remove_prefix(1); };
-  skip_space();
-  if (!line.starts_with('#')) return std::nullopt;
-  line.remove_prefix(1);
-  skip_space();
-  if (!line.starts_with("include")) return std::nullopt;
-  line.remove_prefix(7);
-  skip_space();
+  const std::string_view name = directive(line);
+  if (name != "include") return std::nullopt;
+  line.remove_prefix(static_cast<std::size_t>(name.data() - line.data()) + name.size());
+  line.remove_prefix(std::min(line.find_first_not_of(" \t"), line.size()));
   if (!line.starts_with('"')) return std::nullopt;
   const auto close = line.find('"', 1);
   if (close == std::string_view::npos) return std::nullopt;
@@ -94,16 +100,6 @@ std::string read_text(const fs::path& path) {
   return out.str();
 }
 
-// The directive a line opens with (`if`, `ifdef`, `else`, `endif`, ...), or empty.
-std::string_view directive(std::string_view line) {
-  std::size_t at = line.find_first_not_of(" \t");
-  if (at == std::string_view::npos || line[at] != '#') return {};
-  at = line.find_first_not_of(" \t", at + 1);
-  if (at == std::string_view::npos) return {};
-  line.remove_prefix(at);
-  return line.substr(0, line.find_first_not_of("abcdefghijklmnopqrstuvwxyz"));
-}
-
 // Files are pasted in where they are first included and left out after (the
 // GLSL preprocessor, which runs later, has no #pragma once). So a file first
 // included inside a conditional block is missing wherever that block compiled
@@ -111,16 +107,17 @@ std::string_view directive(std::string_view line) {
 struct Preprocessor {
   const ShaderSearchPath& path;
   PreprocessedShader result;
-  std::set<std::string> included;
   // The conditional blocks (#if..., each #elif and #else a block of its own)
   // open at the current line, across the files being pasted, by number.
   std::vector<int> blocks;
   int next_block = 0;
+  // Each file pasted in, with the blocks open where it was first included
+  // (none for the stage's main file).
   struct FirstInclude {
     std::vector<int> blocks;
     std::string where;  // "file:line"
   };
-  std::map<std::string, FirstInclude> first_includes;
+  std::map<std::string, FirstInclude> included;
 
   void track_conditionals(std::string_view line) {
     const std::string_view name = directive(line);
@@ -135,8 +132,8 @@ struct Preprocessor {
 
   // Throws where `target`, included already, was first included inside a block this line is not in.
   void check_included_here(const std::string& target, const std::string& where) const {
-    const auto first = first_includes.find(target);
-    if (first == first_includes.end()) return;
+    const auto first = included.find(target);
+    if (first == included.end()) return;
     const std::vector<int>& outer = first->second.blocks;
     if (outer.size() <= blocks.size() && std::equal(outer.begin(), outer.end(), blocks.begin())) return;
     throw ShaderError(where + ": error: \"" + target + "\" is first included inside a conditional block (" + first->second.where +
@@ -149,7 +146,7 @@ struct Preprocessor {
   void append(const std::string& name, const std::vector<ShaderDefine>* defines) {
     const auto source_index = static_cast<int>(result.files.size());
     result.files.push_back(name);
-    included.insert(name);
+    included.try_emplace(name);
     const std::optional<fs::path> found = find(name);
     if (!found) throw ShaderError(name + ": cannot open shader file (looked in " + describe_path() + ")");
     const std::string text = read_text(*found);
@@ -163,7 +160,7 @@ struct Preprocessor {
         const std::string target = resolve(name, *included_name, line_number);
         const std::string where = name + ":" + std::to_string(line_number);
         if (!included.contains(target)) {
-          first_includes[target] = {blocks, where};
+          included[target] = {blocks, where};
           append(target, nullptr);
           result.text += "#line " + std::to_string(line_number + 1) + " " + std::to_string(source_index) + "\n";
         } else {
@@ -238,7 +235,7 @@ std::vector<ShaderDefine> context_defines(const std::vector<ShaderDefine>& defin
 
 PreprocessedShader preprocess_shader(const ShaderSearchPath& path, const std::string& file,
                                      const std::vector<ShaderDefine>& defines) {
-  Preprocessor preprocessor{path, {}, {}, {}, 0, {}};
+  Preprocessor preprocessor{path, {}, {}, 0, {}};
   preprocessor.append(fs::path(file).lexically_normal().generic_string(), &defines);
   return std::move(preprocessor.result);
 }
