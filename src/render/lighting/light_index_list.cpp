@@ -24,6 +24,11 @@ constexpr std::uint32_t kScanReduce = 0, kScanBlocks = 1, kScanWrite = 2;
 // LongBins in shaders/common/light_list_sort.glsl and BigLights in
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
 constexpr std::size_t kListHeader = 4;
+
+// `groups` work groups in rows of at most kMaxGroups (a dispatch's limit on an
+// axis); the shaders number a group y * groups-per-row + x.
+void dispatch_in_rows(GLuint groups) { glDispatchCompute(std::min(groups, kMaxGroups), (groups + kMaxGroups - 1) / kMaxGroups, 1); }
+
 constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
 // Where the resets buffer keeps an empty list's header, after the total's start.
 constexpr GLintptr kResetListOffset = 32;
@@ -204,13 +209,12 @@ void LightIndexList::run(std::uint32_t light_count, const LightAssignmentProgram
 void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentPrograms& programs) {
   // Blocks of 8x8 bins (kGatherGroup), per slice.
   const GLuint groups = ((shape_.x + 7) / 8) * ((shape_.y + 7) / 8) * shape_.z;
-  auto dispatch_bins = [&] { glDispatchCompute(std::min(groups, kMaxGroups), (groups + kMaxGroups - 1) / kMaxGroups, 1); };
   {
     const gfx::PassTimer::Step step("count");
     programs.gather.use();
     programs.gather.set("u_bin_shape", shape_);
     programs.gather.set("u_step", kStepCount);
-    dispatch_bins();
+    dispatch_in_rows(groups);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
   scan(programs);
@@ -218,7 +222,7 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
   const gfx::PassTimer::Step step("write");
   programs.gather.use();
   programs.gather.set("u_step", kStepWrite);
-  dispatch_bins();
+  dispatch_in_rows(groups);
   // Only a frame whose demand did not fit lists its lights as overflowed (each invocation checks).
   const GLuint light_groups = (light_count + kScatterGroup - 1) / kScatterGroup;
   if (light_groups > 0) {
@@ -230,17 +234,16 @@ void LightIndexList::gather(std::uint32_t light_count, const LightAssignmentProg
 void LightIndexList::scan(const LightAssignmentPrograms& programs) const {
   const gfx::PassTimer::Step step("scan");
   const GLuint blocks = (bins_ + kScanBlock - 1) / kScanBlock;
-  auto dispatch_blocks = [&] { glDispatchCompute(std::min(blocks, kMaxGroups), (blocks + kMaxGroups - 1) / kMaxGroups, 1); };
   programs.scan.use();
   programs.scan.set("u_bins", bins_);
   programs.scan.set("u_step", kScanReduce);
-  dispatch_blocks();
+  dispatch_in_rows(blocks);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   programs.scan.set("u_step", kScanBlocks);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   programs.scan.set("u_step", kScanWrite);
-  dispatch_blocks();
+  dispatch_in_rows(blocks);
 }
 
 void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPrograms& programs) {
@@ -278,7 +281,7 @@ void LightIndexList::scatter(std::uint32_t light_count, const LightAssignmentPro
     const GLuint sort_groups = (bins_ + kSortGroupBins - 1) / kSortGroupBins;
     programs.sort_short.use();
     programs.sort_short.set("u_bins", bins_);
-    glDispatchCompute(std::min(sort_groups, kMaxGroups), (sort_groups + kMaxGroups - 1) / kMaxGroups, 1);
+    dispatch_in_rows(sort_groups);
     // The long lists, as many work groups as the scan found (no read-back).
     programs.sort_long.use();
     glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, long_bins_.id());
