@@ -1,6 +1,7 @@
 #include "app/probe.hpp"
 
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 #include <numeric>
 #include <utility>
@@ -9,6 +10,17 @@
 
 namespace atrium {
 namespace {
+
+// printf onto the end of text; the attribute has the compiler check each
+// format string against its arguments.
+[[gnu::format(printf, 2, 3)]] void append(std::string& text, const char* format, ...) {
+  char line[512];
+  std::va_list values;
+  va_start(values, format);
+  std::vsnprintf(line, sizeof line, format, values);
+  va_end(values);
+  text += line;
+}
 
 double gflops(const gfx::StageProbeResult& r, const gfx::StageReach& reach) {
   return reach.milliseconds > 0 ? r.flops() / (reach.milliseconds * 1e6) : 0.0;
@@ -26,28 +38,23 @@ double busiest_share(const gfx::StageReach& reach) {
 
 std::string format_probe_text(const gfx::StageProbeResult& r, const std::string& renderer) {
   std::string text;
-  char line[512];
-  auto add = [&](const char* format, auto... values) {
-    std::snprintf(line, sizeof line, format, values...);
-    text += line;
-  };
-  add("gpu          %s\n", renderer.c_str());
+  append(text, "gpu          %s\n", renderer.c_str());
   if (r.sm_ids) {
-    add("SMs          %u (GL_SM_COUNT_NV), warps of %u threads, %u warps per SM\n", r.sm_count, r.warp_size, r.warps_per_sm);
+    append(text, "SMs          %u (GL_SM_COUNT_NV), warps of %u threads, %u warps per SM\n", r.sm_count, r.warp_size, r.warps_per_sm);
   } else {
-    add("SMs          not reported: the driver has no GL_NV_shader_thread_group (NVIDIA's); times only\n");
+    append(text, "SMs          not reported: the driver has no GL_NV_shader_thread_group (NVIDIA's); times only\n");
   }
-  add("work         %dx%d pixels, %u iterations of 8 multiply-adds (%.2f Gflop a pass), median of %u runs, %s\n", r.size.x, r.size.y,
+  append(text, "work         %dx%d pixels, %u iterations of 8 multiply-adds (%.2f Gflop a pass), median of %u runs, %s\n", r.size.x, r.size.y,
       r.iterations, r.flops() / 1e9, r.runs, r.timing.c_str());
   for (const auto& [name, reach] : {std::pair{"compute ", &r.compute}, std::pair{"fragment", &r.fragment}}) {
-    add("%s     %.3f ms, %.0f Gflop/s", name, reach->milliseconds, gflops(r, *reach));
+    append(text, "%s     %.3f ms, %.0f Gflop/s", name, reach->milliseconds, gflops(r, *reach));
     if (r.sm_ids) {
-      add("; ran on %u of %u SMs, the busiest running %.1f%% of the invocations", reach->sms_reached(), r.sm_count,
+      append(text, "; ran on %u of %u SMs, the busiest running %.1f%% of the invocations", reach->sms_reached(), r.sm_count,
           100.0 * busiest_share(*reach));
     }
     text += "\n";
   }
-  if (r.compute.milliseconds > 0) add("ratio        fragment time / compute time: %.2f\n", r.fragment.milliseconds / r.compute.milliseconds);
+  if (r.compute.milliseconds > 0) append(text, "ratio        fragment time / compute time: %.2f\n", r.fragment.milliseconds / r.compute.milliseconds);
   return text;
 }
 
