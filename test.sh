@@ -16,9 +16,11 @@ flags=(-DCMAKE_BUILD_TYPE=Release)
 skip=()
 case "${1:-}" in
   # -O1 -g1, as the sanitizers' authors advise: line tables are all a report
-  # needs, and the build takes about 40% less time than at -O2 -g.
+  # needs, and the build takes about 40% less time than at -O2 -g. Built by
+  # clang, the fuzzers' compiler, in half the time gcc takes (316 s against
+  # 626 s on the 2-core machine, with the same tests passing).
   --sanitize) build=build-sanitize
-    flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
+    flags=(-DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=RelWithDebInfo "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG" "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g1 -DNDEBUG"
            -DATRIUM_SANITIZE=ON -DATRIUM_BUILD_BENCH=OFF)
     # What the sanitized run leaves out (about 1,000 s of test time under ASan), and
     # where the same C++ runs sanitized instead. Sanitizers find memory and undefined
