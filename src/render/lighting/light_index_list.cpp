@@ -24,14 +24,13 @@ constexpr std::uint32_t kScanReduce = 0, kScanBlocks = 1, kScanWrite = 2;
 // LongBins in shaders/common/light_list_sort.glsl and BigLights in
 // light_scatter.glsl: the dispatch's size, then the count, then the list.
 constexpr std::size_t kListHeader = 4;
+constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
+// Where the resets buffer keeps an empty list's header, after the total's start.
+constexpr GLintptr kResetListOffset = 32;
 
 // `groups` work groups in rows of at most kMaxGroups (a dispatch's limit on an
 // axis); the shaders number a group y * groups-per-row + x.
 void dispatch_in_rows(GLuint groups) { glDispatchCompute(std::min(groups, kMaxGroups), (groups + kMaxGroups - 1) / kMaxGroups, 1); }
-
-constexpr std::uint32_t kEmptyList[kListHeader] = {0, 1, 1, 0};
-// Where the resets buffer keeps an empty list's header, after the total's start.
-constexpr GLintptr kResetListOffset = 32;
 }  // namespace
 
 LightIndexList::LightIndexList(glm::uvec3 shape)
