@@ -70,6 +70,8 @@ done
 # The grid's culling runs as CSV too: the renderer's CPU time against its passes'.
 [ "$(grep -c "^clustered-deferred,1024,2,court,.*Render/mesh_renderer=" "$report")" = 2 ] ||
   fail "no CSV rows of the grid's culling runs (cpu_passes, cpu_systems) in the report"
+[ "$(grep -c "^visibility-buffer,1024,1,.*Render/mesh_renderer=" "$report")" = 3 ] ||
+  fail "no CSV rows of the visibility buffer's runs in every scene (cpu_passes, cpu_systems) in the report"
 for png in sponza.png atrium.png; do
   [ "$(head -c 4 "$work/out/$png" | tail -c 3)" = PNG ] || fail "$png is not a PNG"
 done
