@@ -41,14 +41,35 @@ auto state_key(const DrawBatch& b) {
 
 // Opaque geometry before it is placed: one command, all instances of a
 // primitive drawn with one material. Its instances are gathered in one array
-// for the whole list (Placed::command), not per command: a list with one
-// command per meshlet (DrawSelection::EachInView) has tens of thousands.
+// for the whole list (Placed::command), not per command.
 struct PendingCommand {
   std::uint32_t state;  // into the list's distinct batch states
   DrawCommand command;
-  CullRecord cull;  // DrawSelection::EachInView
   float nearest = 0.0f;  // view depth of its nearest instance
   std::uint32_t first_placed = 0, placed_count = 0;  // its run of the placed instances, once sorted
+};
+
+// DrawSelection::EachInView: one primitive instance's units in view (its
+// meshlets, or the primitive whole), each a command of its own. The list has
+// tens of thousands of units, and the units of one primitive instance share
+// its record, state and depth, so the gathering keeps the group and where its
+// units lie, and each unit is written once, straight into the list, in draw order.
+struct UnitGroup {
+  std::uint32_t state;   // into the list's distinct batch states
+  float depth;           // view depth of the primitive instance
+  std::uint32_t record;  // into DrawList::instances
+  std::uint32_t unit;    // its DrawList::visibility_units entry
+  std::uint32_t first_index;  // the primitive's range in the index pool
+  std::int32_t base_vertex;
+  // By meshlet: the primitive's meshlets, their world spheres and seen:: bits,
+  // and the cull unit of the first. Else one unit: the whole primitive with
+  // its box (cull unit CullRecord::kNeverCulled: no box, always drawn).
+  std::span<const assets::Meshlet> meshlets{};
+  const MeshletBounds* spheres = nullptr;
+  const std::uint8_t* meshlet_states = nullptr;
+  std::uint32_t cull_unit = CullRecord::kNeverCulled;
+  std::uint32_t index_count = 0;
+  glm::vec3 box_min{0.0f}, box_max{0.0f};
 };
 
 struct Placed {
@@ -161,6 +182,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   std::map<CommandKey, std::size_t> command_of;
   std::vector<PendingCommand> pending;
   std::vector<Placed> placed;
+  std::vector<UnitGroup> groups;  // DrawSelection::EachInView
+  std::size_t group_units = 0;
   std::vector<PendingBlend> blended;
   BatchStates states(gpu, gpu.vertex_array());
   const bool each_unit = selection == DrawSelection::EachInView;
@@ -230,32 +253,35 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
         const DrawCommand command{count, 1, range.first_index + offset, range.base_vertex, 0};
         const CommandKey key{vertex_array, command.first_index, count, range.base_vertex, &material, mirrored};
         const auto [it, added] = command_of.try_emplace(key, pending.size());
-        if (added) pending.push_back({state_index, command, {}});
+        if (added) pending.push_back({state_index, command});
         placed.push_back({depth, record(), offset / 3, unit, static_cast<std::uint32_t>(it->second)});
-      };
-      // One command of its own per unit, with the box the GPU tests.
-      auto add_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
-        list.triangles_drawn += count / 3;
-        const CullRecord cull{glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), cull_unit, count / 3, {0, 0}};
-        placed.push_back({depth, record(), offset / 3, unit, static_cast<std::uint32_t>(pending.size())});
-        pending.push_back({state_index, {count, 1, range.first_index + offset, range.base_vertex, 0}, cull});
       };
       const bool by_meshlet = visibility && !primitive.meshlets.empty() && visibility->meshlets.size() == bounds->meshlets.size() &&
                               bounds->meshlet_offsets[p + 1] - bounds->meshlet_offsets[p] == primitive.meshlets.size();
       if (each_unit) {
+        UnitGroup group{.state = state_index, .depth = depth, .record = 0, .unit = unit, .first_index = range.first_index,
+                        .base_vertex = range.base_vertex};
+        std::size_t units = 1;
         if (by_meshlet) {
           const std::uint32_t first = bounds->meshlet_offsets[p];
-          for (std::uint32_t m = 0; m < primitive.meshlets.size(); ++m) {
-            if (!selected(visibility->meshlets[first + m], selection)) continue;
-            const MeshletBounds& sphere = bounds->meshlets[first + m];
-            add_unit(primitive.meshlets[m].first_index, primitive.meshlets[m].index_count, sphere.center - sphere.radius,
-                     sphere.center + sphere.radius, first_unit + static_cast<std::uint32_t>(bounds->primitives.size()) + first + m);
-          }
-        } else if (bounds && p < bounds->primitives.size()) {
-          add_unit(0, range.index_count, bounds->primitives[p].min, bounds->primitives[p].max, first_unit + p);
+          group.meshlets = primitive.meshlets;
+          group.spheres = bounds->meshlets.data() + first;
+          group.meshlet_states = visibility->meshlets.data() + first;
+          group.cull_unit = first_unit + static_cast<std::uint32_t>(bounds->primitives.size()) + first;
+          units = static_cast<std::size_t>(std::count_if(group.meshlet_states, group.meshlet_states + primitive.meshlets.size(),
+                                                         [&](std::uint8_t bits) { return selected(bits, selection); }));
+          if (units == 0) continue;
         } else {
-          add_unit(0, range.index_count, glm::vec3(0.0f), glm::vec3(0.0f), CullRecord::kNeverCulled);
+          group.index_count = range.index_count;
+          if (bounds && p < bounds->primitives.size()) {
+            group.cull_unit = first_unit + p;
+            group.box_min = bounds->primitives[p].min;
+            group.box_max = bounds->primitives[p].max;
+          }
         }
+        group.record = record();
+        groups.push_back(group);
+        group_units += units;
       } else if (by_meshlet) {
         const std::uint8_t* meshlet_states = visibility->meshlets.data() + bounds->meshlet_offsets[p];
         assets::for_each_meshlet_run(primitive.meshlets, [&](std::size_t m) { return selected(meshlet_states[m], selection); }, add_run);
@@ -289,10 +315,10 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     }
     command.nearest = first->depth;
   }
-  // Commands in runs of one key (state rank, then nearest depth): the
-  // meshlets of one primitive instance, all at its depth. The runs are sorted,
-  // tied ones in gathering order, so that a list of one command per meshlet
-  // (tens of thousands) sorts as many runs as primitive instances.
+  // Commands in runs of one key (state rank, then nearest depth): the meshlet
+  // runs of one primitive instance, all at its depth. The runs are sorted,
+  // tied ones in gathering order, so that the sort sees about as many runs as
+  // primitive instances.
   const std::vector<std::uint32_t> rank = states.ranks();
   struct Run {
     std::uint64_t key;
@@ -316,10 +342,10 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
     list.command_depths.push_back(depth);
     ++batches.back().command_count;
   };
-  list.slots.reserve(placed.size() + blended.size());
-  list.commands.reserve(pending.size() + blended.size());
-  list.command_depths.reserve(pending.size() + blended.size());
-  if (each_unit) list.cull_records.reserve(pending.size());
+  list.slots.reserve(placed.size() + group_units + blended.size());
+  list.commands.reserve(pending.size() + group_units + blended.size());
+  list.command_depths.reserve(pending.size() + group_units + blended.size());
+  list.cull_records.reserve(group_units);
   auto emit = [&](const PendingCommand& pending_command) {
     DrawCommand command = pending_command.command;
     command.base_instance = static_cast<std::uint32_t>(list.slots.size());
@@ -329,10 +355,33 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
       list.slots.push_back({sorted[p].record, sorted[p].first_triangle});
     }
     append(list.opaque, states[pending_command.state], command, pending_command.nearest);
-    if (each_unit) list.cull_records.push_back(pending_command.cull);
   };
   for (const Run& run : order) {
     for (std::uint32_t c = run.first; c < run.first + run.count; ++c) emit(pending[c]);
+  }
+  // The units by group in the same order (state rank, then depth; ties as
+  // gathered), each with the box the GPU tests.
+  auto group_key = [&](const UnitGroup& group) { return (std::uint64_t{rank[group.state]} << 32) | ordered_bits(group.depth); };
+  std::stable_sort(groups.begin(), groups.end(), [&](const UnitGroup& a, const UnitGroup& b) { return group_key(a) < group_key(b); });
+  for (const UnitGroup& group : groups) {
+    list.visibility_units[group.unit].record = group.record;
+    auto emit_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
+      list.triangles_drawn += count / 3;
+      append(list.opaque, states[group.state],
+             {count, 1, group.first_index + offset, group.base_vertex, static_cast<std::uint32_t>(list.slots.size())}, group.depth);
+      list.slots.push_back({group.record, offset / 3});
+      list.cull_records.push_back({glm::vec4(min, 0.0f), glm::vec4(max, 0.0f), cull_unit, count / 3, {0, 0}});
+    };
+    if (group.meshlets.empty()) {
+      emit_unit(0, group.index_count, group.box_min, group.box_max, group.cull_unit);
+      continue;
+    }
+    for (std::uint32_t m = 0; m < group.meshlets.size(); ++m) {
+      if (!selected(group.meshlet_states[m], selection)) continue;
+      const MeshletBounds& sphere = group.spheres[m];
+      emit_unit(group.meshlets[m].first_index, group.meshlets[m].index_count, sphere.center - sphere.radius,
+                sphere.center + sphere.radius, group.cull_unit + m);
+    }
   }
   for (std::size_t b = 0; b < list.opaque.size(); ++b) list.opaque[b].count_slot = static_cast<std::uint32_t>(b);
   // Blended: farthest first, one instance per command.
