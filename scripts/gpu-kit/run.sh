@@ -274,10 +274,8 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   section "Every mode against forward, Sponza (PSNR)" "$out/.compare-sponza.txt"
   for scene in built-in sponza grid; do
     section "Visibility buffer against clustered-deferred and forward, $scene, 1,024 lights, compute stage" "$out/.visibility-$scene.md"
-    section "Visibility buffer with materials bound (one dispatch per material), $scene, 1,024 lights" "$out/.visibility-bound-$scene.md"
-  done
-  for scene in built-in sponza grid; do
     section "Visibility buffer, $scene, as CSV (each pass's and each system's CPU time)" "$out/.visibility-$scene.csv"
+    section "Visibility buffer with materials bound (one dispatch per material), $scene, 1,024 lights" "$out/.visibility-bound-$scene.md"
   done
   echo
   echo "## The visibility buffer as a process's first mode (light evaluations per pixel: equal when every pixel is shaded)"

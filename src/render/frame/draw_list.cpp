@@ -320,6 +320,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   // tied ones in gathering order, so that the sort sees about as many runs as
   // primitive instances.
   const std::vector<std::uint32_t> rank = states.ranks();
+  // Opaque draw order, for the pending commands and the unit groups alike.
+  auto draw_key = [&](std::uint32_t state, float depth) { return (std::uint64_t{rank[state]} << 32) | ordered_bits(depth); };
   struct Run {
     std::uint64_t key;
     std::uint32_t first, count;  // of the pending commands
@@ -327,7 +329,7 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   };
   std::vector<Run> order;
   for (std::uint32_t i = 0; i < pending.size(); ++i) {
-    const std::uint64_t key = (std::uint64_t{rank[pending[i].state]} << 32) | ordered_bits(pending[i].nearest);
+    const std::uint64_t key = draw_key(pending[i].state, pending[i].nearest);
     if (order.empty() || order.back().key != key) order.push_back({key, i, 0});
     ++order.back().count;
   }
@@ -361,8 +363,8 @@ DrawList build_draw_list(ecs::Registry& registry, const assets::AssetManager& as
   }
   // The units by group in the same order (state rank, then depth; ties as
   // gathered), each with the box the GPU tests.
-  auto group_key = [&](const UnitGroup& group) { return (std::uint64_t{rank[group.state]} << 32) | ordered_bits(group.depth); };
-  std::stable_sort(groups.begin(), groups.end(), [&](const UnitGroup& a, const UnitGroup& b) { return group_key(a) < group_key(b); });
+  std::stable_sort(groups.begin(), groups.end(),
+                   [&](const UnitGroup& a, const UnitGroup& b) { return draw_key(a.state, a.depth) < draw_key(b.state, b.depth); });
   for (const UnitGroup& group : groups) {
     list.visibility_units[group.unit].record = group.record;
     auto emit_unit = [&](std::uint32_t offset, std::uint32_t count, glm::vec3 min, glm::vec3 max, std::uint32_t cull_unit) {
