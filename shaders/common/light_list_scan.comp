@@ -19,6 +19,7 @@ layout(local_size_x = 256) in;
 
 #include "common/light_lists.glsl"
 #include "common/light_list_sort.glsl"
+#include "common/group_scan.glsl"
 
 layout(std430, binding = 7) buffer BinCounts { uint u_bin_counts[]; };
 // Per block: its sum (kScanReduce), then its first entry (kScanBlocks).
@@ -29,34 +30,7 @@ uniform uint u_step;
 const uint kScanReduce = 0u, kScanBlocks = 1u, kScanWrite = 2u;
 const uint kPerInvocation = 16u, kScanBlock = 256u * kPerInvocation;
 
-shared uint s_sums[256];
-shared uint s_longest, s_filled, s_total;
-
-// An exclusive prefix sum of each invocation's `value` over the work group;
-// `total` is the group's sum. One invocation walks the 256 partial sums: two
-// barriers, where a tree takes sixteen: a software renderer's barriers cost
-// more than the walk (on llvmpipe the tree scanned 261,120 bins in 9.6-14.6
-// ms, this in 3.3-5.2 against the single group's 2.1-4.0), while on a GPU
-// each block's walk runs beside the others'.
-uint group_exclusive_sum(uint value, out uint total) {
-  uint thread = gl_LocalInvocationIndex;
-  s_sums[thread] = value;
-  barrier();
-  if (thread == 0u) {
-    uint running = 0u;
-    for (uint t = 0u; t < 256u; ++t) {
-      uint part = s_sums[t];
-      s_sums[t] = running;
-      running += part;
-    }
-    s_total = running;
-  }
-  barrier();
-  total = s_total;
-  uint exclusive = s_sums[thread];
-  barrier();  // s_sums is free again for a later call
-  return exclusive;
-}
+shared uint s_longest, s_filled;
 
 uint block_index() { return gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x; }
 

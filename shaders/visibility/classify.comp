@@ -1,10 +1,11 @@
 #version 450 core
 // Material classification of the visibility buffer: one work group per 8x8
-// tile finds the materials its pixels show and appends the tile to each one's
-// list (material_tiles.glsl), so that each material's resolve runs over the
-// tiles that hold it with its own textures bound. Samples that show no
-// geometry get the background here, as a lighting pass's would. With MSAA
-// every sample's identifier counts: an edge pixel may show several materials.
+// tile finds the materials its pixels show, keeps them in the tile's slots
+// and counts the tile for each (material_tiles.glsl); material_lists.comp
+// then turns the counts into each material's list of tiles, over which its
+// resolve runs with its own textures bound. Samples that show no geometry get
+// the background here, as a lighting pass's would. With MSAA every sample's
+// identifier counts: an edge pixel may show several materials.
 #define COMPUTE_STAGE
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -15,11 +16,14 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "visibility/material_tiles.glsl"
 #include "visibility/tile_materials.glsl"
 
+shared uint s_tile_material_count;
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   uint first = gl_LocalInvocationIndex * uint(kSamples);
   bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
   uint background = 0u;  // the samples without geometry, a bit each
+  if (gl_LocalInvocationIndex == 0u) s_tile_material_count = 0u;
   for (int i = 0; i < kSamples; ++i) {
     uint material = kNone;
     if (inside) {
@@ -42,11 +46,14 @@ void main() {
     write_background();
   }
   barrier();
-  // The first sample of the tile to show a material lists the tile for it.
+  // The first sample of the tile to show a material counts the tile for it.
+  uint slots = tile_materials_at(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
   for (int i = 0; i < kSamples; ++i) {
     if (!first_slot_of_its_material(first + uint(i))) continue;
     uint material = s_slot_material[first + uint(i)];
-    uint index = atomicAdd(u_dispatch[material].x, 1u);
-    u_tiles[material * tile_capacity() + index] = gl_WorkGroupID.x | (gl_WorkGroupID.y << 16);
+    atomicAdd(u_material_tiles[material].tile_count, 1u);
+    u_tile_materials[slots + 1u + atomicAdd(s_tile_material_count, 1u)] = material;
   }
+  barrier();
+  if (gl_LocalInvocationIndex == 0u) u_tile_materials[slots] = s_tile_material_count;
 }

@@ -1,16 +1,24 @@
-// The material classification's output: per material, an indirect dispatch
-// (x counts the tiles that hold it) and the list of those tiles, each the
-// size of classify.comp's work group and packed as x | y << 16. C++ twin:
-// DispatchCommand in src/render/techniques/visibility/visibility.hpp.
+// The material classification's output (classify.comp, then
+// material_lists.comp): per material, the range of the tile lists that holds
+// the tiles showing it and the indirect dispatch of its resolve over them;
+// per tile, the materials it shows. A tile is a work group of classify.comp
+// and of the resolve (8x8 pixels), numbered row by row. C++ twins:
+// MaterialTiles and the sizes of VisibilityTechnique::reserve_tiles.
 
-struct Dispatch {
+// GL's DispatchIndirectCommand (x, y, z: a work group per tile of the range,
+// folded into rows of at most 65,535), then the range.
+struct MaterialTiles {
   uint x, y, z;
+  uint tile_count;  // counted by the classification
+  uint first_tile;  // into u_tiles, from the scan of the counts
+  uint next_tile;   // the scatter's cursor, from first_tile on
 };
-layout(std430, binding = 27) buffer MaterialDispatch { Dispatch u_dispatch[]; };
+layout(std430, binding = 27) buffer MaterialDispatch { MaterialTiles u_material_tiles[]; };
 layout(std430, binding = 28) buffer MaterialTileLists { uint u_tiles[]; };
-// A material's list starts at its index times this: every tile of the frame,
-// each a work group of classify.comp (and of the resolve, which shares its size).
-uint tile_capacity() {
-  uvec2 tiles = (uvec2(u_viewport_size) + gl_WorkGroupSize.xy - 1u) / gl_WorkGroupSize.xy;
-  return tiles.x * tiles.y;
-}
+// Per tile, u_tile_slots + 1 words: how many materials it shows, then those materials.
+layout(std430, binding = 30) buffer TileMaterials { uint u_tile_materials[]; };
+// The most materials one tile can show: the fewest of the materials the
+// buffers hold room for and the tile's samples (64 pixels times the samples).
+uniform uint u_tile_slots;
+
+uint tile_materials_at(uint tile) { return tile * (u_tile_slots + 1u); }

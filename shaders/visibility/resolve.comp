@@ -4,8 +4,8 @@
 // and shades it with its cluster's lights, storing the lit result
 // (common/lighting_targets.glsl) once: no G-buffer between geometry and light.
 // Bound (the default variant): one dispatch per material (u_material, its
-// textures bound at units 0-4), one work group per tile the classification
-// listed for it. BINDLESS_TEXTURES: one dispatch, one work group per tile of
+// textures bound at units 0-4), one work group per tile of its list
+// (material_tiles.glsl). BINDLESS_TEXTURES: one dispatch, one work group per tile of
 // the frame, which gives the background to empty samples (the classification's
 // job otherwise) and shades the materials its tile shows one after the other,
 // each sampled by handle: the loop keeps the handle dynamically uniform, as
@@ -118,9 +118,13 @@ void shade_triangle(ivec2 pixel, uint id) {
 }
 
 void main() {
-  uint tile = u_tiles[u_material * tile_capacity() + gl_WorkGroupID.x];
-  // Its work group is classify.comp's: one group a tile.
-  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
+  // The material's dispatch folds its range into rows (material_lists.comp).
+  uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  if (index >= u_material_tiles[u_material].tile_count) return;
+  uint tile = u_tiles[u_material_tiles[u_material].first_tile + index];
+  // Its work group is classify.comp's: one group a tile, numbered row by row.
+  uint row = (uint(u_viewport_size.x) + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
+  ivec2 pixel = ivec2(tile % row, tile / row) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   g_shaded_pixel = pixel;
 #ifdef MSAA_SAMPLES

@@ -289,7 +289,7 @@ const std::vector<OptionSpec>& option_table() {
        set_flag([](CliOptions& o) -> bool& { return o.bench.shadow_redraw; })},
       {"--pass-steps", "", kBench,
        "also time the steps inside passes (the light lists' count, scan and write; occlusion culling's pyramid, test and "
-       "draws), listed in brackets after their pass (a step that ran in some frames only: its median over those, and in "
+       "draws; the material classification's count, ranges and scatter), listed in brackets after their pass (a step that ran in some frames only: its median over those, and in "
        "how many); on a software renderer each step adds two waits for the GPU",
        set_flag([](CliOptions& o) -> bool& { return o.bench.pass_steps; })},
       {"--debug-view", "V", kWindow | kRender,

@@ -33,7 +33,8 @@ inline constexpr unsigned kCommandTemplateBinding = 16, kCullOutBinding = 17, kC
                           kLastShownBinding = 20, kCullCountersBinding = 21;  // GPU occlusion culling
 inline constexpr unsigned kVisibilityUnitsBinding = 24;  // Units: the visibility buffer's identifiers (render/frame/draw_list.hpp)
 inline constexpr unsigned kVertexPoolBinding = 25, kIndexPoolBinding = 26;  // VertexPool, IndexPool: GpuAssets' pools
-inline constexpr unsigned kMaterialDispatchBinding = 27, kMaterialTilesBinding = 28;  // the visibility buffer's material tiles
+inline constexpr unsigned kMaterialDispatchBinding = 27, kMaterialTilesBinding = 28,  // the visibility buffer's material tiles:
+                          kTileMaterialsBinding = 30;  // MaterialDispatch, MaterialTileLists, TileMaterials
 inline constexpr unsigned kMaterialTexturesBinding = 29;  // MaterialTextures: bindless handles (render/techniques/visibility)
 inline constexpr unsigned kReadbackSourceBinding = gfx::kReadbackSourceBinding;  // ReadbackSource, ReadbackSlot: a
 inline constexpr unsigned kReadbackSlotBinding = gfx::kReadbackSlotBinding;      // readback ring's copy (gfx/readback_ring.hpp)
@@ -82,6 +83,7 @@ inline constexpr BlockSlot kBlockSlots[] = {
     {"VertexPool", kVertexPoolBinding},         {"IndexPool", kIndexPoolBinding},
     {"MaterialDispatch", kMaterialDispatchBinding}, {"MaterialTileLists", kMaterialTilesBinding},
     {"MaterialTextures", kMaterialTexturesBinding}, {"ScanBlocks", kScanBlocksBinding},
+    {"TileMaterials", kTileMaterialsBinding},
 };
 
 }  // namespace atrium::render

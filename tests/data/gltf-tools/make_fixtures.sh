@@ -15,6 +15,8 @@ cd "$here"
 blender --background --python blender_colors.py -- "$testdata/blender-exports/teapot.gltf" blender-colors.glb
 # Tinted glass panes (alphaMode BLEND) over and beside opaque blocks, by Blender.
 blender --background --python blender_glass.py -- blender-glass.glb
+# A sheet of 384 faces, each its own material (one mesh of 384 primitives), by Blender.
+blender --background --python blender_materials.py -- blender-materials.glb
 
 # EXT_meshopt_compression (and KHR_mesh_quantization unless -noq) by gltfpack;
 # -mi writes EXT_mesh_gpu_instancing, whose transforms use the QUATERNION and

@@ -3,7 +3,8 @@
 // handle, draws forward's picture on the built-in scene, on Sponza (alpha-
 // tested foliage, normal maps, blended surfaces) and with MSAA, without the
 // classification pass; where the context lacks ARB_bindless_texture, auto
-// takes the bound path and bindless is refused in one line. This program runs
+// takes the bound path and bindless is refused in one line; the bound path's
+// tile lists grow with the samples, not the materials. This program runs
 // twice under ctest: on the system's llvmpipe, which lacks the extension, and
 // on Mesa's zink over lavapipe (scripts/install-zink.sh), which has it; each
 // run skips the tests for the other.
@@ -99,6 +100,37 @@ TEST_F(MaterialBindingWithoutBindless, AutoBindsPerMaterialAndBindlessIsRefusedI
     const std::string message = e.what();
     EXPECT_NE(message.find("GL_ARB_bindless_texture"), std::string::npos) << message;
     EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+// Bytes of the frame's resource `name` (0: the frame has none).
+std::size_t resource_bytes(World& world, const std::string& name) {
+  for (const render::ResourceUse& use : world.renderer().graph().used_resources()) {
+    if (use.name == name) return use.bytes;
+  }
+  return 0;
+}
+
+// Blender's sheet of 384 faces, each its own material: more than a tile can
+// show even with 4x MSAA (64 pixels x 4 samples). The bound path draws
+// forward's picture, and its tile lists hold what a tile can show, 4 bytes a
+// tile for each of the fewer of 64 x samples and the materials, where a list
+// of every tile per material took 384 (and grew to 650 MB for 1,100 materials
+// at 4096x2304).
+TEST_F(MaterialBindingWithoutBindless, BoundTileListsGrowWithSamplesNotMaterials) {
+  if (gfx::gl_features().bindless_textures) GTEST_SKIP() << "this context has GL_ARB_bindless_texture";
+  const std::string sheet = std::string(ATRIUM_SOURCE_DIR) + "/tests/data/gltf-tools/blender-materials.glb";
+  constexpr std::size_t kTiles = 20 * 12;  // 8x8 tiles of 160x90
+  for (const int samples : {1, 4}) {
+    World world({.scene = sheet, .lights = 32, .mode = "forward", .size = kSize, .technique_options = binding(MaterialBinding::Bound, samples)});
+    testing::expect_forward_picture_from_every_view(world, "visibility-buffer", "materials_384_x" + std::to_string(samples), 0.0);
+    // From the front the whole sheet is in view: every material is in the draw list.
+    world.set_view(1);
+    world.frame(0.0);
+    const std::size_t slots = 64 * static_cast<std::size_t>(samples);
+    EXPECT_EQ(resource_bytes(world, "material-tiles"), kTiles * slots * 4) << samples << " samples";
+    EXPECT_EQ(resource_bytes(world, "tile-materials"), kTiles * (slots + 1) * 4) << samples << " samples";
+    EXPECT_GE(resource_bytes(world, "material-dispatch"), 384u * 24) << samples << " samples";
   }
 }
 

@@ -6,6 +6,7 @@
 #include "gfx/depth.hpp"
 #include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
+#include "gfx/pass_timer.hpp"
 #include "render/frame/frame_draws.hpp"
 #include "render/frame/scene_passes.hpp"
 #include "render/lighting/lighting_pass.hpp"
@@ -19,6 +20,9 @@ std::vector<gfx::ShaderDefine> identifier_defines(bool masked, int samples) {
   if (samples > 1) defines.push_back({"SHADING_DEPTH"});
   return defines;
 }
+
+// material_lists.comp's steps.
+constexpr unsigned kRangesStep = 0, kScatterStep = 1;
 
 std::vector<gfx::ShaderDefine> resolve_defines(MaterialBinding binding) {
   return binding == MaterialBinding::Bindless ? std::vector<gfx::ShaderDefine>{{"BINDLESS_TEXTURES"}} : std::vector<gfx::ShaderDefine>{};
@@ -47,6 +51,7 @@ VisibilityTechnique::VisibilityTechnique(render::GpuAssets& gpu, const Technique
       identifiers_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(false, options.msaa))),
       identifiers_masked_(gpu.shaders().get({"common/mesh.vert", "visibility/id.frag"}, identifier_defines(true, options.msaa))),
       classify_(gpu.shaders().get({"visibility/classify.comp"})),
+      lists_(gpu.shaders().get({"visibility/material_lists.comp"})),
       resolve_(gpu.shaders().get({"visibility/resolve.comp"}, resolve_defines(binding_))),
       blended_(gpu.shaders().get({"common/mesh.vert", "clustered/shade.frag"})),
       clusters_(gpu.shaders(), options, lighting::ClusterLights::Positions::Depth) {}
@@ -59,7 +64,13 @@ void VisibilityTechnique::resize(const render::FrameTargets& targets) {
   clusters_.resize(targets.size);
   const glm::uvec2 tile(classify_.work_group_size());
   tiles_ = (glm::uvec2(glm::max(targets.size, glm::ivec2(0))) + tile - 1u) / tile;
-  tile_materials_ = 0;  // the lists are sized by tile count: remade at the next frame
+  samples_ = std::max(targets.samples, 1);
+  tile_materials_ = 0;  // the lists are sized by tile count and samples: remade at the next frame
+}
+
+std::size_t VisibilityTechnique::tile_slots() const {
+  const glm::uvec3 tile(classify_.work_group_size());
+  return std::min(tile_materials_, std::size_t{tile.x} * tile.y * static_cast<std::size_t>(samples_));
 }
 
 void VisibilityTechnique::reserve_tiles(std::size_t materials) {
@@ -67,8 +78,10 @@ void VisibilityTechnique::reserve_tiles(std::size_t materials) {
   tile_materials_ = std::max<std::size_t>({materials, 2 * tile_materials_, 16});
   dispatch_ = gfx::create_buffer();
   tile_lists_ = gfx::create_buffer();
-  glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(tile_materials_ * sizeof(DispatchCommand)), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)), nullptr, 0);
+  tile_slots_ = gfx::create_buffer();
+  glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(tile_materials_ * sizeof(MaterialTiles)), nullptr, 0);
+  glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_count() * tile_slots() * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(tile_slots_.id(), static_cast<GLsizeiptr>(tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t)), nullptr, 0);
 }
 
 void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
@@ -119,15 +132,18 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
     // As many lists as this frame's materials; a list that occlusion culling's
     // late phase extends with new materials grows them when the pass runs.
     reserve_tiles(frame.draws.list().materials.size());
-    const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(DispatchCommand)});
+    const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(MaterialTiles)});
     const render::ResourceId tile_lists =
-        graph.import_buffer("material-tiles", tile_lists_.id(), {tile_materials_ * tiles_.x * tiles_.y * sizeof(std::uint32_t)});
+        graph.import_buffer("material-tiles", tile_lists_.id(), {tile_count() * tile_slots() * sizeof(std::uint32_t)});
+    const render::ResourceId tile_materials =
+        graph.import_buffer("tile-materials", tile_slots_.id(), {tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t)});
     graph.add_pass("material classification", [&](render::PassBuilder& pass) {
       pass.read(identifiers_target_, render::Access::Sampled);
       render::read_draws(pass, frame);
       write_lit(pass);
       pass.write(dispatch, render::Access::Storage);
       pass.write(tile_lists, render::Access::Storage);
+      pass.write(tile_materials, render::Access::Storage);
     }, [this, &frame](const render::PassResources& res) { classify(res, frame); });
     graph.add_pass("resolve", [&](render::PassBuilder& pass) {
       resolve_inputs(pass);
@@ -166,6 +182,7 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
   if (binding_ == MaterialBinding::Bound) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kTileMaterialsBinding, tile_slots_.id());
   }
   glBindTextureUnit(render::kVisibilityUnit, res.texture(identifiers_target_));
   lighting::bind_lit_images(res, frame, GL_WRITE_ONLY);
@@ -192,11 +209,33 @@ void VisibilityTechnique::classify(const render::PassResources& res, const rende
   const render::DrawList& list = frame.draws.list();
   reserve_tiles(list.materials.size());
   upload_units(list);
-  const GLuint empty[] = {0, 1, 1};
-  glClearNamedBufferData(dispatch_.id(), GL_RGB32UI, GL_RGB_INTEGER, GL_UNSIGNED_INT, empty);
+  // Counts from zero; the ranges step writes the rest of each MaterialTiles.
+  glClearNamedBufferData(dispatch_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
   bind_inputs(res, frame);
-  classify_.use();
-  glDispatchCompute(tiles_.x, tiles_.y, 1);
+  const auto slots = static_cast<unsigned>(tile_slots());
+  {
+    const gfx::PassTimer::Step step("count");
+    classify_.use();
+    classify_.set("u_tile_slots", slots);
+    glDispatchCompute(tiles_.x, tiles_.y, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  lists_.use();
+  lists_.set("u_tile_slots", slots);
+  lists_.set("u_material_count", static_cast<unsigned>(list.materials.size()));
+  lists_.set("u_tile_count", static_cast<unsigned>(tile_count()));
+  {
+    const gfx::PassTimer::Step step("ranges");
+    lists_.set("u_step", kRangesStep);
+    glDispatchCompute(1, 1, 1);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  {
+    const gfx::PassTimer::Step step("scatter");
+    lists_.set("u_step", kScatterStep);
+    const std::size_t group = lists_.work_group_size().x;
+    glDispatchCompute(static_cast<GLuint>((tile_count() + group - 1) / group), 1, 1);
+  }
 }
 
 void VisibilityTechnique::resolve(const render::PassResources& res, const render::FrameContext& frame) const {
@@ -211,7 +250,7 @@ void VisibilityTechnique::resolve(const render::PassResources& res, const render
     glBindTextures(0, render::kMaterialTextureSlots, batch_of[m]->textures.data());
     glBindSamplers(0, render::kMaterialTextureSlots, batch_of[m]->samplers.data());
     resolve_.set("u_material", static_cast<unsigned>(m));
-    glDispatchComputeIndirect(static_cast<GLintptr>(m * sizeof(DispatchCommand)));
+    glDispatchComputeIndirect(static_cast<GLintptr>(m * sizeof(MaterialTiles)));
   }
   glBindSamplers(0, render::kMaterialTextureSlots, nullptr);
 }

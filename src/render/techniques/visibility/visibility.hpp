@@ -6,7 +6,8 @@
 // shades it with the clustered light lists, storing the lit HDR result. How
 // the resolve reaches the materials' textures is --material-binding: bound
 // (a compute pass lists each material's 8x8 tiles, then one dispatch per
-// material runs over them with its textures bound) or bindless (one dispatch
+// material runs over them with its textures bound; the lists hold at most
+// tiles x 64 x samples entries, whatever the materials) or bindless (one dispatch
 // over every tile, textures by handle). The raster pipeline touches a pixel's
 // material once, not once per overdraw, and no G-buffer travels between
 // geometry and light. Blended surfaces are shaded forward+ from the same lists
@@ -25,11 +26,13 @@
 
 namespace atrium::techniques {
 
-// GL's DispatchIndirectCommand; twin of Dispatch in shaders/visibility/material_tiles.glsl.
-struct DispatchCommand {
+// A material's indirect dispatch (GL's DispatchIndirectCommand) and its range
+// of the tile lists; twin of MaterialTiles in shaders/visibility/material_tiles.glsl.
+struct MaterialTiles {
   std::uint32_t x = 0, y = 1, z = 1;
+  std::uint32_t tile_count = 0, first_tile = 0, next_tile = 0;
 };
-static_assert(sizeof(DispatchCommand) == 12, "GL reads indirect dispatches as three 32-bit words");
+static_assert(sizeof(MaterialTiles) == 24, "std430 packs six 32-bit words; GL reads the dispatch from the first three");
 
 // A material's textures as bindless handles, by slot; twin of MaterialTextures
 // in shaders/common/material.glsl (a uvec2 each).
@@ -54,7 +57,8 @@ class VisibilityTechnique final : public LightingTechnique {
  private:
   // The geometry pass's body: identifiers and depth, through draw_first_pass.
   void draw_identifiers(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets);
-  // Lists each material's tiles (and gives background pixels the background).
+  // Lists each material's tiles (and gives background pixels the background):
+  // counts them per tile, scans the counts into ranges, scatters the tiles.
   void classify(const render::PassResources& res, const render::FrameContext& frame);
   // One indirect dispatch per material over its tiles.
   void resolve(const render::PassResources& res, const render::FrameContext& frame) const;
@@ -64,8 +68,13 @@ class VisibilityTechnique final : public LightingTechnique {
   void upload_units(const render::DrawList& list);
   // Each material's batch as drawn, for its textures and samplers (null: drawn by none).
   [[nodiscard]] static std::vector<const render::DrawBatch*> batches_by_material(const render::DrawList& list);
-  // Grows the tile lists to hold `materials` lists of every tile.
+  // Grows the dispatches to hold `materials` and the tile lists to hold what
+  // every tile can show of them.
   void reserve_tiles(std::size_t materials);
+  // The most materials one tile can show: the fewer of the materials there is
+  // room for and its samples (a work group of classify_'s pixels, times the samples).
+  [[nodiscard]] std::size_t tile_slots() const;
+  [[nodiscard]] std::size_t tile_count() const { return std::size_t{tiles_.x} * tiles_.y; }
   // The units, the geometry pools, the tile lists, the identifiers and the lit targets.
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
@@ -74,12 +83,16 @@ class VisibilityTechnique final : public LightingTechnique {
   gfx::ShaderProgram& identifiers_;         // batches without an alpha test: positions only
   gfx::ShaderProgram& identifiers_masked_;  // alpha-masked batches: the alpha test, then the identifier
   gfx::ShaderProgram& classify_;
+  gfx::ShaderProgram& lists_;  // visibility/material_lists.comp: ranges and scatter
   gfx::ShaderProgram& resolve_;
   gfx::ShaderProgram& blended_;  // forward+ shading of blended surfaces (clustered/shade.frag)
   lighting::ClusterLights clusters_;
   glm::uvec2 tiles_{0};  // tiles per row and column, each a work group of classify_ (its layout is the one fact)
-  std::size_t tile_materials_ = 0;  // materials the tile lists hold room for
-  gfx::Buffer dispatch_, tile_lists_;
+  int samples_ = 1;
+  std::size_t tile_materials_ = 0;  // materials the dispatches hold room for
+  gfx::Buffer dispatch_;            // MaterialTiles of each material
+  gfx::Buffer tile_lists_;          // the materials' lists of tiles, tile_slots() for each tile in all
+  gfx::Buffer tile_slots_;          // each tile's count of materials, then the materials
   gfx::StreamBuffer units_;
   gfx::StreamBuffer material_textures_;  // bindless: MaterialTextures of each material
   std::size_t unit_count_ = 0;  // of this frame, at the start of units_
