@@ -20,6 +20,7 @@ layout(local_size_x = 256) in;
 uniform uint u_step;
 uniform uint u_material_count;  // of this frame's draw list
 uniform uint u_tile_count;
+uniform uint u_tile_columns;
 
 const uint kRanges = 0u, kScatter = 1u;
 // GL promises at least this many work groups along each axis of a dispatch.
@@ -47,9 +48,10 @@ void scatter() {
   uint tile = gl_GlobalInvocationID.x;
   if (tile >= u_tile_count) return;
   uint slots = tile_materials_at(tile), count = u_tile_materials[slots];
+  uint column_row = tile % u_tile_columns | (tile / u_tile_columns) << 16;
   for (uint k = 0u; k < count; ++k) {
     uint material = u_tile_materials[slots + 1u + k];
-    u_tiles[atomicAdd(u_material_tiles[material].next_tile, 1u)] = tile;
+    u_tiles[atomicAdd(u_material_tiles[material].next_tile, 1u)] = column_row;
   }
 }
 

