@@ -2,7 +2,8 @@
 // material_lists.comp): per material, the range of the tile lists that holds
 // the tiles showing it and the indirect dispatch of its resolve over them;
 // per tile, the materials it shows. A tile is a work group of classify.comp
-// and of the resolve (8x8 pixels), numbered row by row. C++ twins:
+// and of the resolve (8x8 pixels); its slots are numbered row by row, the
+// lists name it by column and row. C++ twins:
 // MaterialTiles and the sizes of VisibilityTechnique::reserve_tiles.
 
 // GL's DispatchIndirectCommand (x, y, z: a work group per tile of the range,
