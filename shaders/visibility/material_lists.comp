@@ -35,8 +35,11 @@ void ranges() {
   uint offset = group_exclusive_sum(sum, total);
   for (uint m = first; m < end; ++m) {
     uint count = u_material_tiles[m].tile_count;
-    u_material_tiles[m].x = min(count, kMaxGroupsX);
-    u_material_tiles[m].y = max((count + kMaxGroupsX - 1u) / kMaxGroupsX, 1u);
+    // As few rows as hold the range, evenly filled: fewer groups past its
+    // end than it has rows.
+    uint rows = max((count + kMaxGroupsX - 1u) / kMaxGroupsX, 1u);
+    u_material_tiles[m].x = (count + rows - 1u) / rows;
+    u_material_tiles[m].y = rows;
     u_material_tiles[m].z = 1u;
     u_material_tiles[m].first_tile = offset;
     u_material_tiles[m].next_tile = offset;

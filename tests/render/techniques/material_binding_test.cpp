@@ -134,5 +134,25 @@ TEST_F(MaterialBindingWithoutBindless, BoundTileListsGrowWithSamplesNotMaterials
   }
 }
 
+// A material over more tiles than GL promises work groups along a dispatch's
+// x (65,535): tinygltf's cube filling a 2304x2048 image, 73,728 tiles of one
+// material, which its resolve dispatch folds into two rows.
+TEST_F(MaterialBindingWithoutBindless, AMaterialOverMoreTilesThanADispatchRowIsShadedEverywhere) {
+  if (gfx::gl_features().bindless_textures) GTEST_SKIP() << "this context has GL_ARB_bindless_texture";
+  const fs::path cube = fs::path(ATRIUM_TESTDATA_DIR) / "gltf/tinygltf/Cube/Cube.gltf";
+  if (!fs::exists(cube)) GTEST_SKIP() << cube << " is not here";
+  // The visibility buffer first: a tile it leaves unshaded keeps no earlier mode's picture.
+  World world({.scene = cube.string(), .lights = 16, .mode = "visibility-buffer", .size = {2304, 2048},
+               .technique_options = binding(MaterialBinding::Bound),
+               .camera = assets::NamedView{"face", glm::vec3(0.0f, 0.0f, 1.5f), 0.0f, 0.0f}});
+  world.frame(0.0);
+  const assets::Image image = world.renderer().read_output();
+  world.set_mode("forward");
+  world.frame(0.0);
+  const assets::Image reference = world.renderer().read_output();
+  EXPECT_GE(assets::psnr(reference, image), kMinimumPsnr);
+  EXPECT_LE(testing::share_differing(reference, image, 8), 0.0001);
+}
+
 }  // namespace
 }  // namespace atrium
