@@ -73,6 +73,12 @@ std::size_t VisibilityTechnique::tile_slots() const {
   return std::min(tile_materials_, std::size_t{tile.x} * tile.y * static_cast<std::size_t>(samples_));
 }
 
+// The lists: 4 bytes for each material each tile can show.
+std::size_t VisibilityTechnique::tile_list_bytes() const { return tile_count() * tile_slots() * sizeof(std::uint32_t); }
+
+// Each tile's slots: its count of materials, then the materials.
+std::size_t VisibilityTechnique::tile_slot_bytes() const { return tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t); }
+
 void VisibilityTechnique::reserve_tiles(std::size_t materials) {
   if (materials <= tile_materials_ && dispatch_) return;
   tile_materials_ = std::max<std::size_t>({materials, 2 * tile_materials_, 16});
@@ -80,8 +86,8 @@ void VisibilityTechnique::reserve_tiles(std::size_t materials) {
   tile_lists_ = gfx::create_buffer();
   tile_slots_ = gfx::create_buffer();
   glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(tile_materials_ * sizeof(MaterialTiles)), nullptr, 0);
-  glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_count() * tile_slots() * sizeof(std::uint32_t)), nullptr, 0);
-  glNamedBufferStorage(tile_slots_.id(), static_cast<GLsizeiptr>(tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t)), nullptr, 0);
+  glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_list_bytes()), nullptr, 0);
+  glNamedBufferStorage(tile_slots_.id(), static_cast<GLsizeiptr>(tile_slot_bytes()), nullptr, 0);
 }
 
 void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
@@ -134,9 +140,9 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
     reserve_tiles(frame.draws.list().materials.size());
     const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(MaterialTiles)});
     const render::ResourceId tile_lists =
-        graph.import_buffer("material-tiles", tile_lists_.id(), {tile_count() * tile_slots() * sizeof(std::uint32_t)});
+        graph.import_buffer("material-tiles", tile_lists_.id(), {tile_list_bytes()});
     const render::ResourceId tile_materials =
-        graph.import_buffer("tile-materials", tile_slots_.id(), {tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t)});
+        graph.import_buffer("tile-materials", tile_slots_.id(), {tile_slot_bytes()});
     graph.add_pass("material classification", [&](render::PassBuilder& pass) {
       pass.read(identifiers_target_, render::Access::Sampled);
       render::read_draws(pass, frame);

@@ -75,6 +75,9 @@ class VisibilityTechnique final : public LightingTechnique {
   // room for and its samples (a work group of classify_'s pixels, times the samples).
   [[nodiscard]] std::size_t tile_slots() const;
   [[nodiscard]] std::size_t tile_count() const { return std::size_t{tiles_.x} * tiles_.y; }
+  // Sizes of tile_lists_ and tile_slots_, as allocated and as the graph imports them.
+  [[nodiscard]] std::size_t tile_list_bytes() const;
+  [[nodiscard]] std::size_t tile_slot_bytes() const;
   // The units, the geometry pools, the tile lists, the identifiers and the lit targets.
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
