@@ -122,6 +122,8 @@ int run_compare(const CliOptions& options) {
   WorldOptions compared = world_options(options);
   compared.mode = "forward";
   compared.lighting_stage = LightingStage::Fragment;
+  // A texel a mode leaves unwritten would keep forward's colour and pass.
+  compared.poison_targets = true;
   World world(compared);
   TechniqueOptions& technique_options = world.registry().resource<RendererSettings>().technique_options;
   // By default both stages, less one this context cannot run (said once).

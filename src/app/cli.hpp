@@ -55,6 +55,7 @@ struct CliOptions {
   bool frustum_culling = true;          // --no-culling
   bool occlusion_culling = true;        // --no-occlusion-culling
   CullingDevice culling_device = CullingDevice::Automatic;  // --culling
+  bool poison_targets = false;          // --poison-targets
   // --lighting-stage: the window's and render's (absent: the scene file's, else
   // auto); compare's and bench's list (empty: their defaults).
   std::optional<LightingStage> lighting_stage;

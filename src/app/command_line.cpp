@@ -383,6 +383,10 @@ const std::vector<OptionSpec>& option_table() {
        set_flag([](CliOptions& o) -> bool& { return o.gl_debug; })},
       {"--no-culling", "", kDrawing, "draw the whole scene in every pass (frustum, back-facing meshlet and occlusion culling are on by default)",
        [](std::string_view, CliOptions& o) { o.frustum_culling = false; }},
+      {"--poison-targets", "", kWindow | kRender,
+       "for authors of passes: fill each frame target with a marker (magenta, 0xdeadbeef, depth 0.5) before the pass "
+       "that writes it first, so that texels a pass leaves unwritten show (compare always does)",
+       set_flag([](CliOptions& o) -> bool& { return o.poison_targets; })},
       {"--no-occlusion-culling", "", kDrawing, "draw what is in view even where the depth buffer hides it (occlusion culling is on by default)",
        [](std::string_view, CliOptions& o) { o.occlusion_culling = false; }},
       {"--culling", "WHERE", kDrawing,
@@ -724,6 +728,7 @@ WorldOptions world_options(const CliOptions& options) {
           .shadows = options.shadows,
           .occlusion_culling = options.occlusion_culling,
           .culling_device = options.culling_device,
+          .poison_targets = options.poison_targets,
           .lighting_stage = options.lighting_stage,
           .system_options = options.system_options};
 }

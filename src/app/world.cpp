@@ -192,6 +192,7 @@ void World::apply_settings(const WorldOptions& options) {
   settings.frustum_culling = options.frustum_culling;
   settings.occlusion_culling = options.occlusion_culling;
   settings.culling_device = options.culling_device;
+  settings.poison_targets = options.poison_targets;
   settings.shadows = options.shadows;
   auto& system_options = registry_.resource<SystemOptions>();
   for (const auto& [name, value] : options.system_options) system_options.set(name, value);

@@ -50,6 +50,9 @@ struct WorldOptions {
   bool occlusion_culling = true;
   // --culling: where it tests (render/culling/): CPU or GPU, chosen per driver by default.
   CullingDevice culling_device = CullingDevice::Automatic;
+  // --poison-targets: each target is marked before the pass that writes it
+  // first (render/frame_graph.hpp), so that texels left unwritten show.
+  bool poison_targets = false;
   // --lighting-stage: where full-screen passes run; absent: the scene file's
   // "lighting_stage", else auto (components/technique_options.hpp).
   std::optional<LightingStage> lighting_stage;

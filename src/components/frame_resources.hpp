@@ -58,6 +58,7 @@ struct RendererSettings {
   CullingDevice culling_device = CullingDevice::Automatic;  // where occlusion culling runs (--culling)
   int shadows = 0;                 // lights given shadow maps each frame (--shadows K); 0 is off
   bool redraw_shadows = false;     // draw every map every frame, cached or not (bench --shadow-redraw)
+  bool poison_targets = false;     // mark each target before its first write, so unwritten texels show (--poison-targets)
 };
 
 }  // namespace atrium

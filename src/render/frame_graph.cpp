@@ -60,6 +60,11 @@ bool is_depth(GLenum format) {
 
 bool has_stencil(GLenum format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
 
+bool is_integer(GLenum format) {
+  return format == GL_R16UI || format == GL_R32UI || format == GL_RG16UI || format == GL_RG32UI || format == GL_RGBA16UI ||
+         format == GL_RGBA32UI;
+}
+
 // The barrier a use needs after a write through storage or image access.
 GLbitfield barrier_for(Access access, ResourceKind kind) {
   switch (access) {
@@ -386,6 +391,7 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
     if (compiled_[p].barriers) glMemoryBarrier(compiled_[p].barriers);
     Pass& pass = passes_[p];
     if (!pass.execute) continue;
+    if (poison_) poison_first_writes(static_cast<std::uint32_t>(p));
     const PassResources resources(*this);
     for (const auto& [resource, unit] : pass.units) glBindTextureUnit(unit, resources.texture({resource}));
     if (timer && pass.timed) {
@@ -393,6 +399,34 @@ void FrameGraph::execute(gfx::PassTimer* timer) {
       pass.execute(resources);
     } else {
       pass.execute(resources);
+    }
+  }
+}
+
+void FrameGraph::poison_first_writes(std::uint32_t pass) const {
+  const std::vector<Use>& uses = passes_[pass].uses;
+  for (std::size_t i = 0; i < uses.size(); ++i) {
+    const Resource& r = resources_[uses[i].resource];
+    if (r.kind != ResourceKind::Texture || r.first != pass) continue;
+    // Once per resource, and not when the pass also reads it.
+    const auto same = [&](const Use& u) { return u.resource == uses[i].resource; };
+    if (std::any_of(uses.begin(), uses.begin() + static_cast<std::ptrdiff_t>(i), same)) continue;
+    if (std::any_of(uses.begin(), uses.end(), [&](const Use& u) { return same(u) && !u.write; })) continue;
+    const GLenum format = r.texture.format;
+    if (has_stencil(format)) {
+      // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: the depth as a float, then the stencil in the low byte.
+      const struct { float depth; std::uint32_t stencil; } texel{kPoisonDepth, 0x5au};
+      glClearTexImage(r.object, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, &texel);
+    } else if (is_depth(format)) {
+      glClearTexImage(r.object, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &kPoisonDepth);
+    } else if (format == GL_STENCIL_INDEX8) {
+      const std::uint8_t stencil = 0x5au;
+      glClearTexImage(r.object, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+    } else if (is_integer(format)) {
+      const std::uint32_t texel[4] = {kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier};
+      glClearTexImage(r.object, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texel);
+    } else {
+      glClearTexImage(r.object, 0, GL_RGBA, GL_FLOAT, &kPoison.x);
     }
   }
 }

@@ -9,7 +9,9 @@
 // reads what an earlier pass wrote through storage or image access, and times
 // every pass with the frame's PassTimer. Resources are found by name, so any
 // module of the frame (a debug view, a system that draws; render/frame/frame_modules.hpp)
-// can read what another made.
+// can read what another made. With poisoning on, a texture is filled with a
+// marker before the pass that writes it first, so that what a pass leaves
+// unwritten shows (`--poison-targets`, the comparisons with forward).
 #pragma once
 
 #include <any>
@@ -213,6 +215,18 @@ class FrameGraph {
   // Runs the passes that were not culled, each timed by `timer` when given.
   void execute(gfx::PassTimer* timer);
 
+  // On: before a pass that writes a texture without reading it, and before
+  // any earlier pass used it this frame, execute() fills the texture with
+  // kPoison (colour), kPoisonIdentifier (integer formats) or kPoisonDepth,
+  // untimed. Transient objects hold another resource's texels from an
+  // earlier frame and long-lived ones the last frame's: a pass that leaves a
+  // texel unwritten is a bug these hide, and a marker shows. A pass that
+  // keeps a long-lived texture's texels (a cached shadow map) declares a read.
+  void set_poison(bool on) { poison_ = on; }
+  static constexpr glm::vec4 kPoison{64.0f, 0.0f, 64.0f, 1.0f};  // bright magenta; saturates unorm targets
+  static constexpr std::uint32_t kPoisonIdentifier = 0xdeadbeefu;
+  static constexpr float kPoisonDepth = 0.5f;
+
   [[nodiscard]] const std::vector<CompiledPass>& passes() const { return compiled_; }
   [[nodiscard]] GraphMemory memory() const { return memory_; }
   // Every resource a pass that runs uses, in the order declared.
@@ -260,6 +274,7 @@ class FrameGraph {
   ResourceId create(std::uint32_t pass, Resource resource, Access first_write);
   void use(std::uint32_t pass, ResourceId resource, Access access, bool write);
   GLuint framebuffer(std::span<const ResourceId> colors, ResourceId depth) const;
+  void poison_first_writes(std::uint32_t pass) const;
 
   std::vector<Pass> passes_;
   std::vector<Resource> resources_;
@@ -268,6 +283,7 @@ class FrameGraph {
   std::vector<Slot> slots_;
   std::vector<CompiledPass> compiled_;
   GraphMemory memory_;
+  bool poison_ = false;
 
   // GL objects kept across frames: per description, a list; a frame takes
   // them in order, and those no frame took for a while are released.

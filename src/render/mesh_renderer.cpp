@@ -281,6 +281,7 @@ void MeshRenderer::render(ecs::Registry& registry) {
   begin_frame(registry, settings, lights);
 
   graph_.reset();
+  graph_.set_poison(settings.poison_targets);
   const FrameContext frame = import_targets(registry, lights);
   const FrameTargets frame_targets = targets();
   FrameBuild build{graph_, registry, frame, frame_targets, frame.scene_color, graph_.find("output")};

@@ -7,7 +7,9 @@
 // declared with a view kind are listed for the debug views; what a pass
 // publishes is found by later ones until the next frame; a framebuffer on an
 // imported target is made once and made again after forget_imports(); a
-// texture read with sample_at is bound at its unit when the pass runs.
+// texture read with sample_at is bound at its unit when the pass runs; with
+// poisoning on, what the pass that writes a texture first leaves unwritten
+// holds the marker, and a texture a pass reads before writing keeps its texels.
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -250,6 +252,54 @@ TEST_F(FrameGraphTest, ViewableResourcesArePublishedValuesAndCachedFramebuffersF
   std::vector<float> texels(64 * 32, 0.0f);
   glGetTextureImage(depth.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, static_cast<GLsizei>(texels.size() * sizeof(float)), texels.data());
   EXPECT_EQ(texels[0], 0.25f) << "the pass cleared the owner's current depth target";
+}
+
+TEST_F(FrameGraphTest, PoisoningMarksWhatTheFirstWriterLeavesAndSparesWhatAPassKeeps) {
+  const gfx::Texture kept = gfx::create_render_target(GL_RGBA8, 64, 32);
+  const GLfloat blue[] = {0.0f, 0.0f, 1.0f, 1.0f};
+  glClearTexImage(kept.id(), 0, GL_RGBA, GL_FLOAT, blue);
+  FrameGraph graph;
+  graph.set_poison(true);
+  const ResourceId cached = graph.import_texture("cached", kept.id(), kColour);
+  ResourceId colour, identifiers, depth;
+  graph.add_pass("half", [&](PassBuilder& p) {
+    colour = p.create("colour", kColour);
+    identifiers = p.create("identifiers", TextureDesc{GL_R32UI, {64, 32}, 1});
+    depth = p.create("depth", TextureDesc{GL_DEPTH32F_STENCIL8, {64, 32}, 1});
+    p.read(cached, Access::Attachment);
+    p.write(cached, Access::Attachment);
+  }, [&](const PassResources& r) {
+    // Only the left half of the colour target; the others not at all.
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(0, 0, 32, 32);
+    const GLfloat green[] = {0.0f, 1.0f, 0.0f, 1.0f};
+    glClearNamedFramebufferfv(r.framebuffer({colour}), GL_COLOR, 0, green);
+    glDisable(GL_SCISSOR_TEST);
+  });
+  std::uint8_t left[4] = {}, right[4] = {}, keeps[4] = {};
+  std::uint32_t identifier = 0;
+  float depth_texel = 0.0f;
+  graph.add_pass("read back", [&](PassBuilder& p) {
+    for (const ResourceId t : {colour, identifiers, depth, cached}) p.read(t, Access::Transfer);
+    p.keep();
+  }, [&](const PassResources& r) {
+    glGetTextureSubImage(r.texture(colour), 0, 10, 10, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, 4, left);
+    glGetTextureSubImage(r.texture(colour), 0, 50, 10, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, 4, right);
+    glGetTextureSubImage(r.texture(identifiers), 0, 5, 5, 0, 1, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, 4, &identifier);
+    glGetTextureSubImage(r.texture(depth), 0, 5, 5, 0, 1, 1, 1, GL_DEPTH_COMPONENT, GL_FLOAT, 4, &depth_texel);
+    glGetTextureSubImage(r.texture(cached), 0, 5, 5, 0, 1, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, 4, keeps);
+  });
+  graph.compile();
+  graph.execute(nullptr);
+  EXPECT_EQ(left[0], 0);
+  EXPECT_EQ(left[1], 255) << "what the pass wrote";
+  EXPECT_EQ(right[0], 255);
+  EXPECT_EQ(right[1], 0);
+  EXPECT_EQ(right[2], 255) << "left unwritten: the marker, magenta";
+  EXPECT_EQ(identifier, FrameGraph::kPoisonIdentifier);
+  EXPECT_EQ(depth_texel, FrameGraph::kPoisonDepth);
+  EXPECT_EQ(keeps[2], 255) << "a texture the pass reads before it writes keeps its texels";
+  EXPECT_EQ(keeps[0], 0);
 }
 
 }  // namespace

@@ -71,21 +71,19 @@ void ClusteredTechnique::add_passes(render::FrameGraph& graph, const render::Fra
 }
 
 void ClusteredTechnique::draw_prepass(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
-  render::begin_scene_pass(res, frame, targets);
-  const render::BatchDrawer draw_prepass = [&](std::span<const render::DrawBatch> batches, const render::CommandSource& source) {
-    render::draw_depth(batches, source, position_only_, geometry_);
-  };
+  // Depth, and with MSAA the shading depth: the colour is the shading pass's to clear.
+  const GLuint framebuffer = shading_depth_.valid() ? res.framebuffer({shading_depth_}, frame.scene_depth)
+                                                    : res.framebuffer(std::span<const render::ResourceId>{}, frame.scene_depth);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, targets.size.x, targets.size.y);
   if (shading_depth_.valid()) {
-    const GLuint prepass_framebuffer = res.framebuffer({shading_depth_}, frame.scene_depth);
-    glBindFramebuffer(GL_FRAMEBUFFER, prepass_framebuffer);
     const float far = gfx::kDepthFar;
-    glClearNamedFramebufferfv(prepass_framebuffer, GL_COLOR, 0, &far);
-    frame.draw_first_pass(res, draw_prepass);
-  } else {
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    frame.draw_first_pass(res, draw_prepass);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, &far);
   }
+  render::begin_depth(framebuffer);
+  frame.draw_first_pass(res, [&](std::span<const render::DrawBatch> batches, const render::CommandSource& source) {
+    render::draw_depth(batches, source, position_only_, geometry_);
+  });
 }
 
 void ClusteredTechnique::shade(const render::PassResources& res, const render::FrameContext& frame, const render::FrameTargets& targets) {
@@ -94,8 +92,11 @@ void ClusteredTechnique::shade(const render::PassResources& res, const render::F
     lighting_->run(res, gbuffer_, frame, targets);
     return;
   }
-  glBindFramebuffer(GL_FRAMEBUFFER, render::scene_framebuffer(res, frame));
+  const GLuint framebuffer = render::scene_framebuffer(res, frame);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, targets.size.x, targets.size.y);
+  const float background[] = {frame.background.r, frame.background.g, frame.background.b, 1.0f};
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, background);
   // Every visible fragment is shaded once: its depth is already there.
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(gfx::kDepthCloserOrEqual);
