@@ -65,29 +65,29 @@ void VisibilityTechnique::resize(const render::FrameTargets& targets) {
   const glm::uvec2 tile(classify_.work_group_size());
   tiles_ = (glm::uvec2(glm::max(targets.size, glm::ivec2(0))) + tile - 1u) / tile;
   samples_ = std::max(targets.samples, 1);
-  tile_materials_ = 0;  // the lists are sized by tile count and samples: remade at the next frame
+  material_capacity_ = 0;  // the lists are sized by tile count and samples: remade at the next frame
 }
 
 std::size_t VisibilityTechnique::tile_slots() const {
   const glm::uvec3 tile(classify_.work_group_size());
-  return std::min(tile_materials_, std::size_t{tile.x} * tile.y * static_cast<std::size_t>(samples_));
+  return std::min(material_capacity_, std::size_t{tile.x} * tile.y * static_cast<std::size_t>(samples_));
 }
 
 // The lists: 4 bytes for each material each tile can show.
 std::size_t VisibilityTechnique::tile_list_bytes() const { return tile_count() * tile_slots() * sizeof(std::uint32_t); }
 
 // Each tile's slots: its count of materials, then the materials.
-std::size_t VisibilityTechnique::tile_slot_bytes() const { return tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t); }
+std::size_t VisibilityTechnique::tile_material_bytes() const { return tile_count() * (tile_slots() + 1) * sizeof(std::uint32_t); }
 
 void VisibilityTechnique::reserve_tiles(std::size_t materials) {
-  if (materials <= tile_materials_ && dispatch_) return;
-  tile_materials_ = std::max<std::size_t>({materials, 2 * tile_materials_, 16});
+  if (materials <= material_capacity_ && dispatch_) return;
+  material_capacity_ = std::max<std::size_t>({materials, 2 * material_capacity_, 16});
   dispatch_ = gfx::create_buffer();
   tile_lists_ = gfx::create_buffer();
-  tile_slots_ = gfx::create_buffer();
-  glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(tile_materials_ * sizeof(MaterialTiles)), nullptr, 0);
+  tile_materials_ = gfx::create_buffer();
+  glNamedBufferStorage(dispatch_.id(), static_cast<GLsizeiptr>(material_capacity_ * sizeof(MaterialTiles)), nullptr, 0);
   glNamedBufferStorage(tile_lists_.id(), static_cast<GLsizeiptr>(tile_list_bytes()), nullptr, 0);
-  glNamedBufferStorage(tile_slots_.id(), static_cast<GLsizeiptr>(tile_slot_bytes()), nullptr, 0);
+  glNamedBufferStorage(tile_materials_.id(), static_cast<GLsizeiptr>(tile_material_bytes()), nullptr, 0);
 }
 
 void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::FrameContext& frame, const render::FrameTargets& targets) {
@@ -138,11 +138,11 @@ void VisibilityTechnique::add_passes(render::FrameGraph& graph, const render::Fr
     // As many lists as this frame's materials; a list that occlusion culling's
     // late phase extends with new materials grows them when the pass runs.
     reserve_tiles(frame.draws.list().materials.size());
-    const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {tile_materials_ * sizeof(MaterialTiles)});
+    const render::ResourceId dispatch = graph.import_buffer("material-dispatch", dispatch_.id(), {material_capacity_ * sizeof(MaterialTiles)});
     const render::ResourceId tile_lists =
         graph.import_buffer("material-tiles", tile_lists_.id(), {tile_list_bytes()});
     const render::ResourceId tile_materials =
-        graph.import_buffer("tile-materials", tile_slots_.id(), {tile_slot_bytes()});
+        graph.import_buffer("tile-materials", tile_materials_.id(), {tile_material_bytes()});
     graph.add_pass("material classification", [&](render::PassBuilder& pass) {
       pass.read(identifiers_target_, render::Access::Sampled);
       render::read_draws(pass, frame);
@@ -188,7 +188,7 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
   if (binding_ == MaterialBinding::Bound) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialDispatchBinding, dispatch_.id());
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kMaterialTilesBinding, tile_lists_.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kTileMaterialsBinding, tile_slots_.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kTileMaterialsBinding, tile_materials_.id());
   }
   glBindTextureUnit(render::kVisibilityUnit, res.texture(identifiers_target_));
   lighting::bind_lit_images(res, frame, GL_WRITE_ONLY);

@@ -75,9 +75,9 @@ class VisibilityTechnique final : public LightingTechnique {
   // room for and its samples (a work group of classify_'s pixels, times the samples).
   [[nodiscard]] std::size_t tile_slots() const;
   [[nodiscard]] std::size_t tile_count() const { return std::size_t{tiles_.x} * tiles_.y; }
-  // Sizes of tile_lists_ and tile_slots_, as allocated and as the graph imports them.
+  // Sizes of tile_lists_ and tile_materials_, as allocated and as the graph imports them.
   [[nodiscard]] std::size_t tile_list_bytes() const;
-  [[nodiscard]] std::size_t tile_slot_bytes() const;
+  [[nodiscard]] std::size_t tile_material_bytes() const;
   // The units, the geometry pools, the tile lists, the identifiers and the lit targets.
   void bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const;
 
@@ -92,10 +92,10 @@ class VisibilityTechnique final : public LightingTechnique {
   lighting::ClusterLights clusters_;
   glm::uvec2 tiles_{0};  // tiles per row and column, each a work group of classify_ (its layout is the one fact)
   int samples_ = 1;
-  std::size_t tile_materials_ = 0;  // materials the dispatches hold room for
-  gfx::Buffer dispatch_;            // MaterialTiles of each material
-  gfx::Buffer tile_lists_;          // the materials' lists of tiles, tile_slots() for each tile in all
-  gfx::Buffer tile_slots_;          // each tile's count of materials, then the materials
+  std::size_t material_capacity_ = 0;  // materials the dispatches hold room for
+  gfx::Buffer dispatch_;               // MaterialTiles of each material ("material-dispatch")
+  gfx::Buffer tile_lists_;             // the materials' lists of tiles, tile_slots() for each tile in all ("material-tiles")
+  gfx::Buffer tile_materials_;         // each tile's count of materials, then the materials ("tile-materials")
   gfx::StreamBuffer units_;
   gfx::StreamBuffer material_textures_;  // bindless: MaterialTextures of each material
   std::size_t unit_count_ = 0;  // of this frame, at the start of units_
