@@ -16,7 +16,12 @@ struct Unit {
   uint first_id;
   uint record;
 };
-layout(std430, binding = 24) readonly buffer Units { Unit u_units[]; };
+// C++ twin of the head: VisibilityUnitsHead (why the count, not length()).
+layout(std430, binding = 24) readonly buffer Units {
+  uint u_unit_count;
+  uint u_units_unused;
+  Unit u_units[];
+};
 // assets::Vertex, 16 words: position 0-2, normal 3-5, tangent 6-9, uv0 10-11,
 // uv1 12-13, colour 14-15 (four 16-bit unorms). C++ twin: the pools of GpuAssets.
 layout(std430, binding = 25) readonly buffer VertexPool { uint u_vertex_words[]; };
@@ -29,7 +34,7 @@ const uint kVertexWords = 16u;
 // The unit that holds identifier `id` (> 0): the last whose first identifier
 // is at most `id` (units without triangles share their successor's first).
 uint find_unit(uint id) {
-  uint lo = 0u, hi = uint(u_units.length());
+  uint lo = 0u, hi = u_unit_count;
   while (hi - lo > 1u) {
     uint mid = (lo + hi) / 2u;
     if (u_units[mid].first_id <= id) lo = mid;

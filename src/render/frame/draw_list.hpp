@@ -61,6 +61,15 @@ struct VisibilityUnit {
   std::uint32_t record = kNotDrawn;  // its record in the list's instances, if an opaque command draws it
 };
 static_assert(sizeof(VisibilityUnit) == 8, "must match Unit in shaders/visibility/visibility.glsl");
+// The head of the Units block: how many units follow it. The binary search
+// takes its end from this count, not from the block's length(): GL derives
+// that from the range bound, but Mesa's zink gave the whole buffer's, and the
+// search ran into stale units (the bound resolve shaded one material of many).
+struct VisibilityUnitsHead {
+  std::uint32_t count = 0;
+  std::uint32_t unused = 0;  // the units start 8 bytes in
+};
+static_assert(sizeof(VisibilityUnitsHead) == 8, "must match the head of Units in shaders/visibility/visibility.glsl");
 // The graph's name for the target of those identifiers (R32UI), which the
 // visibility buffer writes and its debug views read.
 inline constexpr char kVisibilityIdsTarget[] = "visibility-ids";

@@ -1,6 +1,7 @@
 #include "render/techniques/visibility/visibility.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <vector>
 
 #include "gfx/depth.hpp"
@@ -19,6 +20,12 @@ std::vector<gfx::ShaderDefine> identifier_defines(bool masked, int samples) {
   std::vector<gfx::ShaderDefine> defines{{"VISIBILITY_ID"}, {masked ? "ALPHA_TEST" : "POSITION_ONLY"}};
   if (samples > 1) defines.push_back({"SHADING_DEPTH"});
   return defines;
+}
+
+// Bytes of the Units block for `units`; a scene without meshes binds room
+// for one unit that nothing reads.
+std::size_t units_bytes(std::size_t units) {
+  return sizeof(render::VisibilityUnitsHead) + std::max<std::size_t>(units, 1) * sizeof(render::VisibilityUnit);
 }
 
 // material_lists.comp's steps.
@@ -180,9 +187,9 @@ void VisibilityTechnique::draw_identifiers(const render::PassResources& res, con
 }
 
 void VisibilityTechnique::bind_inputs(const render::PassResources& res, const render::FrameContext& frame) const {
-  // Bound to the units' size: the binary search takes its end from the block's length.
+  // The head and this frame's units: what the buffer holds past them is stale.
   glBindBufferRange(GL_SHADER_STORAGE_BUFFER, render::kVisibilityUnitsBinding, units_.buffer.id(), 0,
-                    static_cast<GLsizeiptr>(std::max<std::size_t>(unit_count_, 1) * sizeof(render::VisibilityUnit)));
+                    static_cast<GLsizeiptr>(units_bytes(unit_count_)));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kVertexPoolBinding, gpu_.vertex_pool());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kIndexPoolBinding, gpu_.index_pool());
   if (binding_ == MaterialBinding::Bound) {
@@ -195,9 +202,13 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
 }
 
 void VisibilityTechnique::upload_units(const render::DrawList& list) {
-  units_.reserve(sizeof(render::VisibilityUnit));  // a scene without meshes binds one unit nothing reads
-  units_.upload(list.visibility_units.data(), list.visibility_units.size() * sizeof(render::VisibilityUnit));
   unit_count_ = list.visibility_units.size();
+  // The head, then the units (Units in visibility.glsl).
+  const render::VisibilityUnitsHead head{static_cast<std::uint32_t>(unit_count_)};
+  staged_units_.resize(units_bytes(unit_count_));
+  std::memcpy(staged_units_.data(), &head, sizeof(head));
+  std::memcpy(staged_units_.data() + sizeof(head), list.visibility_units.data(), unit_count_ * sizeof(render::VisibilityUnit));
+  units_.upload(staged_units_.data(), staged_units_.size());
 }
 
 std::vector<const render::DrawBatch*> VisibilityTechnique::batches_by_material(const render::DrawList& list) {

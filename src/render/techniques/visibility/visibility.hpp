@@ -17,6 +17,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "render/lighting/cluster_lights.hpp"
@@ -98,7 +99,8 @@ class VisibilityTechnique final : public LightingTechnique {
   gfx::Buffer tile_materials_;         // each tile's count of materials, then the materials ("tile-materials")
   gfx::StreamBuffer units_;
   gfx::StreamBuffer material_textures_;  // bindless: MaterialTextures of each material
-  std::size_t unit_count_ = 0;  // of this frame, at the start of units_
+  std::size_t unit_count_ = 0;  // of this frame, after the head of units_
+  std::vector<std::byte> staged_units_;  // the head and the units, as uploaded
   render::ResourceId identifiers_target_;
   render::ResourceId shading_depth_;  // with MSAA: each sample's depth at its pixel centre
 };
