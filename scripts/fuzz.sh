@@ -34,8 +34,9 @@ for target in "${targets[@]}"; do
     find tests/data/model-tools \( -name '*.obj' -o -name '*.mtl' -o -name '*.fbx' \) -size -400k -exec cp {} "$seeds"/ \;
   elif [ "$target" = texture ]; then
     # Files ImageMagick wrote: DDS (BC1, BC3, uncompressed), PGM, PPM, JPEG in
-    # four layouts, the GIF, PSD and HDR refused, and small PNGs.
-    cp tests/data/model-tools/*.{dds,pgm,ppm,jpg,gif,psd,hdr} "$seeds"/
+    # four layouts, TGA and BMP (one RLE, refused), the GIF, PSD and HDR
+    # refused, and small PNGs.
+    cp tests/data/model-tools/*.{dds,pgm,ppm,jpg,gif,psd,hdr,tga,bmp} "$seeds"/
     find tests/data/model-tools -name '*.png' -size -64k -exec cp {} "$seeds"/ \;
   else
     # Files other tools wrote: meshopt and Draco streams for the decoders.

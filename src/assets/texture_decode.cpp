@@ -72,6 +72,24 @@ std::string pnm_header_error(std::span<const std::uint8_t> bytes) {
   return {};
 }
 
+// Why stb_image cannot read this BMP, or an empty string: it reads BMPs whose
+// pixels are stored plain or under bit masks, but not run-length encoded (RLE8,
+// RLE4) or holding a JPEG or PNG, which it would call an "unknown image type".
+// The compression is the word at byte 30 of every header since Windows 3's
+// (40 bytes or more, its size at byte 14); OS/2's 12-byte header has none.
+std::string bmp_compression_error(std::span<const std::uint8_t> bytes) {
+  if (bytes.size() < 34 || bytes[0] != 'B' || bytes[1] != 'M') return {};
+  const auto word = [&](std::size_t at) {
+    return std::uint32_t{bytes[at]} | std::uint32_t{bytes[at + 1]} << 8 | std::uint32_t{bytes[at + 2]} << 16 | std::uint32_t{bytes[at + 3]} << 24;
+  };
+  if (word(14) < 40) return {};
+  switch (word(30)) {
+    case 1: case 2: return "run-length encoded BMP images are not read: save it uncompressed or as PNG";
+    case 4: case 5: return "BMP images holding a JPEG or PNG are not read: save that JPEG or PNG itself";
+    default: return {};
+  }
+}
+
 // Formats stb_image reads that Atrium does not take as textures: none is a
 // texture format of glTF or of the models Atrium imports, and stb_image's
 // readers of them are the least safe it has (its GIF reader has open
@@ -130,6 +148,7 @@ std::optional<Image> decode_with_stb(std::span<const std::uint8_t> bytes, std::s
     return std::nullopt;
   }
   if (error = pnm_header_error(bytes); !error.empty()) return std::nullopt;
+  if (error = bmp_compression_error(bytes); !error.empty()) return std::nullopt;
   int width = 0, height = 0, channels = 0;
   const int size = static_cast<int>(bytes.size());
   if (!stbi_info_from_memory(bytes.data(), size, &width, &height, &channels)) {

@@ -119,6 +119,36 @@ TEST(TextureDecode, PgmAndPpmDecodeToThePictureOfTheirPngTwins) {
   EXPECT_TRUE(varied) << "a picture, not a flat fill";
 }
 
+// ImageMagick's TGA (colour-mapped plain and run-length encoded, true-colour
+// RLE, 32-bit with alpha) and BMP (24-bit, 32-bit with an alpha mask) decode
+// to the pixels of their PNG twins, alpha included.
+TEST(TextureDecode, TgaAndBmpDecodeToThePictureOfTheirPngTwins) {
+  for (const auto& [file, png] : {std::pair{"bricks.rgb8.tga", "bricks.rgb8.png"}, std::pair{"bricks.rle.tga", "bricks.rgb8.png"},
+                                  std::pair{"bricks.truecolor-rle.tga", "bricks.rgb8.png"}, std::pair{"leaves.rgba8.tga", "leaves.rgba8.png"},
+                                  std::pair{"bricks.rgb8.bmp", "bricks.rgb8.png"}, std::pair{"leaves.rgba8.bmp", "leaves.rgba8.png"}}) {
+    const Image decoded = decoded_image(file), twin = decoded_image(png);
+    ASSERT_EQ(decoded.width, twin.width) << file;
+    ASSERT_EQ(decoded.height, twin.height) << file;
+    EXPECT_EQ(decoded.rgba, twin.rgba) << file << " against " << png;
+  }
+  // The alpha is a picture too: the leaves' cut-outs, not one value.
+  const Image leaves = decoded_image("leaves.rgba8.tga");
+  bool clear = false, opaque = false;
+  for (std::size_t i = 3; i < leaves.rgba.size(); i += 4) {
+    clear = clear || leaves.rgba[i] == 0;
+    opaque = opaque || leaves.rgba[i] == 255;
+  }
+  EXPECT_TRUE(clear && opaque);
+}
+
+// ImageMagick's run-length encoded BMP, which stb_image does not read (it
+// said "unknown image type"), is refused in one line that says what to do.
+TEST(TextureDecode, RunLengthEncodedBmpIsRefusedSayingWhy) {
+  const DecodedTexture decoded = decode_texture(read(kFixtures / "bricks.rle8.bmp"), ColorSpace::Srgb, std::size_t{1} << 30);
+  EXPECT_FALSE(decoded.texture);
+  EXPECT_EQ(decoded.error, "run-length encoded BMP images are not read: save it uncompressed or as PNG");
+}
+
 // Their 16-bit files are refused in one line: stb_image misread them (the
 // wrong byte order) and read past its buffer.
 TEST(TextureDecode, SixteenBitPgmAndPpmAreRefusedNotMisread) {

@@ -49,6 +49,21 @@ $im bricks.32.png -quality 90 -sampling-factor 2x2 bricks.baseline.jpg
 $im bricks.32.png -quality 90 -interlace JPEG bricks.progressive.jpg
 $im bricks.32.png -quality 90 -colorspace Gray bricks.grey.jpg
 $im bricks.32.png -quality 90 -colorspace CMYK bricks.cmyk.jpg
+# TGA and BMP, which stb_image reads for Atrium, with PNG twins: colour-mapped
+# TGA from the top-left corner, the rest from the bottom-left, as most tools
+# write it (colour-mapped run-length encoded, true-colour RLE, 32-bit with
+# alpha); 24-bit BMP, 32-bit BMP with an alpha mask, and an RLE8 BMP
+# (stb_image reads no RLE BMP: refused in one line). ImageMagick 6.9 writes
+# a PNG's rows top row first under a bottom-left header (PIL and stb_image
+# read it upside down): -flip -orient BottomLeft stores them as declared.
+$im leaves.png -resize 32x32 -depth 8 PNG32:leaves.rgba8.png
+$im bricks.rgb8.png -orient TopLeft bricks.rgb8.tga
+$im bricks.rgb8.png -flip -orient BottomLeft -compress RLE bricks.rle.tga
+$im bricks.rgb8.png -flip -orient BottomLeft -type TrueColor -compress RLE bricks.truecolor-rle.tga
+$im leaves.rgba8.png -flip -orient BottomLeft leaves.rgba8.tga
+$im bricks.rgb8.png -type TrueColor BMP3:bricks.rgb8.bmp
+$im leaves.rgba8.png BMP:leaves.rgba8.bmp
+$im bricks.rgb8.png -type Palette -compress RLE BMP3:bricks.rle8.bmp
 # Formats stb_image reads that Atrium refuses as textures, 8x8.
 for format in gif psd hdr; do $im bricks.png -resize 8x8 bricks.8.$format; done
 
