@@ -6,6 +6,7 @@
 
 #include <zlib.h>
 
+#include "assets/byte_order.hpp"
 #include "assets/load_budget.hpp"
 
 namespace atrium::assets {
@@ -14,12 +15,6 @@ namespace {
 constexpr char kMagic[] = "Kaydara FBX Binary  ";
 // zlib's deflate expands at most 1032:1 (RFC 1951 blocks of 258-byte matches).
 constexpr std::uint64_t kInflateRatio = 1032;
-
-std::uint64_t read_le(std::span<const std::uint8_t> bytes, std::size_t at, std::size_t size) {
-  std::uint64_t value = 0;
-  for (std::size_t i = 0; i < size; ++i) value |= static_cast<std::uint64_t>(bytes[at + i]) << (8 * i);
-  return value;
-}
 
 std::size_t element_size(std::uint8_t type) {
   switch (type) {

@@ -12,6 +12,7 @@
 
 #include "assets/dds.hpp"
 #include "assets/image_decoders.hpp"
+#include "assets/byte_order.hpp"
 #include "assets/load_budget.hpp"
 #include "base/parallel.hpp"
 
@@ -79,11 +80,8 @@ std::string pnm_header_error(std::span<const std::uint8_t> bytes) {
 // (40 bytes or more, its size at byte 14); OS/2's 12-byte header has none.
 std::string bmp_compression_error(std::span<const std::uint8_t> bytes) {
   if (bytes.size() < 34 || bytes[0] != 'B' || bytes[1] != 'M') return {};
-  const auto word = [&](std::size_t at) {
-    return std::uint32_t{bytes[at]} | std::uint32_t{bytes[at + 1]} << 8 | std::uint32_t{bytes[at + 2]} << 16 | std::uint32_t{bytes[at + 3]} << 24;
-  };
-  if (word(14) < 40) return {};
-  switch (word(30)) {
+  if (read_le(bytes, 14, 4) < 40) return {};
+  switch (read_le(bytes, 30, 4)) {
     case 1: case 2: return "run-length encoded BMP images are not read: save it uncompressed or as PNG";
     case 4: case 5: return "BMP images holding a JPEG or PNG are not read: save that JPEG or PNG itself";
     default: return {};
