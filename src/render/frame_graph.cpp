@@ -11,37 +11,41 @@ namespace {
 // switched off, a size changed): a few, so that toggles do not churn.
 constexpr int kIdleFramesKept = 3;
 
-// Every texture format a frame target is made in: its name for listings and
-// its bytes per texel (per sample).
+// What a format's texels hold: which clears and attachments it takes.
+enum class Texels : std::uint8_t { Color, Integer, Depth, DepthStencil, Stencil };
+
+// Every texture format a frame target is made in: its name for listings, its
+// bytes per texel (per sample) and what its texels hold.
 struct FormatRow {
   GLenum format;
   const char* name;
   std::size_t bytes;
+  Texels texels = Texels::Color;
 };
 constexpr FormatRow kFormats[] = {
     {GL_R8, "R8", 1},
-    {GL_STENCIL_INDEX8, "S8", 1},
+    {GL_STENCIL_INDEX8, "S8", 1, Texels::Stencil},
     {GL_RG8, "RG8", 2},
     {GL_R16F, "R16F", 2},
-    {GL_R16UI, "R16UI", 2},
+    {GL_R16UI, "R16UI", 2, Texels::Integer},
     {GL_RGBA8, "RGBA8", 4},
     {GL_SRGB8_ALPHA8, "SRGB8_A8", 4},
     {GL_R32F, "R32F", 4},
-    {GL_R32UI, "R32UI", 4},
+    {GL_R32UI, "R32UI", 4, Texels::Integer},
     {GL_RG16F, "RG16F", 4},
     {GL_RGB10_A2, "RGB10_A2", 4},
     {GL_R11F_G11F_B10F, "R11F_G11F_B10F", 4},
-    {GL_DEPTH24_STENCIL8, "D24S8", 4},
-    {GL_DEPTH_COMPONENT32F, "D32F", 4},
-    {GL_RG16UI, "RG16UI", 4},
-    {GL_DEPTH32F_STENCIL8, "D32FS8", 8},  // 32-bit depth, 8-bit stencil, padded as drivers store it
+    {GL_DEPTH24_STENCIL8, "D24S8", 4, Texels::DepthStencil},
+    {GL_DEPTH_COMPONENT32F, "D32F", 4, Texels::Depth},
+    {GL_RG16UI, "RG16UI", 4, Texels::Integer},
+    {GL_DEPTH32F_STENCIL8, "D32FS8", 8, Texels::DepthStencil},  // 32-bit depth, 8-bit stencil, padded as drivers store it
     {GL_RGBA16F, "RGBA16F", 8},
     {GL_RGBA16, "RGBA16", 8},
     {GL_RG32F, "RG32F", 8},
-    {GL_RG32UI, "RG32UI", 8},
-    {GL_RGBA16UI, "RGBA16UI", 8},
+    {GL_RG32UI, "RG32UI", 8, Texels::Integer},
+    {GL_RGBA16UI, "RGBA16UI", 8, Texels::Integer},
     {GL_RGBA32F, "RGBA32F", 16},
-    {GL_RGBA32UI, "RGBA32UI", 16},
+    {GL_RGBA32UI, "RGBA32UI", 16, Texels::Integer},
 };
 
 const FormatRow& format_row(GLenum format) {
@@ -54,16 +58,11 @@ const FormatRow& format_row(GLenum format) {
 std::size_t bytes_per_texel(GLenum format) { return format_row(format).bytes; }
 
 bool is_depth(GLenum format) {
-  return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8 || format == GL_DEPTH_COMPONENT32F ||
-         format == GL_DEPTH_COMPONENT24 || format == GL_DEPTH_COMPONENT16;
+  const Texels texels = format_row(format).texels;
+  return texels == Texels::Depth || texels == Texels::DepthStencil;
 }
 
-bool has_stencil(GLenum format) { return format == GL_DEPTH24_STENCIL8 || format == GL_DEPTH32F_STENCIL8; }
-
-bool is_integer(GLenum format) {
-  return format == GL_R16UI || format == GL_R32UI || format == GL_RG16UI || format == GL_RG32UI || format == GL_RGBA16UI ||
-         format == GL_RGBA32UI;
-}
+bool has_stencil(GLenum format) { return format_row(format).texels == Texels::DepthStencil; }
 
 // The barrier a use needs after a write through storage or image access.
 GLbitfield barrier_for(Access access, ResourceKind kind) {
@@ -412,21 +411,25 @@ void FrameGraph::poison_first_writes(std::uint32_t pass) const {
     const auto same = [&](const Use& u) { return u.resource == uses[i].resource; };
     if (std::any_of(uses.begin(), uses.begin() + static_cast<std::ptrdiff_t>(i), same)) continue;
     if (std::any_of(uses.begin(), uses.end(), [&](const Use& u) { return same(u) && !u.write; })) continue;
-    const GLenum format = r.texture.format;
-    if (has_stencil(format)) {
-      // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: the depth as a float, then the stencil in the low byte.
-      const struct { float depth; std::uint32_t stencil; } texel{kPoisonDepth, 0x5au};
-      glClearTexImage(r.object, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, &texel);
-    } else if (is_depth(format)) {
-      glClearTexImage(r.object, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &kPoisonDepth);
-    } else if (format == GL_STENCIL_INDEX8) {
-      const std::uint8_t stencil = 0x5au;
-      glClearTexImage(r.object, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
-    } else if (is_integer(format)) {
-      const std::uint32_t texel[4] = {kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier};
-      glClearTexImage(r.object, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texel);
-    } else {
-      glClearTexImage(r.object, 0, GL_RGBA, GL_FLOAT, &kPoison.x);
+    switch (format_row(r.texture.format).texels) {
+      case Texels::DepthStencil: {
+        // GL_FLOAT_32_UNSIGNED_INT_24_8_REV: the depth as a float, then the stencil in the low byte.
+        const struct { float depth; std::uint32_t stencil; } texel{kPoisonDepth, 0x5au};
+        glClearTexImage(r.object, 0, GL_DEPTH_STENCIL, GL_FLOAT_32_UNSIGNED_INT_24_8_REV, &texel);
+        break;
+      }
+      case Texels::Depth: glClearTexImage(r.object, 0, GL_DEPTH_COMPONENT, GL_FLOAT, &kPoisonDepth); break;
+      case Texels::Stencil: {
+        const std::uint8_t stencil = 0x5au;
+        glClearTexImage(r.object, 0, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, &stencil);
+        break;
+      }
+      case Texels::Integer: {
+        const std::uint32_t texel[4] = {kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier, kPoisonIdentifier};
+        glClearTexImage(r.object, 0, GL_RGBA_INTEGER, GL_UNSIGNED_INT, texel);
+        break;
+      }
+      case Texels::Color: glClearTexImage(r.object, 0, GL_RGBA, GL_FLOAT, &kPoison.x); break;
     }
   }
 }
