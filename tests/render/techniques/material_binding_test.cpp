@@ -26,6 +26,8 @@ namespace {
 namespace fs = std::filesystem;
 using testing::kSize;
 
+const fs::path kSponza = fs::path(ATRIUM_TESTDATA_DIR) / "scenes/sponza-crytek/Sponza.gltf";
+
 TechniqueOptions binding(MaterialBinding binding, int msaa = 1) {
   TechniqueOptions options;
   options.material_binding = binding;
@@ -61,9 +63,8 @@ TEST_F(BindlessMaterials, AutoTakesBindlessAndDrawsForwardsPictureFromEveryView)
 }
 
 TEST_F(BindlessMaterials, SponzaMatchesForward) {
-  const fs::path sponza = fs::path(ATRIUM_TESTDATA_DIR) / "scenes/sponza-crytek/Sponza.gltf";
-  if (!fs::exists(sponza)) GTEST_SKIP() << sponza << " is not here";
-  World world({.scene = sponza.string(), .lights = 64, .mode = "forward", .size = kSize,
+  if (!fs::exists(kSponza)) GTEST_SKIP() << kSponza << " is not here";
+  World world({.scene = kSponza.string(), .lights = 64, .mode = "forward", .size = kSize,
                .technique_options = binding(MaterialBinding::Bindless)});
   testing::expect_forward_picture_from_every_view(world, "visibility-buffer", "bindless_sponza", 0.002);
 }
@@ -118,9 +119,8 @@ TEST_F(BoundMaterials, DrawForwardsPictureWhereBindlessIsTheDefault) {
   World world({.scene = "atrium", .lights = 64, .mode = "forward", .size = kSize, .technique_options = binding(MaterialBinding::Bound)});
   testing::expect_forward_picture_from_every_view(world, "visibility-buffer", "bound_atrium", 0.0005);
   EXPECT_EQ(world.renderer().stats().technique_variant, "material binding bound");
-  const fs::path sponza = fs::path(ATRIUM_TESTDATA_DIR) / "scenes/sponza-crytek/Sponza.gltf";
-  if (!fs::exists(sponza)) GTEST_SKIP() << sponza << " is not here";
-  World sponza_world({.scene = sponza.string(), .lights = 64, .mode = "forward", .size = kSize,
+  if (!fs::exists(kSponza)) GTEST_SKIP() << kSponza << " is not here";
+  World sponza_world({.scene = kSponza.string(), .lights = 64, .mode = "forward", .size = kSize,
                       .technique_options = binding(MaterialBinding::Bound)});
   testing::expect_forward_picture_from_every_view(sponza_world, "visibility-buffer", "bound_sponza", 0.002);
 }
