@@ -10,6 +10,8 @@ struct Light {
   vec4 direction;        // xyz: where a spot or directional light points
   vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x,
                          // z = 1 + first shadow view (0: unshadowed), w = shadow view count
+  // A point light that moves on the GPU holds its motion in direction (origin,
+  // circle radius) and spot.xy (phase, angular speed): render::with_motion.
 };
 
 #ifdef NO_STORAGE_BUFFERS
@@ -25,7 +27,13 @@ Light light_at(uint i) {
                texelFetch(u_light_texture, at + ivec2(2, 0), 0), texelFetch(u_light_texture, at + ivec2(3, 0), 0));
 }
 #else
+#ifdef MOVES_LIGHTS
+// The light animation's pass (light_animation/move_lights.comp) places the
+// lights that move on the GPU; every other shader only reads them.
+layout(std430, binding = 0) buffer LightBlock {
+#else
 layout(std430, binding = 0) readonly buffer LightBlock {
+#endif
   Light u_lights[];
 };
 

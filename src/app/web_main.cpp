@@ -330,7 +330,7 @@ void start_world(Page& page, std::vector<std::string> args) {
   world->registry().resource<RendererSettings>().present_to_window = true;
   register_input(world->scheduler(), world->registry(), page.context->window());
   register_fly_camera(world->scheduler());
-  register_light_animation(world->scheduler());
+  register_light_animation(world->scheduler(), world->registry());
   world->registry().set_resource<DemoRequests>();
   page.lights_given = options.lights.has_value();
   page.scene_lights = world->light_count();

@@ -136,7 +136,7 @@ int run_window(const CliOptions& options) {
   world.registry().resource<RendererSettings>().present_to_window = true;
   register_input(world.scheduler(), world.registry(), window);
   register_fly_camera(world.scheduler());
-  register_light_animation(world.scheduler());
+  register_light_animation(world.scheduler(), world.registry());
   register_overlay(world.registry(), window);
   world.registry().resource<OverlayState>().key_help = window_key_help();
   say("renderer: " + context->info().renderer);

@@ -189,6 +189,8 @@ void World::apply_settings(const WorldOptions& options) {
       compute_free_noted_ = true;
     }
   }
+  // With compute shaders the light animation moves point lights on the GPU.
+  registry_.resource<LightAnimationSettings>().on_gpu = !settings.technique_options.compute_free;
   settings.frustum_culling = options.frustum_culling;
   settings.occlusion_culling = options.occlusion_culling;
   settings.culling_device = options.culling_device;

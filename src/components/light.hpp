@@ -36,7 +36,9 @@ struct DirectionalLight {};
 
 // Moves a light from `origin` (systems/light_animation.hpp) round a horizontal
 // circle of `radius` metres through it, with a gentle vertical bob; lights
-// differ by `phase`.
+// differ by `phase`. While it moves, where it is comes from here, not from its
+// Transform: on the GPU (LightAnimationSettings::on_gpu) its Transform stays
+// at the origin.
 struct LightAnimation {
   glm::vec3 origin{0.0f};
   float phase = 0.0f;
@@ -44,10 +46,27 @@ struct LightAnimation {
   float angular_speed = 0.6f;  // radians per second
 };
 
+// Where `animation` puts its light `time` seconds in. The GPU's twin is
+// moved_position in shaders/light_animation/move_lights.comp.
+[[nodiscard]] glm::vec3 animated_position(const LightAnimation& animation, double time);
+
 // Shared by every LightAnimation: `p` in the window pauses them.
 struct LightAnimationSettings {
   bool paused = false;
   double time = 0.0;  // seconds of animation so far (stops while paused)
+  // Point lights move on the GPU: the LightBuffer sends their LightAnimation
+  // once, in the light's record, and the light_animation system's compute
+  // pass places them every frame, so that a million moving lights cost the
+  // CPU nothing. Set by the World where the context runs compute shaders;
+  // spot and directional lights (whose records have no room for a motion)
+  // and every light on the compute-free tier move on the CPU.
+  bool on_gpu = false;
 };
+
+// Whether a light with a LightAnimation moves on the GPU: a point light (no
+// SpotCone, no DirectionalLight) while the settings say so.
+[[nodiscard]] inline bool moves_on_gpu(const LightAnimationSettings& settings, bool spot, bool directional) {
+  return settings.on_gpu && !spot && !directional;
+}
 
 }  // namespace atrium

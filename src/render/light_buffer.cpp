@@ -35,10 +35,17 @@ bool finite(const glm::vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y
 
 // What keeps a light from being drawn; asked of every light every frame, so
 // it builds no text (describe() does, for the few that fail).
-enum class LightFault { None, Position, Rotation, Colour, Intensity, Radius };
+enum class LightFault { None, Position, Rotation, Colour, Intensity, Radius, Animation };
 
-inline LightFault light_fault(const Transform& transform, const LightColor& light, const LightRadius* radius, bool directional) {
-  if (!directional && !finite(transform.position)) return LightFault::Position;
+// `moving`: its LightAnimation when the light moves on the GPU, which then
+// places it rather than its Transform.
+inline LightFault light_fault(const Transform& transform, const LightColor& light, const LightRadius* radius, bool directional,
+                              const LightAnimation* moving) {
+  if (moving && !(finite(moving->origin) && std::isfinite(moving->radius) && std::isfinite(moving->phase) &&
+                  std::isfinite(moving->angular_speed))) {
+    return LightFault::Animation;
+  }
+  if (!moving && !directional && !finite(transform.position)) return LightFault::Position;
   if (!finite(glm::vec3(transform.rotation.x, transform.rotation.y, transform.rotation.z)) || !std::isfinite(transform.rotation.w))
     return LightFault::Rotation;
   if (!finite(light.color) || light.color.r < 0.0f || light.color.g < 0.0f || light.color.b < 0.0f) return LightFault::Colour;
@@ -47,8 +54,12 @@ inline LightFault light_fault(const Transform& transform, const LightColor& ligh
   return LightFault::None;
 }
 
-std::string describe(LightFault fault, const Transform& transform, const LightColor& light, const LightRadius* radius) {
+std::string describe(LightFault fault, const Transform& transform, const LightColor& light, const LightRadius* radius,
+                     const LightAnimation* moving) {
   switch (fault) {
+    case LightFault::Animation:
+      return "animation (origin " + describe(moving->origin) + ", radius " + describe(moving->radius) + ", phase " +
+             describe(moving->phase) + ", angular speed " + describe(moving->angular_speed) + ") is not finite";
     case LightFault::Position: return "position " + describe(transform.position) + " is not finite";
     case LightFault::Rotation: return "rotation is not finite";
     case LightFault::Colour: return "colour " + describe(light.color) + " is negative or not finite";
@@ -70,16 +81,21 @@ struct LightLookups {
       : transform(registry.lookup<Transform>()),
         radius(registry.lookup<LightRadius>()),
         cone(registry.lookup<SpotCone>()),
-        directional(registry.lookup<DirectionalLight>()) {}
+        directional(registry.lookup<DirectionalLight>()),
+        animation(registry.lookup<LightAnimation>()) {
+    if (const auto* found = registry.try_resource<LightAnimationSettings>()) settings = *found;
+  }
   ecs::Registry::Lookup<const Transform> transform;
   ecs::Registry::Lookup<const LightRadius> radius;
   ecs::Registry::Lookup<const SpotCone> cone;
   ecs::Registry::Lookup<const DirectionalLight> directional;
+  ecs::Registry::Lookup<const LightAnimation> animation;
+  LightAnimationSettings settings;
 };
 
 // The slots a light's other components hold, widened by each light visited.
 struct SlotSpans {
-  std::array<SlotRange, 4> slots;  // LightBlock::slots' order
+  std::array<SlotRange, 5> slots;  // LightBlock::slots' order
   void add(std::size_t pool, std::uint32_t slot) {
     SlotRange& range = slots[pool];
     if (range.first == range.end) range = {slot, slot + 1};
@@ -100,20 +116,24 @@ void visit_light(LightLookups& pools, ecs::Entity entity, const LightColor& colo
   const LightRadius* radius = pools.radius.find(entity);
   const SpotCone* cone = pools.cone.find(entity);
   const bool directional = pools.directional.find(entity) != nullptr;
+  const LightAnimation* animation = pools.animation.find(entity);
   if (spans) {
     spans->add(0, pools.transform.last_slot());
     if (radius) spans->add(1, pools.radius.last_slot());
     if (cone) spans->add(2, pools.cone.last_slot());
     if (directional) spans->add(3, pools.directional.last_slot());
+    if (animation) spans->add(4, pools.animation.last_slot());
   }
-  if (const LightFault fault = light_fault(*transform, color, radius, directional); fault != LightFault::None) {
-    rejected(entity, describe(fault, *transform, color, radius));
+  const LightAnimation* moving = animation && moves_on_gpu(pools.settings, cone != nullptr, directional) ? animation : nullptr;
+  if (const LightFault fault = light_fault(*transform, color, radius, directional, moving); fault != LightFault::None) {
+    rejected(entity, describe(fault, *transform, color, radius, moving));
     return;
   }
   GpuLightKind kind = directional ? GpuLightKind::Directional : cone ? GpuLightKind::Spot : GpuLightKind::Point;
   const float r = directional ? 0.0f : radius ? radius->radius : lighting::light_radius_from_intensity(color.color, color.intensity);
   GpuLight gpu{glm::vec4(transform->position, r), glm::vec4(color.color * color.intensity, static_cast<float>(kind)),
                glm::vec4(transform->rotation * glm::vec3(0.0f, 0.0f, -1.0f), 0.0f), glm::vec4(0.0f)};
+  if (moving) gpu = with_motion(gpu, *moving);
   if (cone) {
     // glTF's smooth spot falloff: clamp(cos * scale + offset, 0, 1)^2.
     const float cos_outer = std::cos(cone->outer_cone), cos_inner = std::cos(cone->inner_cone);
@@ -146,7 +166,7 @@ struct SkipTest {
       return range.first != range.end && registry.written_since<decltype(component)>(range.first, range.end, since);
     };
     return !registry.written_since<LightColor>(first, end, since) && !written(Transform{}, 0) && !written(LightRadius{}, 1) &&
-           !written(SpotCone{}, 2) && !written(DirectionalLight{}, 3);
+           !written(SpotCone{}, 2) && !written(DirectionalLight{}, 3) && !written(LightAnimation{}, 4);
   }
 };
 
@@ -210,10 +230,14 @@ std::size_t walk_chunk(const ecs::Registry& registry, LightBuffer& state, LightC
 }
 
 // The light pools' structure versions: lights added or removed, or given or
-// losing a component, change them (and a frame then walks every light).
-std::array<std::uint64_t, 5> light_structure(const ecs::Registry& registry) {
-  return {registry.structure_version<LightColor>(), registry.structure_version<Transform>(), registry.structure_version<LightRadius>(),
-          registry.structure_version<SpotCone>(), registry.structure_version<DirectionalLight>()};
+// losing a component, change them (and a frame then walks every light); and
+// whether animations move on the GPU, which changes what a record holds.
+std::array<std::uint64_t, 7> light_structure(const ecs::Registry& registry) {
+  const auto* animations = registry.try_resource<LightAnimationSettings>();
+  return {registry.structure_version<LightColor>(),      registry.structure_version<Transform>(),
+          registry.structure_version<LightRadius>(),     registry.structure_version<SpotCone>(),
+          registry.structure_version<DirectionalLight>(), registry.structure_version<LightAnimation>(),
+          animations && animations->on_gpu ? 1u : 0u};
 }
 
 // Overwrites the buffer's staging copy with this frame's lights where they
@@ -233,7 +257,7 @@ std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer
   const std::size_t total = registry.count<LightColor>();
   const std::size_t chunks = share_count(total, kLightsPerThread);
   const bool same_split = state.chunks.size() == chunks && state.pool_size == total;
-  const std::array<std::uint64_t, 5> structure = light_structure(registry);
+  const std::array<std::uint64_t, 7> structure = light_structure(registry);
   std::sort(state.patched.begin(), state.patched.end());
   const SkipTest skip{state.seen, state.patched};
   const bool may_skip = same_split && state.seen != 0 && structure == state.structure;
@@ -341,6 +365,22 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
       state->uploaded += static_cast<std::uint32_t>(run.end - run.begin);
     }
   });
+}
+
+GpuLight with_motion(GpuLight light, const LightAnimation& animation) {
+  light.position_radius = glm::vec4(animation.origin, light.position_radius.w);
+  light.direction = glm::vec4(animation.origin, animation.radius);
+  light.spot = glm::vec4(animation.phase, animation.angular_speed, light.spot.z, light.spot.w);
+  return light;
+}
+
+bool moves_on_gpu(const GpuLight& light) {
+  return light.color_kind.w == static_cast<float>(GpuLightKind::Point) && light.direction.w != 0.0f;
+}
+
+glm::vec3 moved_position(const GpuLight& light, double time) {
+  if (!moves_on_gpu(light)) return glm::vec3(light.position_radius);
+  return animated_position(LightAnimation{glm::vec3(light.direction), light.spot.x, light.direction.w, light.spot.y}, time);
 }
 
 std::uint32_t shadowed_light_count(std::span<const GpuLight> lights) {

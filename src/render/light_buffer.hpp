@@ -3,7 +3,9 @@
 // DirectionalLight) into one shader storage buffer each frame, sending only the
 // lights that changed since the last frame, and walking only the blocks of
 // lights that something wrote (the registry's change detection): lights that
-// hold still cost nothing a frame. The buffer grows
+// hold still cost nothing a frame. Point lights that move on the GPU
+// (LightAnimationSettings::on_gpu) hold still here: their records carry the
+// motion (with_motion), which the light animation's pass plays. The buffer grows
 // geometrically up to what one storage buffer may hold (gfx::storage_block_limit),
 // beyond which the frame is refused with gfx::ResourceLimitError. Lights whose
 // values cannot be drawn (NaN, infinite, negative) are left out with a warning.
@@ -18,6 +20,7 @@
 
 #include <glm/glm.hpp>
 
+#include "components/light.hpp"
 #include "ecs/scheduler.hpp"
 #include "gfx/gl_object.hpp"
 
@@ -33,8 +36,22 @@ struct GpuLight {
   glm::vec4 spot;             // x = 1 / (cos inner - cos outer), y = -cos outer * x
   // z: 1 + the index of its first ShadowView when the light is shadowed this
   // frame, else 0 (written by the ShadowAtlas); w: its view count.
+  // A point light that moves on the GPU (with_motion) holds its motion where
+  // a point light has no use for a direction or a cone: direction = (origin,
+  // circle radius), spot.xy = (phase, angular speed); position_radius.xyz is
+  // its origin here and where it is this frame in the GPU's copy.
 };
 static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights.glsl");
+
+// `light` (a point light) carrying `animation`, for the GPU to move
+// (LightAnimationSettings::on_gpu).
+[[nodiscard]] GpuLight with_motion(GpuLight light, const LightAnimation& animation);
+// Whether `light` carries a motion (with_motion): the C++ twin of
+// moves_on_gpu in shaders/light_animation/move_lights.comp.
+[[nodiscard]] bool moves_on_gpu(const GpuLight& light);
+// Where the GPU places `light` `time` seconds in: its position when it does
+// not move (for the few lights the CPU must place, the shadowed ones).
+[[nodiscard]] glm::vec3 moved_position(const GpuLight& light, double time);
 
 // The indices of the directional lights among `lights`: volume techniques
 // light each in a full-screen pass of its own.
@@ -66,7 +83,7 @@ struct SlotRange {
 struct LightBlock {
   std::uint32_t drawable = 0;  // lights it put in the buffer
   std::uint32_t rejected = 0;  // light entities it left out
-  std::array<SlotRange, 4> slots;  // of its lights' Transform, LightRadius, SpotCone, DirectionalLight
+  std::array<SlotRange, 5> slots;  // of its lights' Transform, LightRadius, SpotCone, DirectionalLight, LightAnimation
 };
 
 // A share of the LightColor pool, walked by one thread (LightBuffer::chunks).
@@ -95,7 +112,7 @@ struct LightBuffer {
   // Change detection: the change clock the last walk took (0: none yet) and
   // the light pools' structure then (ecs::Registry::structure_version).
   std::uint64_t seen = 0;
-  std::array<std::uint64_t, 5> structure{};
+  std::array<std::uint64_t, 7> structure{};
   // Indices of the staging copy that a later system changed this frame (the
   // ShadowAtlas moves shadowed lights to the front): the next walk visits
   // them whatever the registry says, to put them back.

@@ -1,9 +1,13 @@
 #include "systems/light_animation.hpp"
 
-#include <cmath>
+#include <memory>
 #include <span>
+#include <utility>
 
 #include "base/parallel.hpp"
+#include "render/binding_slots.hpp"
+#include "render/frame/frame_modules.hpp"
+#include "render/gpu_assets.hpp"
 
 namespace atrium {
 namespace {
@@ -11,35 +15,83 @@ namespace {
 // Below this many animated lights a second thread costs more than it saves.
 constexpr std::size_t kAnimationsPerThread = 8192;
 
-}  // namespace
-
-glm::vec3 animated_position(const LightAnimation& animation, double time) {
-  // Offset so that the circle passes through the origin at time 0: the scene
-  // starts as the file placed it.
-  const auto angle = static_cast<float>(animation.phase + animation.angular_speed * time);
-  const glm::vec3 start(std::cos(animation.phase), 0.25f * std::sin(2.0f * animation.phase), std::sin(animation.phase));
-  return animation.origin +
-         animation.radius * (glm::vec3(std::cos(angle), 0.25f * std::sin(2.0f * angle), std::sin(angle)) - start);
+// Moves the Transforms of the animated lights that have a `Component` along
+// their circles (a walk over that component's pool, a small one).
+template <typename Component>
+void move_lights_with(ecs::Registry& registry, double time) {
+  ecs::Registry::Lookup<const LightAnimation> animations = std::as_const(registry).lookup<LightAnimation>();
+  ecs::Registry::Lookup<Transform> transforms = registry.lookup<Transform>();
+  for (const ecs::Entity e : registry.entities_with<Component>()) {
+    const LightAnimation* animation = animations.find(e);
+    Transform* transform = animation ? transforms.find(e) : nullptr;
+    if (transform) transform->position = animated_position(*animation, time);
+  }
 }
 
-void register_light_animation(ecs::Scheduler& scheduler) {
+// Every animated light's Transform, split over threads from a few thousand
+// lights: at 2^20 one thread takes tens of milliseconds. Each writes the
+// Transforms of its own share.
+void move_every_light(ecs::Registry& registry, double time) {
+  const std::span<const ecs::Entity> entities = registry.entities_with<LightAnimation>();
+  const std::span<const LightAnimation> animations = registry.components_of<LightAnimation>();
+  const std::size_t shares = share_count(entities.size(), kAnimationsPerThread);
+  run_in_parallel(shares, [&](std::size_t share) {
+    ecs::Registry::Lookup<Transform> transforms = registry.lookup<Transform>();
+    const ShareRange range = share_range(entities.size(), shares, share);
+    for (std::size_t i = range.begin; i < range.end; ++i) {
+      if (Transform* transform = transforms.find(entities[i])) transform->position = animated_position(animations[i], time);
+    }
+  });
+}
+
+// The GPU half: after the LightBuffer has sent the records (point lights
+// carry their motion, render::with_motion), one invocation a light places
+// each moving one at the clock's time, before anything reads the lights.
+class MotionPass {
+ public:
+  void add_pass(render::FrameBuild& build) {
+    const auto* settings = build.registry.try_resource<LightAnimationSettings>();
+    if (!settings || !settings->on_gpu || build.registry.count<LightAnimation>() == 0 || build.frame.lights.empty()) return;
+    if (!program_) program_ = &build.registry.resource<render::GpuAssets>().shaders().get({"light_animation/move_lights.comp"});
+    const render::ResourceId lights = build.frame.light_buffer;
+    const auto count = static_cast<std::uint32_t>(build.frame.lights.size());
+    const auto time = static_cast<float>(settings->time);
+    build.graph.add_pass("light motion", [&](render::PassBuilder& pass) {
+      pass.read(lights, render::Access::Storage);
+      pass.write(lights, render::Access::Storage);
+    }, [this, lights, count, time](const render::PassResources& res) {
+      program_->use();
+      program_->set("u_light_count", count);
+      program_->set("u_time", time);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightStorageBinding, res.buffer(lights));
+      glDispatchCompute((count + 63) / 64, 1, 1);
+    });
+  }
+  void invalidate() { program_ = nullptr; }
+
+ private:
+  gfx::ShaderProgram* program_ = nullptr;
+};
+
+}  // namespace
+
+void register_light_animation(ecs::Scheduler& scheduler, ecs::Registry& registry) {
+  if (auto* modules = registry.try_resource<render::FrameModules>()) {
+    auto motion = std::make_shared<MotionPass>();
+    modules->add({render::FrameStage::BeforeLighting, "light motion", [motion](render::FrameBuild& build) { motion->add_pass(build); },
+                  [motion] { motion->invalidate(); }});
+  }
   scheduler.add(ecs::Phase::Update, "light_animation", [](ecs::Registry& registry) {
     auto* settings = registry.try_resource<LightAnimationSettings>();
     if (!settings || settings->paused) return;
     settings->time += registry.resource<ecs::FrameClock>().delta_seconds;
-    // Split over threads from a few thousand lights: at 2^20 one thread takes
-    // tens of milliseconds. Each writes the Transforms of its own share.
-    const std::span<const ecs::Entity> entities = registry.entities_with<LightAnimation>();
-    const std::span<const LightAnimation> animations = registry.components_of<LightAnimation>();
-    const std::size_t shares = share_count(entities.size(), kAnimationsPerThread);
-    const double time = settings->time;
-    run_in_parallel(shares, [&](std::size_t share) {
-      ecs::Registry::Lookup<Transform> transforms = registry.lookup<Transform>();
-      const ShareRange range = share_range(entities.size(), shares, share);
-      for (std::size_t i = range.begin; i < range.end; ++i) {
-        if (Transform* transform = transforms.find(entities[i])) transform->position = animated_position(animations[i], time);
-      }
-    });
+    if (!settings->on_gpu) {
+      move_every_light(registry, settings->time);
+      return;
+    }
+    // Point lights move on the GPU (moves_on_gpu): only the others here.
+    move_lights_with<SpotCone>(registry, settings->time);
+    move_lights_with<DirectionalLight>(registry, settings->time);
   });
 }
 

@@ -293,6 +293,34 @@ TEST_F(LightBufferSystem, PutsBackWhatALaterSystemPatched) {
   EXPECT_TRUE(buffer.patched.empty());
 }
 
+// A point light that moves on the GPU carries its motion in its record, and
+// a motion that cannot be drawn leaves the light out, saying why.
+TEST_F(LightBufferSystem, APointLightMovedOnTheGpuCarriesItsMotion) {
+  ecs::Registry registry;
+  registry.set_resource<LightAnimationSettings>().on_gpu = true;
+  const ecs::Entity moving = add_light(registry, {1, 2, 3}, {1, 1, 1}, 1.0f);
+  registry.add<LightAnimation>(moving, glm::vec3(1, 2, 3), 0.25f, 0.5f, 0.6f);
+  const ecs::Entity spot = add_light(registry, {0, 1, 0}, {1, 1, 1}, 1.0f);
+  registry.add<SpotCone>(spot);
+  registry.add<LightAnimation>(spot, glm::vec3(0, 1, 0));
+  const ecs::Entity broken = add_light(registry, {0, 1, 0}, {1, 1, 1}, 1.0f);
+  registry.add<LightAnimation>(broken, glm::vec3(0, 1, 0), std::numeric_limits<float>::quiet_NaN());
+
+  const render::GatheredLights gathered = render::gather_lights(registry);
+  ASSERT_EQ(gathered.lights.size(), 2u);
+  const render::GpuLight& light = gathered.lights[0];
+  EXPECT_TRUE(render::moves_on_gpu(light));
+  EXPECT_EQ(light.direction, glm::vec4(1, 2, 3, 0.5f));
+  EXPECT_EQ(glm::vec2(light.spot), glm::vec2(0.25f, 0.6f));
+  EXPECT_EQ(render::moved_position(light, 2.0), animated_position(registry.get<LightAnimation>(moving), 2.0));
+  EXPECT_FALSE(render::moves_on_gpu(gathered.lights[1])) << "a spot light moves on the CPU";
+  ASSERT_EQ(gathered.rejected.size(), 1u);
+  EXPECT_THAT(gathered.rejected[0].problem, ::testing::HasSubstr("animation (origin (0, 1, 0), radius 0.5, phase nan"));
+
+  registry.resource<LightAnimationSettings>().on_gpu = false;
+  EXPECT_FALSE(render::moves_on_gpu(render::gather_lights(registry).lights[0])) << "off the GPU tier the record is a plain light";
+}
+
 TEST_F(LightBufferSystem, ZeroLightsIsValid) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;

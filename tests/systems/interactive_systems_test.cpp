@@ -185,7 +185,7 @@ TEST(LightAnimationSystem, EveryOneOfManyLightsIsMovedToItsOwnPlace) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
   registry.set_resource<LightAnimationSettings>();
-  register_light_animation(scheduler);
+  register_light_animation(scheduler, registry);
   std::vector<ecs::Entity> lights;
   for (std::uint64_t k = 0; k < 40'000; ++k) {
     const ecs::Entity e = registry.create();
@@ -203,14 +203,43 @@ TEST(LightAnimationSystem, EveryOneOfManyLightsIsMovedToItsOwnPlace) {
   }
 }
 
+// A light at `at` on a circle of 0.5 m through it, 1 rad/s.
+ecs::Entity add_animated_light(ecs::Registry& registry, glm::vec3 at) {
+  const ecs::Entity e = registry.create();
+  registry.add<Transform>(e, Transform{at});
+  registry.add<LightAnimation>(e, at, 0.7f, 0.5f, 1.0f);
+  return e;
+}
+
+// Where point lights move on the GPU, the system moves only the lights the
+// GPU does not: spot and directional lights (their records have no room for a motion).
+TEST(LightAnimationSystem, OnTheGpuTierMovesOnlySpotAndDirectionalLights) {
+  ecs::Registry registry;
+  ecs::Scheduler scheduler;
+  registry.set_resource<LightAnimationSettings>().on_gpu = true;
+  register_light_animation(scheduler, registry);
+  const ecs::Entity point = add_animated_light(registry, glm::vec3(1, 2, 3));
+  const ecs::Entity spot = add_animated_light(registry, glm::vec3(4, 2, 3));
+  registry.add<SpotCone>(spot);
+  const ecs::Entity sun = add_animated_light(registry, glm::vec3(7, 2, 3));
+  registry.add<DirectionalLight>(sun);
+  scheduler.run_frame(registry, 0.5);
+  EXPECT_EQ(registry.get<Transform>(point).position, glm::vec3(1, 2, 3)) << "the GPU places it";
+  for (const ecs::Entity e : {spot, sun}) {
+    EXPECT_EQ(registry.get<Transform>(e).position, animated_position(registry.get<LightAnimation>(e), 0.5));
+  }
+  EXPECT_TRUE(moves_on_gpu(registry.resource<LightAnimationSettings>(), false, false));
+  EXPECT_FALSE(moves_on_gpu(registry.resource<LightAnimationSettings>(), true, false));
+  EXPECT_FALSE(moves_on_gpu(registry.resource<LightAnimationSettings>(), false, true));
+  EXPECT_FALSE(moves_on_gpu(LightAnimationSettings{}, false, false)) << "off the GPU tier every light moves on the CPU";
+}
+
 TEST(LightAnimationSystem, MovesAnimatedLightsFromWhereTheyStartedAndPauses) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
   registry.set_resource<LightAnimationSettings>();
-  register_light_animation(scheduler);
-  const ecs::Entity moving = registry.create();
-  registry.add<Transform>(moving, Transform{glm::vec3(1, 2, 3)});
-  registry.add<LightAnimation>(moving, glm::vec3(1, 2, 3), 0.7f, 0.5f, 1.0f);
+  register_light_animation(scheduler, registry);
+  const ecs::Entity moving = add_animated_light(registry, glm::vec3(1, 2, 3));
   const ecs::Entity placed = registry.create();
   registry.add<Transform>(placed, Transform{glm::vec3(5, 5, 5)});
 

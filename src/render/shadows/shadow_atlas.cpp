@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include "components/light.hpp"
 #include "components/mesh_instance.hpp"
 #include "components/transform.hpp"
 #include "gfx/depth.hpp"
@@ -305,9 +306,14 @@ bool ShadowAtlas::update(ecs::Registry& registry, render::LightBuffer& lights, c
     cascade_frame.scene_max = scene->max;
   }
   const float atlas_texels = static_cast<float>(limits_.atlas_size);
+  const auto* animations = registry.try_resource<LightAnimationSettings>();
+  const double time = animations ? animations->time : 0.0;
   for (const ShadowChoice& c : choices) {
     Entry& entry = entries_.at(c.entity);
     render::GpuLight& light = lights.staging[c.light];
+    // A light that the GPU moves is seen from where the GPU places it this
+    // frame; the record is sent back with its patch (and put back next frame).
+    if (render::moves_on_gpu(light)) light.position_radius = glm::vec4(render::moved_position(light, time), light.position_radius.w);
     const auto kind = static_cast<render::GpuLightKind>(light.color_kind.w);
     std::vector<ShadowView> light_views;
     if (kind == render::GpuLightKind::Point) {
