@@ -3,7 +3,7 @@
 # command, started with nothing but this folder.
 #   ./run.sh OUT           1920x1080, 128 to 131,072 lights, built-in scene and Sponza, each mode in
 #                          the fragment and the compute stage, then the light lists' choices, and
-#                          1,048,576 lights last (the riskiest step) (at most 9 minutes: each step gets
+#                          1,048,576 lights last, still and then moving (the riskiest steps) (at most 9 minutes: each step gets
 #                          what is left of that)
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
 # Writes into OUT: report.md (the GL context, the SMs each shader stage reaches, PSNR of every mode against forward,
@@ -231,6 +231,9 @@ step "picture, built-in scene" 30 "$out/.render-atrium.txt" "$atrium" render --m
 # The riskiest step last: 2^20 lights (a stall here must not cost the figures above).
 step "a million lights" 90 "$out/.million.md" "$atrium" bench --modes tiled-deferred,clustered-forward,clustered-deferred --views 1 \
   --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$million" --lighting-stage compute
+# The window's case at that count: Sponza's generated lights moving (on the GPU, the "light motion" pass).
+step "a million moving lights, Sponza" 60 "$out/.million-moving.md" "$atrium" bench "$sponza" --modes clustered-deferred --views 1 \
+  --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --constant-density --lights "$million" --moving-lights
 plot_note="no plot: python3 with matplotlib is not on this machine"
 for python in /usr/bin/python3 python3; do
   command -v "$python" >/dev/null && "$python" -c "import matplotlib" 2>/dev/null || continue
@@ -297,6 +300,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
     section "Light assignment $assignment, compute stage, Sponza lion view, 1,024 lights of 4 m" "$out/.assign-lion-$assignment.md"
   done
   section "$million lights, compute stage, built-in scene, constant density" "$out/.million.md"
+  section "$million moving lights, Sponza, constant density" "$out/.million-moving.md"
   for bloom in 0 0.04; do
     section "Bloom $bloom, compute stage, built-in scene, 1,024 lights" "$out/.bloom-$bloom.md"
   done

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <limits>
 #include <map>
@@ -18,6 +19,7 @@
 #include "render/lighting/light_falloff.hpp"
 #include "render/lighting/light_index_list.hpp"
 #include "render/techniques/technique.hpp"
+#include "systems/light_animation.hpp"
 
 namespace atrium {
 namespace {
@@ -283,6 +285,13 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   // One world for the sweep: the scene loads once, and each count replaces
   // the lights as a world made with that count would have them.
   World world(world_options);
+  if (options.moving_lights) {
+    register_light_animation(world.scheduler(), world.registry());
+    if (world.registry().count<LightAnimation>() == 0) {
+      std::fprintf(stderr, "note: --moving-lights: %s has no animated lights (a scene file's or model's generated lights move)\n",
+                   world.scene().name.c_str());
+    }
+  }
   std::vector<int> views = options.views;
   if (views.empty()) {
     for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
@@ -390,6 +399,7 @@ std::string bench_markdown(const BenchResult& result) {
   if (o.technique_options.msaa > 1) md << ", MSAA " << o.technique_options.msaa << "x";
   if (o.shadow_counts.size() == 1 && o.shadow_counts[0] > 0) md << ", shadow maps for " << o.shadow_counts[0] << " lights";
   if (!o.shadow_counts.empty() && o.shadow_redraw) md << " (every map drawn every frame)";
+  if (o.moving_lights) md << ", the scene's animated lights moving";
   if (o.technique_options.compute_free) md << ", the compute-free tier (--no-compute, no occlusion culling)";
   else if (!o.occlusion_culling) {
     md << ", no occlusion culling";

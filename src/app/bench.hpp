@@ -48,6 +48,7 @@ struct BenchOptions {
   std::vector<int> shadow_counts;
   bool shadow_redraw = false;                // --shadow-redraw: every map drawn every frame
   bool pass_steps = false;                   // --pass-steps: the steps each pass names, timed apart
+  bool moving_lights = false;                // --moving-lights: the light animation runs, 1/60 s a frame, as in the window
   // --frame-limit: a run stops after a frame slower than this, and a mode is
   // skipped at the larger light counts that would pass it (BenchRow::skipped).
   double frame_limit_ms = 1000.0;

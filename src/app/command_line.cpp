@@ -287,6 +287,10 @@ const std::vector<OptionSpec>& option_table() {
        }},
       {"--shadow-redraw", "", kBench, "draw every shadow map every frame, as if every light moved (default: maps are reused while nothing in reach moves)",
        set_flag([](CliOptions& o) -> bool& { return o.bench.shadow_redraw; })},
+      {"--moving-lights", "", kBench,
+       "run the light animation as the demo does (1/60 s a frame): the generated lights of a scene file or model move, "
+       "point lights on the GPU where compute shaders run (default: every light holds still)",
+       set_flag([](CliOptions& o) -> bool& { return o.bench.moving_lights; })},
       {"--pass-steps", "", kBench,
        "also time the steps inside passes (the light lists' count, scan and write; occlusion culling's pyramid, test and "
        "draws; the material classification's count, ranges and scatter), listed in brackets after their pass (a step that ran in some frames only: its median over those, and in "

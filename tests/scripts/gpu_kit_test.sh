@@ -48,6 +48,8 @@ grep -q "steps that failed: none" "$report" || fail "a step failed: $(cat "$repo
 grep -q "^| lights | forward/fragment | deferred/fragment |" "$report" || fail "no bench table of both stages in the report"
 grep -q "^compute .* ms, .* Gflop/s" "$report" || fail "no stage probe in the report"
 grep -q "^## 256 lights, compute stage" "$report" || fail "no million-light step (256 in --quick)"
+grep -q "^## 256 moving lights, Sponza" "$report" || fail "no million-moving-light step (256 in --quick)"
+grep -q "the scene's animated lights moving" "$report" || fail "the moving lights' bench did not move them: $(cat "$report")"
 [ "$(grep -c "^## Clustered and tiled lists, compute stage" "$report")" = 5 ] || fail "not every cluster grid measured"
 [ "$(grep -c "^## Light assignment \(scatter\|gather\), compute stage" "$report")" = 4 ] || fail "not every light assignment measured"
 [ "$(grep -c "^- visibility-buffer, material binding \(bound\|bindless\): light evaluations per pixel: [0-9.]* on average" "$report")" = 1 ] ||
