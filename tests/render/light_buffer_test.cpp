@@ -9,6 +9,7 @@
 #include "components/transform.hpp"
 #include "ecs/scheduler.hpp"
 #include "support/gl_test.hpp"
+#include "support/light_buffer_read_back.hpp"
 #include "render/light_buffer.hpp"
 #include "render/lighting/light_falloff.hpp"
 
@@ -24,12 +25,6 @@ ecs::Entity add_light(ecs::Registry& registry, glm::vec3 position, glm::vec3 col
   return e;
 }
 
-std::vector<render::GpuLight> read_back(const render::LightBuffer& buffer) {
-  std::vector<render::GpuLight> lights(buffer.count);
-  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(render::GpuLight)), lights.data());
-  return lights;
-}
-
 TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   ecs::Registry registry;
   ecs::Scheduler scheduler;
@@ -41,7 +36,7 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   registry.add<Transform>(not_a_light);
   scheduler.run_frame(registry, 0.0);
 
-  const auto lights = read_back(registry.resource<render::LightBuffer>());
+  const auto lights = testing::read_back_lights(registry.resource<render::LightBuffer>());
   ASSERT_EQ(lights.size(), 2u);
   EXPECT_EQ(glm::vec3(lights[0].position_radius), glm::vec3(1, 2, 3));
   EXPECT_FLOAT_EQ(lights[0].position_radius.w, lighting::light_radius_from_intensity({1.0f, 0.5f, 0.25f}, 2.0f));
@@ -53,7 +48,7 @@ TEST_F(LightBufferSystem, MirrorsLightEntitiesWithGivenOrDerivedRadii) {
   registry.get<Transform>(a).position = {7, 8, 9};
   registry.destroy(b);
   scheduler.run_frame(registry, 0.0);
-  const auto after = read_back(registry.resource<render::LightBuffer>());
+  const auto after = testing::read_back_lights(registry.resource<render::LightBuffer>());
   ASSERT_EQ(after.size(), 1u);
   EXPECT_EQ(glm::vec3(after[0].position_radius), glm::vec3(7, 8, 9));
 }
@@ -75,13 +70,13 @@ TEST_F(LightBufferSystem, SendsOnlyTheLightsThatChanged) {
   registry.get<Transform>(lights[500]).position.y = 3.0f;
   scheduler.run_frame(registry, 0.0);
   EXPECT_EQ(buffer.uploaded, 1u);
-  EXPECT_EQ(read_back(buffer)[500].position_radius.y, 3.0f);
+  EXPECT_EQ(testing::read_back_lights(buffer)[500].position_radius.y, 3.0f);
   // Two lights far apart go as two runs, not everything between them.
   registry.get<LightColor>(lights[10]).intensity = 2.0f;
   registry.get<LightColor>(lights[900]).intensity = 2.0f;
   scheduler.run_frame(registry, 0.0);
   EXPECT_EQ(buffer.uploaded, 2u);
-  const auto after = read_back(buffer);
+  const auto after = testing::read_back_lights(buffer);
   EXPECT_EQ(after[10].color_kind.x, 2.0f);
   EXPECT_EQ(after[900].color_kind.x, 2.0f);
   EXPECT_EQ(after[899].color_kind.x, 1.0f);
@@ -98,7 +93,7 @@ TEST_F(LightBufferSystem, HasNoCapOnTheNumberOfLights) {
   const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
   EXPECT_EQ(buffer.count, 100'000u);
   EXPECT_GE(buffer.capacity, 100'000u);
-  const auto lights = read_back(buffer);
+  const auto lights = testing::read_back_lights(buffer);
   EXPECT_EQ(lights.back().position_radius.x, 99'999.0f);
   // Gathered in chunks on several threads, in the registry's order all the same.
   for (std::size_t i = 0; i < lights.size(); ++i) ASSERT_EQ(lights[i].position_radius.x, static_cast<float>(i)) << i;
@@ -116,7 +111,7 @@ TEST_F(LightBufferSystem, SpotAndDirectionalLightsCarryTheirKindDirectionAndCone
   const ecs::Entity sun = add_light(registry, {0, 0, 0}, {1, 0.9f, 0.8f}, 3.0f);
   registry.add<DirectionalLight>(sun);
   scheduler.run_frame(registry, 0.0);
-  const auto lights = read_back(registry.resource<render::LightBuffer>());
+  const auto lights = testing::read_back_lights(registry.resource<render::LightBuffer>());
   ASSERT_EQ(lights.size(), 2u);
   EXPECT_EQ(lights[0].color_kind.w, static_cast<float>(render::GpuLightKind::Spot));
   EXPECT_NEAR(lights[0].direction.y, -1.0f, 1e-6f);
@@ -167,7 +162,7 @@ TEST_F(LightBufferSystem, LightsASystemBrokeAreLeftOutWithOneWarningNamingThem) 
 void expect_buffer_matches_gather(ecs::Registry& registry, const char* step) {
   const render::LightBuffer& buffer = registry.resource<render::LightBuffer>();
   const std::vector<render::GpuLight> expected = render::gather_lights(registry).lights;
-  const std::vector<render::GpuLight> held = read_back(buffer);
+  const std::vector<render::GpuLight> held = testing::read_back_lights(buffer);
   ASSERT_EQ(held.size(), expected.size()) << step;
   for (std::size_t i = 0; i < held.size(); ++i) {
     ASSERT_EQ(std::memcmp(&held[i], &expected[i], sizeof(render::GpuLight)), 0) << step << ": light " << i;

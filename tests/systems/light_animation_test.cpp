@@ -17,6 +17,7 @@
 #include "components/transform.hpp"
 #include "render/light_buffer.hpp"
 #include "support/gl_test.hpp"
+#include "support/light_buffer_read_back.hpp"
 #include "support/modes.hpp"
 #include "systems/light_animation.hpp"
 
@@ -71,12 +72,6 @@ void place_by_hand(World& world) {
   world.frame(0.0);
 }
 
-std::vector<render::GpuLight> read_back(const render::LightBuffer& buffer) {
-  std::vector<render::GpuLight> lights(buffer.count);
-  glGetNamedBufferSubData(buffer.buffer.id(), 0, static_cast<GLsizeiptr>(lights.size() * sizeof(render::GpuLight)), lights.data());
-  return lights;
-}
-
 TEST_F(LightAnimationOnGpu, PutsEveryLightWhereTheCpuWouldAndCostsTheCpuNothing) {
   World world(options_for("clustered-deferred"));
   animate_point_lights(world);
@@ -90,7 +85,7 @@ TEST_F(LightAnimationOnGpu, PutsEveryLightWhereTheCpuWouldAndCostsTheCpuNothing)
   const double time = registry.resource<LightAnimationSettings>().time;
   ASSERT_DOUBLE_EQ(time, kStep * kFrames);
   const auto& buffer = registry.resource<render::LightBuffer>();
-  const std::vector<render::GpuLight> lights = read_back(buffer);
+  const std::vector<render::GpuLight> lights = testing::read_back_lights(buffer);
   std::size_t moved = 0;
   for (std::size_t i = 0; i < lights.size(); ++i) {
     const ecs::Entity e = buffer.entities[i];

@@ -20,6 +20,7 @@
 #include "render/light_buffer.hpp"
 #include "support/forward_comparison.hpp"
 #include "support/gl_test.hpp"
+#include "support/light_buffer_read_back.hpp"
 #include "support/reference_shading.hpp"
 #include "render/shadows/atlas_allocator.hpp"
 #include "render/shadows/shadow_selection.hpp"
@@ -333,8 +334,7 @@ TEST_F(Shadows, OffPutsTheLightsBackInTheirOwnOrder) {
   const auto& lights = world.registry().resource<render::LightBuffer>();
   const render::GatheredLights own = render::gather_lights(world.registry());
   ASSERT_EQ(lights.staging.size(), own.lights.size());
-  std::vector<render::GpuLight> held(lights.count);
-  glGetNamedBufferSubData(lights.buffer.id(), 0, static_cast<GLsizeiptr>(held.size() * sizeof(render::GpuLight)), held.data());
+  const std::vector<render::GpuLight> held = testing::read_back_lights(lights);
   for (std::size_t i = 0; i < held.size(); ++i) {
     ASSERT_EQ(lights.entities[i], own.entities[i]) << "light " << i;
     ASSERT_EQ(std::memcmp(&held[i], &own.lights[i], sizeof(render::GpuLight)), 0) << "light " << i;
