@@ -364,6 +364,7 @@ void register_light_buffer(ecs::Scheduler& scheduler) {
                            static_cast<GLsizeiptr>((run.end - run.begin) * sizeof(GpuLight)), &state->staging[run.begin]);
       state->uploaded += static_cast<std::uint32_t>(run.end - run.begin);
     }
+    if (state->uploaded > 0) ++state->sends;
   });
 }
 

@@ -118,6 +118,11 @@ struct LightBuffer {
   // them whatever the registry says, to put them back.
   std::vector<std::uint32_t> patched;
   std::uint32_t walked = 0;  // light entities visited this frame; the rest held still
+  // Bumped by every write to `buffer` (the walk's uploads, a new buffer, the
+  // shadow atlas's patches): a pass that derives records from what was sent
+  // (the light motion pass) knows the buffer still holds its result while
+  // this and its own inputs are unchanged.
+  std::uint64_t sends = 0;
 };
 
 struct GatheredLights {

@@ -1,6 +1,7 @@
 #include "systems/light_animation.hpp"
 
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -8,6 +9,7 @@
 #include "render/binding_slots.hpp"
 #include "render/frame/frame_modules.hpp"
 #include "render/gpu_assets.hpp"
+#include "render/light_buffer.hpp"
 
 namespace atrium {
 namespace {
@@ -47,30 +49,47 @@ void move_every_light(ecs::Registry& registry, double time) {
 // The GPU half: after the LightBuffer has sent the records (point lights
 // carry their motion, render::with_motion), one invocation a light places
 // each moving one at the clock's time, before anything reads the lights.
+// A frame where neither the clock nor the buffer moved since the pass last
+// ran (paused, nothing sent) skips it: the buffer still holds its result, and
+// at 2^20 lights a pass over every record is not free even on a GPU.
 class MotionPass {
  public:
   void add_pass(render::FrameBuild& build) {
     const auto* settings = build.registry.try_resource<LightAnimationSettings>();
-    if (!settings || !settings->on_gpu || build.registry.count<LightAnimation>() == 0 || build.frame.lights.empty()) return;
+    const auto* buffer = build.registry.try_resource<render::LightBuffer>();
+    if (!settings || !settings->on_gpu || !buffer || build.registry.count<LightAnimation>() == 0 || build.frame.lights.empty()) return;
+    const Placed now{buffer->buffer.id(), buffer->sends, static_cast<std::uint32_t>(build.frame.lights.size()), static_cast<float>(settings->time)};
+    if (placed_ && *placed_ == now) return;
     if (!program_) program_ = &build.registry.resource<render::GpuAssets>().shaders().get({"light_animation/move_lights.comp"});
     const render::ResourceId lights = build.frame.light_buffer;
-    const auto count = static_cast<std::uint32_t>(build.frame.lights.size());
-    const auto time = static_cast<float>(settings->time);
     build.graph.add_pass("light motion", [&](render::PassBuilder& pass) {
       pass.read(lights, render::Access::Storage);
       pass.write(lights, render::Access::Storage);
-    }, [this, lights, count, time](const render::PassResources& res) {
+    }, [this, lights, now](const render::PassResources& res) {
       program_->use();
-      program_->set("u_light_count", count);
-      program_->set("u_time", time);
+      program_->set("u_light_count", now.count);
+      program_->set("u_time", now.time);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kLightStorageBinding, res.buffer(lights));
-      glDispatchCompute((count + 63) / 64, 1, 1);
+      glDispatchCompute((now.count + 63) / 64, 1, 1);
+      placed_ = now;  // here, not when added: a frame that built the pass but did not run it placed nothing
     });
   }
-  void invalidate() { program_ = nullptr; }
+  void invalidate() {
+    program_ = nullptr;
+    placed_.reset();
+  }
 
  private:
+  // What the buffer held when the pass last placed its lights.
+  struct Placed {
+    GLuint buffer = 0;
+    std::uint64_t sends = 0;  // render::LightBuffer::sends
+    std::uint32_t count = 0;
+    float time = 0.0f;
+    bool operator==(const Placed&) const = default;
+  };
   gfx::ShaderProgram* program_ = nullptr;
+  std::optional<Placed> placed_;
 };
 
 }  // namespace

@@ -4,6 +4,7 @@
 // each light where the CPU's animation would; every mode draws the moved
 // lights as it draws lights placed there by hand, shadows included; and the
 // CPU sends and walks nothing while they move.
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,30 @@ void place_by_hand(World& world) {
   world.frame(0.0);
 }
 
+// Every light the GPU holds is where the CPU's animation puts it at `time`
+// (or where its Transform is, for one that does not move); returns how many
+// of the animated ones are a good way from their origins.
+std::size_t expect_lights_at(const ecs::Registry& registry, double time) {
+  const auto& buffer = registry.resource<render::LightBuffer>();
+  const std::vector<render::GpuLight> lights = testing::read_back_lights(buffer);
+  std::size_t moved = 0;
+  for (std::size_t i = 0; i < lights.size(); ++i) {
+    const ecs::Entity e = buffer.entities[i];
+    const auto* animation = registry.try_get<LightAnimation>(e);
+    const glm::vec3 expected = animation ? animated_position(*animation, time) : registry.try_get<Transform>(e)->position;
+    EXPECT_LT(glm::distance(glm::vec3(lights[i].position_radius), expected), 1e-4f) << "light " << i;
+    if (animation && glm::distance(expected, animation->origin) > 0.1f) ++moved;
+  }
+  return moved;
+}
+
+bool ran_motion_pass(World& world) {
+  for (const render::CompiledPass& pass : world.renderer().graph().passes()) {
+    if (pass.name == "light motion") return !pass.culled;
+  }
+  return false;
+}
+
 TEST_F(LightAnimationOnGpu, PutsEveryLightWhereTheCpuWouldAndCostsTheCpuNothing) {
   World world(options_for("clustered-deferred"));
   animate_point_lights(world);
@@ -84,23 +109,48 @@ TEST_F(LightAnimationOnGpu, PutsEveryLightWhereTheCpuWouldAndCostsTheCpuNothing)
   const ecs::Registry& registry = world.registry();
   const double time = registry.resource<LightAnimationSettings>().time;
   ASSERT_DOUBLE_EQ(time, kStep * kFrames);
-  const auto& buffer = registry.resource<render::LightBuffer>();
-  const std::vector<render::GpuLight> lights = testing::read_back_lights(buffer);
-  std::size_t moved = 0;
-  for (std::size_t i = 0; i < lights.size(); ++i) {
-    const ecs::Entity e = buffer.entities[i];
-    const auto* animation = registry.try_get<LightAnimation>(e);
-    const glm::vec3 expected = animation ? animated_position(*animation, time) : registry.try_get<Transform>(e)->position;
-    EXPECT_LT(glm::distance(glm::vec3(lights[i].position_radius), expected), 1e-4f) << "light " << i;
-    if (animation && glm::distance(expected, animation->origin) > 0.1f) ++moved;
-  }
-  EXPECT_GE(moved, 28u) << "three seconds move the lights a good way round their circles";
+  EXPECT_GE(expect_lights_at(registry, time), 28u) << "three seconds move the lights a good way round their circles";
   std::size_t index = 0;
   for (const ecs::Entity e : registry.entities_with<LightAnimation>()) {
     EXPECT_EQ(registry.try_get<Transform>(e)->position, origins[index++]) << "the CPU leaves a point light's Transform at its origin";
   }
+  const auto& buffer = registry.resource<render::LightBuffer>();
   EXPECT_EQ(buffer.uploaded, 0u) << "moving lights send nothing after the first frame";
   EXPECT_EQ(buffer.walked, 0u) << "nor does the CPU walk them";
+}
+
+// Paused (`p`), the lights stay where they stopped and the pass does not run:
+// the buffer still holds what it wrote. A record sent again (a light edited)
+// starts from its origin, so that frame runs it again; so does the clock.
+TEST_F(LightAnimationOnGpu, APausedClockSkipsThePassUntilALightIsSentAgain) {
+  World world(options_for("clustered-deferred"));
+  animate_point_lights(world);
+  run_animated(world);
+  ASSERT_TRUE(ran_motion_pass(world));
+  const assets::Image moving = world.renderer().read_output();
+  ecs::Registry& registry = world.registry();
+  auto& settings = registry.resource<LightAnimationSettings>();
+  settings.paused = true;
+  const double stopped = settings.time;
+
+  world.frame(kStep);
+  EXPECT_FALSE(ran_motion_pass(world)) << "nothing moved: no pass over every light";
+  EXPECT_GE(expect_lights_at(registry, stopped), 28u);
+  EXPECT_EQ(assets::psnr(moving, world.renderer().read_output()), std::numeric_limits<double>::infinity()) << "the lights held where they stopped";
+
+  const ecs::Entity edited = registry.entities_with<LightAnimation>()[3];
+  registry.get<LightColor>(edited).intensity *= 1.5f;
+  world.frame(kStep);
+  EXPECT_GT(registry.resource<render::LightBuffer>().uploaded, 0u);
+  EXPECT_TRUE(ran_motion_pass(world)) << "the edited light's record came back at its origin";
+  expect_lights_at(registry, stopped);
+  world.frame(kStep);
+  EXPECT_FALSE(ran_motion_pass(world));
+
+  settings.paused = false;
+  world.frame(kStep);
+  EXPECT_TRUE(ran_motion_pass(world));
+  expect_lights_at(registry, stopped + kStep);
 }
 
 // Moved on the GPU against held still where the CPU's animation puts them:

@@ -51,8 +51,9 @@ auto caster_key(const render::DrawBatch& b) { return std::tie(b.alpha_masked, b.
 // less than kGap apart go as one upload (the lights between are unchanged, so
 // resending them is harmless), which keeps K shadowed lights from costing K
 // calls without resending a million lights for two far apart.
-void upload_patched_lights(const render::LightBuffer& lights, std::vector<std::uint32_t>& patched) {
+void upload_patched_lights(render::LightBuffer& lights, std::vector<std::uint32_t>& patched) {
   constexpr std::uint32_t kGap = 64;
+  if (!patched.empty()) ++lights.sends;
   std::sort(patched.begin(), patched.end());
   for (std::size_t begin = 0; begin < patched.size();) {
     std::size_t end = begin + 1;
