@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <bit>
-#include <cstring>
+#include <cctype>
 
+#include "assets/byte_order.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -21,11 +22,8 @@ constexpr std::uint32_t kCaps2Cubemap = 0x200, kCaps2Volume = 0x200000;
 constexpr std::uint32_t kDx10Texture2D = 3, kDx10MiscCube = 0x4;
 constexpr int kMaxSide = 65536;
 
-std::uint32_t word(std::span<const std::uint8_t> bytes, std::size_t offset) {
-  std::uint32_t value;
-  std::memcpy(&value, bytes.data() + offset, 4);
-  return value;
-}
+// DDS is little-endian whatever the host is.
+std::uint32_t word(std::span<const std::uint8_t> bytes, std::size_t offset) { return static_cast<std::uint32_t>(read_le(bytes, offset, 4)); }
 
 struct Layout {
   std::optional<BlockFormat> blocks;
@@ -125,8 +123,7 @@ std::optional<DdsTexture> read_dds(std::span<const std::uint8_t> bytes, std::str
     else if (code == fourcc('A', 'T', 'I', '1') || code == fourcc('B', 'C', '4', 'U')) layout.blocks = BlockFormat::BC4;
     else if (code == fourcc('A', 'T', 'I', '2') || code == fourcc('B', 'C', '5', 'U')) layout.blocks = BlockFormat::BC5;
     else {
-      std::string name(4, ' ');
-      std::memcpy(name.data(), &code, 4);
+      std::string name(bytes.begin() + 84, bytes.begin() + 88);
       for (char& c : name) c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
       return fail("a DDS in the format '" + name + "', which Atrium does not read");
     }
@@ -168,8 +165,7 @@ std::optional<DdsTexture> read_dds(std::span<const std::uint8_t> bytes, std::str
   if (size > bytes.size() - offset) return fail("a truncated DDS (its first level needs " + std::to_string(size) + " bytes)");
   texture.rgba = Image{width, height, std::vector<std::uint8_t>(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4)};
   for (std::size_t i = 0; i < static_cast<std::size_t>(width) * static_cast<std::size_t>(height); ++i) {
-    std::uint32_t pixel = 0;
-    std::memcpy(&pixel, bytes.data() + offset + i * pixel_bytes, pixel_bytes);
+    const auto pixel = static_cast<std::uint32_t>(read_le(bytes, offset + i * pixel_bytes, pixel_bytes));
     std::uint8_t* out = &texture.rgba.rgba[i * 4];
     for (int c = 0; c < 3; ++c) {
       out[c] = channel(pixel, layout.luminance ? layout.masks[0] : layout.masks[c], 0);
