@@ -6,8 +6,12 @@
 // first. The GPU twin of render/culling/occlusion_culling.cpp: nothing is read back.
 //   u_phase 0 (before the first pass):  u_out = what the last frame showed
 //   u_phase 1 (after its depth):        u_out = what that depth does not hide
-//                                       and was not drawn; u_shown = both
-//   u_phase 2 (after the second draw):  u_last_shown = what the full depth does not hide
+//                                       and was not drawn; u_shown = both;
+//                                       u_last_shown = what that depth does not hide
+// One pyramid a frame: the next frame's first draws come from the same test
+// (as Niagara's late pass does), not from a second pyramid of the full depth.
+// That depth lacks only what the second draw adds, so it keeps a unit that
+// the revealed ones hide for one more frame, and never drops a shown one.
 layout(local_size_x = 64) in;
 
 #include "common/frame.glsl"
@@ -38,7 +42,7 @@ layout(std430, binding = 17) writeonly buffer Out { DrawCommand u_out[]; };
 layout(std430, binding = 18) writeonly buffer Shown { DrawCommand u_shown[]; };
 layout(std430, binding = 19) readonly buffer Records { CullRecord u_records[]; };
 layout(std430, binding = 20) buffer LastShown { uint u_last_shown[]; };
-// [0]: triangles the passes after the first draw, [1]: triangles in view the full depth hides.
+// [0]: triangles the passes after the first draw, [1]: triangles in view that no pass draws.
 layout(std430, binding = 21) buffer Counters { uint u_counters[]; };
 
 uniform uint u_phase;
@@ -101,18 +105,20 @@ void main() {
   if (u_phase == 0u) {
     command.instance_count = shown_before ? 1u : 0u;
     u_out[i] = command;
-  } else if (u_phase == 1u) {
+  } else {
+    // Every opaque unit is tested, the ones drawn first too: what that depth
+    // hides is not drawn first next frame.
+    bool tested = opaque && record.unit != kNeverCulled;
+    bool hidden = tested && hides(record.box_min.xyz, record.box_max.xyz);
     // Blended commands: drawn by the passes after the first, not by this one.
-    bool shown = !opaque || shown_before || !hides(record.box_min.xyz, record.box_max.xyz);
+    bool shown = !opaque || shown_before || !hidden;
     DrawCommand late = command;
     late.instance_count = opaque && shown && !shown_before ? 1u : 0u;
     u_out[i] = late;
     command.instance_count = shown ? 1u : 0u;
     u_shown[i] = command;
-    if (opaque && shown) atomicAdd(u_counters[0], record.triangles);
-  } else if (opaque && record.unit != kNeverCulled) {
-    bool hidden = hides(record.box_min.xyz, record.box_max.xyz);
-    u_last_shown[record.unit] = hidden ? 0u : 1u;
-    if (hidden) atomicAdd(u_counters[1], record.triangles);
+    // One command a unit: this invocation alone reads and writes its bit.
+    if (tested) u_last_shown[record.unit] = hidden ? 0u : 1u;
+    if (opaque) atomicAdd(u_counters[shown ? 0 : 1], record.triangles);
   }
 }

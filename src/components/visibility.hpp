@@ -19,6 +19,9 @@ inline constexpr std::uint8_t kLastFrame = 1u << 1;
 // Not shown last frame, but this frame's first depth does not hide it: drawn
 // late in the first pass and in every pass after it (occlusion culling).
 inline constexpr std::uint8_t kRevealed = 1u << 2;
+// This frame's first depth hides it: the next frame does not draw it first
+// (occlusion culling; cleared each frame with kRevealed).
+inline constexpr std::uint8_t kHidden = 1u << 3;
 }  // namespace seen
 
 struct Visibility {

@@ -17,7 +17,7 @@ constexpr GLuint kTemplateBinding = kCommandTemplateBinding, kOutBinding = kCull
 constexpr int kMaxLevels = 16;  // occlusion_cull.comp's u_levels: 12 cover the largest render size (16384 pixels)
 constexpr GLuint kCullGroup = 64;
 
-enum Phase : unsigned { kFirst = 0, kReveal = 1, kRemember = 2 };
+enum Phase : unsigned { kFirst = 0, kReveal = 1 };
 
 }  // namespace
 
@@ -83,6 +83,7 @@ void GpuOcclusionCulling::reveal(GLuint depth, glm::ivec2 size) {
   cull(kReveal);
   pack(Phase::Revealed);
   pack(Phase::Shown);
+  readback_.copy(counters_.id(), 0, 2 * sizeof(std::uint32_t), blended_triangles_);
 }
 
 const gfx::StreamBuffer& GpuOcclusionCulling::commands_of(Phase phase) const {
@@ -117,13 +118,6 @@ GLintptr GpuOcclusionCulling::bind(Phase phase) const {
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, packed_[p].buffer.id());
   glBindBuffer(GL_PARAMETER_BUFFER_ARB, draw_counts_.buffer.id());
   return static_cast<GLintptr>(p * batch_count_ * sizeof(std::uint32_t));
-}
-
-void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {
-  const gfx::KeepProgram keep;
-  build_pyramid(depth, size);
-  cull(kRemember);
-  readback_.copy(counters_.id(), 0, 2 * sizeof(std::uint32_t), blended_triangles_);
 }
 
 void GpuOcclusionCulling::build_pyramid(GLuint depth, glm::ivec2 size) {

@@ -4,8 +4,9 @@
 // primitive or meshlet with its box (DrawSelection::EachInView); the depth
 // pyramid is built from the depth buffer by culling/depth_tiles.comp and
 // culling/depth_pyramid.comp, and culling/occlusion_cull.comp writes the
-// commands each phase draws (instance count 0 for what it leaves out) and
-// which units the next frame draws first. Where GL 4.6 or
+// commands each phase draws (instance count 0 for what it leaves out) and,
+// from the same test, which units the next frame draws first: one pyramid a
+// frame. Where GL 4.6 or
 // ARB_indirect_parameters has glMultiDrawElementsIndirectCount,
 // culling/compact_commands.comp then packs each batch's drawn commands to the
 // front of its range, in order, and draws take their count from the GPU.
@@ -29,7 +30,7 @@ namespace atrium::render {
 
 struct GpuCullingCounts {
   std::size_t triangles_drawn = 0;   // by the passes after the first (opaque shown and blended)
-  std::size_t triangles_hidden = 0;  // in view, hidden by the frame's full depth
+  std::size_t triangles_hidden = 0;  // in view, hidden by the first phase's depth and drawn by no pass
 };
 
 // The levels of a depth pyramid over a `viewport`-sized depth buffer: per
@@ -47,11 +48,10 @@ class GpuOcclusionCulling {
   // frame showed. The frame uniforms must be bound.
   void begin(const DrawList& list, GLuint commands);
   // After the first phase drew into `depth`: writes revealed_commands() (what
-  // that depth does not hide and was not drawn) and shown_commands() (both).
+  // that depth does not hide and was not drawn) and shown_commands() (both),
+  // remembers what it does not hide for the next frame's first phase and
+  // queues the frame's counts.
   void reveal(GLuint depth, glm::ivec2 size);
-  // After the revealed commands drew: remembers what the full depth does not
-  // hide for the next frame and queues the frame's counts.
-  void remember(GLuint depth, glm::ivec2 size);
 
   // Which commands the next draws take (GL_DRAW_INDIRECT_BUFFER, and with
   // packing the parameter buffer): returns the CommandSource::count_base to
@@ -78,7 +78,7 @@ class GpuOcclusionCulling {
   GLuint commands_ = 0;
   std::uint32_t command_count_ = 0, opaque_count_ = 0;
   std::size_t blended_triangles_ = 0;
-  gfx::Buffer last_shown_;  // one uint per unit: 1 where the last frame's full depth did not hide it
+  gfx::Buffer last_shown_;  // one uint per unit: 1 where the last frame's first depth did not hide it
   std::uint32_t units_ = 0;
   gfx::Buffer counters_;  // occlusion_cull.comp's u_counters
   std::vector<glm::ivec4> levels_;

@@ -120,33 +120,32 @@ void for_each_opaque_in_view(ecs::Registry& registry, Test test) {
   });
 }
 
-// Tests one box and counts it; returns whether `depth` hides it.
-bool hidden(const DepthPyramid& depth, const ViewState& view, glm::vec3 min, glm::vec3 max, std::size_t triangles,
-            OcclusionCounts& counts) {
-  ++counts.tested;
-  if (!depth.hides(view.view, view.projection, view.near_plane, min, max)) return false;
-  ++counts.hidden;
-  counts.triangles_hidden += triangles;
-  return true;
-}
-
 }  // namespace
 
-OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view) {
-  OcclusionCounts counts;
-  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3 min, glm::vec3 max, std::size_t triangles) {
-    if (!(state & seen::kLastFrame) && !hidden(depth, view, min, max, triangles, counts)) state |= seen::kRevealed;
+std::size_t reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view) {
+  std::size_t revealed = 0;
+  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3 min, glm::vec3 max, std::size_t) {
+    if (depth.hides(view.view, view.projection, view.near_plane, min, max)) {
+      state |= seen::kHidden;
+    } else if (!(state & seen::kLastFrame)) {
+      state |= seen::kRevealed;
+      ++revealed;
+    }
   });
-  return counts;
+  return revealed;
 }
 
-OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view) {
-  OcclusionCounts counts;
-  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3 min, glm::vec3 max, std::size_t triangles) {
-    if (hidden(depth, view, min, max, triangles, counts)) state &= static_cast<std::uint8_t>(~seen::kLastFrame);
-    else state |= seen::kLastFrame;
+std::size_t remember_shown(ecs::Registry& registry) {
+  std::size_t not_drawn = 0;
+  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3, glm::vec3, std::size_t triangles) {
+    if (!(state & seen::kHidden)) {
+      state |= seen::kLastFrame;
+      return;
+    }
+    if (!(state & seen::kLastFrame)) not_drawn += triangles;
+    state &= static_cast<std::uint8_t>(~seen::kLastFrame);
   });
-  return counts;
+  return not_drawn;
 }
 
 void write_depth_tiles(gfx::ShaderLibrary& shaders, GLuint depth, glm::ivec2 tiles, GLuint buffer) {

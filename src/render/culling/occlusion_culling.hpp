@@ -1,9 +1,11 @@
 // Two-phase occlusion culling, run inside each technique's first pass over
 // opaque geometry (the one that fills the depth buffer): the pass draws what
 // the last frame showed, the depth it wrote is read back as a pyramid of
-// farthest depths, everything else in view is tested against it and what it
-// does not hide is drawn too (seen::kRevealed); a test against the completed
-// depth then marks what the next frame draws first (seen::kLastFrame). A
+// farthest depths, everything in view is tested against it, what it does not
+// hide and was not drawn is drawn too (seen::kRevealed), and what it does not
+// hide is what the next frame draws first (seen::kLastFrame). One pyramid a
+// frame, as in Niagara: the completed depth would drop, a frame sooner, what
+// only the revealed surfaces hide, for a second read of the depth. A
 // surface is left out only where drawn depth lies in front of all of it, so
 // every mode still draws the picture it draws without culling; what the test
 // saves is the vertex work of hidden geometry (a street of the Bistro-scale
@@ -52,19 +54,15 @@ class DepthPyramid {
   glm::ivec2 viewport_{0};
 };
 
-struct OcclusionCounts {
-  std::size_t tested = 0;    // primitives and meshlets tested
-  std::size_t hidden = 0;    // of which the depth hides
-  std::size_t triangles_hidden = 0;
-};
-
-// Sets seen::kRevealed on every opaque primitive and meshlet in view that the
-// last frame did not show and `depth` does not hide.
-OcclusionCounts reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
-// Sets seen::kLastFrame on every opaque primitive and meshlet in view that
-// `depth` does not hide and clears it on those it hides, for the next frame
-// (frustum culling clears it on what leaves the view).
-OcclusionCounts remember_shown(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
+// Tests every opaque primitive and meshlet in view against `depth` (the
+// first phase's): sets seen::kHidden on those it hides, and seen::kRevealed
+// on the others that the last frame did not show. Returns how many it revealed.
+std::size_t reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, const ViewState& view);
+// Once this frame's lists are built: sets seen::kLastFrame, for the next
+// frame, on every opaque primitive and meshlet in view that reveal_unhidden()
+// did not hide and clears it on those it hid (frustum culling clears it on
+// what leaves the view). Returns the triangles in view that no pass draws.
+std::size_t remember_shown(ecs::Registry& registry);
 
 // Writes the farthest view depth of each 8x8-pixel tile of `depth` (`tiles`
 // of them, rows from the bottom) to the start of `buffer`

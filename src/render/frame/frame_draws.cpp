@@ -81,25 +81,20 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& dra
       const gfx::PassTimer::Step step("revealed draws");
       draw(list_.opaque, {{}, gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed)});
     }
-    const gfx::PassTimer::Step step("remember");
-    gpu_culling_.remember(depth, size);
     active_phase_ = GpuOcclusionCulling::Phase::Shown;
     bind();
     return;
   }
   const auto& view = registry.resource<ViewState>();
-  DepthPyramid pyramid = depth_reader_.read(depth, size);
-  const OcclusionCounts late = reveal_unhidden(registry, pyramid, view);
-  if (late.tested > late.hidden) {
+  if (reveal_unhidden(registry, depth_reader_.read(depth, size), view) > 0) {
     const auto& assets = registry.resource<assets::AssetManager>();
     const DrawList revealed = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Revealed);
     upload(revealed);
     draw(revealed.opaque, source_);
     list_ = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Shown);
     upload(list_);
-    pyramid = depth_reader_.read(depth, size);
   }
-  triangles_occluded_ = remember_shown(registry, pyramid, view).triangles_hidden;
+  triangles_occluded_ = remember_shown(registry);
 }
 
 FrameModule FrameDraws::occlusion_module() {
