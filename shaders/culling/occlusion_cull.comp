@@ -8,10 +8,14 @@
 //   u_phase 1 (after its depth):        u_out = what that depth does not hide
 //                                       and was not drawn; u_shown = both;
 //                                       u_last_shown = what that depth does not hide
+//   u_phase 2 (camera cuts only, after the second draw):
+//                                       u_last_shown = what the full depth does not hide
 // One pyramid a frame: the next frame's first draws come from the same test
 // (as Niagara's late pass does), not from a second pyramid of the full depth.
 // That depth lacks only what the second draw adds, so it keeps a unit that
 // the revealed ones hide for one more frame, and never drops a shown one.
+// After a camera cut the first depth is what the last view chose and hides
+// little, so phase 2 chooses from the full one.
 layout(local_size_x = 64) in;
 
 #include "common/frame.glsl"
@@ -105,6 +109,8 @@ void main() {
   if (u_phase == 0u) {
     command.instance_count = shown_before ? 1u : 0u;
     u_out[i] = command;
+  } else if (u_phase == 2u) {
+    if (opaque && record.unit != kNeverCulled) u_last_shown[record.unit] = hides(record.box_min.xyz, record.box_max.xyz) ? 0u : 1u;
   } else {
     // Every opaque unit is tested, the ones drawn first too: what that depth
     // hides is not drawn first next frame.

@@ -1,6 +1,6 @@
 // The camera: an entity with a Transform (position and orientation) and a Camera
 // (projection). CameraAngles keeps yaw and pitch for controllers and stored views,
-// which set the Transform's rotation from them.
+// which set the Transform's rotation from them. CameraCut marks a jump.
 #pragma once
 
 #include <optional>
@@ -19,6 +19,13 @@ struct CameraAngles {
   float yaw_degrees = 0.0f;    // 0 looks along -Z, 90 along +X
   float pitch_degrees = 0.0f;  // positive looks up
 };
+
+// Put on a camera entity by whatever moves it somewhere new at once (apply_view:
+// a stored view, --camera, the page's view switch), as engines flag a camera
+// cut: what the last frame showed says little about the next, so what keeps
+// history across frames (occlusion culling) learns anew. The camera system
+// turns it into ViewState::cut for one frame and takes it off.
+struct CameraCut {};
 
 // Lets the fly-camera system steer a camera (systems/fly_camera.hpp).
 struct FlyCamera {

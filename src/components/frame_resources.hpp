@@ -23,6 +23,7 @@ struct ViewState {
   glm::vec3 camera_position{0.0f};
   float near_plane = 0.05f;
   float far_plane = 200.0f;
+  bool cut = false;  // the camera jumped this frame (CameraCut): the last frame's history does not hold
 };
 
 // Scene-wide lighting settings.

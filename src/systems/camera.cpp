@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <vector>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -22,6 +23,7 @@ void apply_view(ecs::Registry& registry, const assets::NamedView& view) {
     transform.position = view.position;
     transform.rotation = camera_rotation(view.yaw_degrees, view.pitch_degrees);
     if (auto* angles = registry.try_get<CameraAngles>(entity)) *angles = {view.yaw_degrees, view.pitch_degrees};
+    registry.add<CameraCut>(entity);
   });
 }
 
@@ -59,6 +61,10 @@ void register_camera(ecs::Scheduler& scheduler) {
     const auto* scene = registry.try_resource<SceneBounds>();
     const glm::vec3 lo = scene ? scene->min : glm::vec3(0.0f), hi = scene ? scene->max : glm::vec3(0.0f);
     auto& state = registry.resource<ViewState>();
+    std::vector<ecs::Entity> cut;
+    registry.view<CameraCut>().each([&](ecs::Entity entity, const CameraCut&) { cut.push_back(entity); });
+    for (const ecs::Entity entity : cut) registry.remove<CameraCut>(entity);
+    state.cut = !cut.empty();
     registry.view<Transform, Camera>().each([&](const Transform& transform, const Camera& camera) {
       const float aspect = static_cast<float>(std::max(size.x, 1)) / static_cast<float>(std::max(size.y, 1));
       const glm::mat4 world = glm::translate(glm::mat4(1.0f), transform.position) * glm::mat4_cast(transform.rotation);

@@ -1,8 +1,8 @@
 // The camera system (PostUpdate): turns the first entity with Transform + Camera
 // into the frame's ViewState (view and projection matrices, reversed Z as
 // gfx/depth.hpp says), with near and far planes that follow the scene's bounds
-// and the camera's place in them. Stored views set a camera's Transform from
-// yaw and pitch through apply_view.
+// and the camera's place in them, and ViewState::cut where a CameraCut asks.
+// Stored views set a camera's Transform from yaw and pitch through apply_view.
 #pragma once
 
 #include "assets/scene.hpp"
@@ -38,7 +38,7 @@ struct DepthPlanes {
 // The rotation that looks along yaw/pitch (yaw 0 = -Z, 90 = +X; pitch up > 0).
 [[nodiscard]] glm::quat camera_rotation(float yaw_degrees, float pitch_degrees);
 
-// Moves every camera entity to `view`.
+// Moves every camera entity to `view`, as a cut (CameraCut).
 void apply_view(ecs::Registry& registry, const assets::NamedView& view);
 
 }  // namespace atrium

@@ -11,6 +11,7 @@
 
 #include "base/golden_angle.hpp"
 #include "components/camera.hpp"
+#include "components/frame_resources.hpp"
 #include "components/input.hpp"
 #include "components/light.hpp"
 #include "components/transform.hpp"
@@ -160,6 +161,28 @@ TEST(FlyCameraSystem, ScrollScalesTheSpeedWithinLimitsAndTheOverlayKeepsItsEvent
   rig.hold(GLFW_KEY_W, 1.0);
   rig.scheduler.run_frame(rig.registry, 1.0);
   EXPECT_EQ(rig.transform().position, glm::vec3(0.0f));
+}
+
+// A stored view moves the camera as a cut, which the frame's ViewState says
+// for that frame only; flying, however far, is not one.
+TEST(CameraSystem, AStoredViewIsACutForOneFrameAndFlyingIsNot) {
+  FlyRig rig;
+  rig.registry.set_resource<Viewport>();
+  const ViewState& view = rig.registry.set_resource<ViewState>();
+  register_camera(rig.scheduler);
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_FALSE(view.cut);
+  apply_view(rig.registry, assets::NamedView{"court", glm::vec3(5.0f, 1.0f, -2.0f), 90.0f, 0.0f});
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_TRUE(view.cut);
+  EXPECT_EQ(view.camera_position, glm::vec3(5.0f, 1.0f, -2.0f));
+  EXPECT_FALSE(rig.registry.has<CameraCut>(rig.camera)) << "taken off once the frame has it";
+  rig.scheduler.run_frame(rig.registry, 0.0);
+  EXPECT_FALSE(view.cut);
+  rig.hold(GLFW_KEY_W, 10.0);
+  rig.scheduler.run_frame(rig.registry, 10.0);
+  EXPECT_GT(glm::length(view.camera_position - glm::vec3(5.0f, 1.0f, -2.0f)), 10.0f);
+  EXPECT_FALSE(view.cut);
 }
 
 // A light moves radius * speed / 60 along its circle in a frame of 60 Hz: so

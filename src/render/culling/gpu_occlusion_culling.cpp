@@ -17,7 +17,7 @@ constexpr GLuint kTemplateBinding = kCommandTemplateBinding, kOutBinding = kCull
 constexpr int kMaxLevels = 16;  // occlusion_cull.comp's u_levels: 12 cover the largest render size (16384 pixels)
 constexpr GLuint kCullGroup = 64;
 
-enum Phase : unsigned { kFirst = 0, kReveal = 1 };
+enum Phase : unsigned { kFirst = 0, kReveal = 1, kRemember = 2 };
 
 }  // namespace
 
@@ -84,6 +84,12 @@ void GpuOcclusionCulling::reveal(GLuint depth, glm::ivec2 size) {
   pack(Phase::Revealed);
   pack(Phase::Shown);
   readback_.copy(counters_.id(), 0, 2 * sizeof(std::uint32_t), blended_triangles_);
+}
+
+void GpuOcclusionCulling::remember(GLuint depth, glm::ivec2 size) {
+  const gfx::KeepProgram keep;
+  build_pyramid(depth, size);
+  cull(kRemember);
 }
 
 const gfx::StreamBuffer& GpuOcclusionCulling::commands_of(Phase phase) const {

@@ -6,7 +6,7 @@
 // culling/depth_pyramid.comp, and culling/occlusion_cull.comp writes the
 // commands each phase draws (instance count 0 for what it leaves out) and,
 // from the same test, which units the next frame draws first: one pyramid a
-// frame. Where GL 4.6 or
+// frame (two on a camera cut). Where GL 4.6 or
 // ARB_indirect_parameters has glMultiDrawElementsIndirectCount,
 // culling/compact_commands.comp then packs each batch's drawn commands to the
 // front of its range, in order, and draws take their count from the GPU.
@@ -52,6 +52,9 @@ class GpuOcclusionCulling {
   // remembers what it does not hide for the next frame's first phase and
   // queues the frame's counts.
   void reveal(GLuint depth, glm::ivec2 size);
+  // On a camera cut, after the revealed commands drew into `depth`: chooses
+  // what the next frame draws first from that depth instead.
+  void remember(GLuint depth, glm::ivec2 size);
 
   // Which commands the next draws take (GL_DRAW_INDIRECT_BUFFER, and with
   // packing the parameter buffer): returns the CommandSource::count_base to

@@ -135,15 +135,15 @@ std::size_t reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, 
   return revealed;
 }
 
-std::size_t remember_shown(ecs::Registry& registry) {
+std::size_t remember_shown(ecs::Registry& registry, const ViewState& view, const DepthPyramid* full_depth) {
   std::size_t not_drawn = 0;
-  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3, glm::vec3, std::size_t triangles) {
-    if (!(state & seen::kHidden)) {
-      state |= seen::kLastFrame;
-      return;
-    }
-    if (!(state & seen::kLastFrame)) not_drawn += triangles;
-    state &= static_cast<std::uint8_t>(~seen::kLastFrame);
+  for_each_opaque_in_view(registry, [&](std::uint8_t& state, glm::vec3 min, glm::vec3 max, std::size_t triangles) {
+    const bool drawn = !(state & seen::kHidden) || (state & seen::kLastFrame);
+    if (!drawn) not_drawn += triangles;
+    const bool hidden = full_depth ? full_depth->hides(view.view, view.projection, view.near_plane, min, max)
+                                   : (state & seen::kHidden) != 0;
+    if (hidden) state &= static_cast<std::uint8_t>(~seen::kLastFrame);
+    else state |= seen::kLastFrame;
   });
   return not_drawn;
 }

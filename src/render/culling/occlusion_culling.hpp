@@ -5,7 +5,9 @@
 // hide and was not drawn is drawn too (seen::kRevealed), and what it does not
 // hide is what the next frame draws first (seen::kLastFrame). One pyramid a
 // frame, as in Niagara: the completed depth would drop, a frame sooner, what
-// only the revealed surfaces hide, for a second read of the depth. A
+// only the revealed surfaces hide, for a second read of the depth. Only after
+// a camera cut, when the first depth is mostly what the last view chose, is
+// the completed depth read again to choose. A
 // surface is left out only where drawn depth lies in front of all of it, so
 // every mode still draws the picture it draws without culling; what the test
 // saves is the vertex work of hidden geometry (a street of the Bistro-scale
@@ -61,8 +63,10 @@ std::size_t reveal_unhidden(ecs::Registry& registry, const DepthPyramid& depth, 
 // Once this frame's lists are built: sets seen::kLastFrame, for the next
 // frame, on every opaque primitive and meshlet in view that reveal_unhidden()
 // did not hide and clears it on those it hid (frustum culling clears it on
-// what leaves the view). Returns the triangles in view that no pass draws.
-std::size_t remember_shown(ecs::Registry& registry);
+// what leaves the view). On a camera cut (ViewState::cut), `full_depth`, the
+// depth after every draw, chooses instead: the first depth came from the last
+// view's choice and hides little. Returns the triangles in view that no pass draws.
+std::size_t remember_shown(ecs::Registry& registry, const ViewState& view, const DepthPyramid* full_depth = nullptr);
 
 // Writes the farthest view depth of each 8x8-pixel tile of `depth` (`tiles`
 // of them, rows from the bottom) to the start of `buffer`

@@ -1,5 +1,7 @@
 #include "render/frame/frame_draws.hpp"
 
+#include <optional>
+
 #include "assets/asset_manager.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/pass_timer.hpp"
@@ -81,11 +83,16 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& dra
       const gfx::PassTimer::Step step("revealed draws");
       draw(list_.opaque, {{}, gpu_culling_.bind(GpuOcclusionCulling::Phase::Revealed)});
     }
+    if (registry.resource<ViewState>().cut) {
+      const gfx::PassTimer::Step step("remember");
+      gpu_culling_.remember(depth, size);
+    }
     active_phase_ = GpuOcclusionCulling::Phase::Shown;
     bind();
     return;
   }
   const auto& view = registry.resource<ViewState>();
+  std::optional<DepthPyramid> full_depth;
   if (reveal_unhidden(registry, depth_reader_.read(depth, size), view) > 0) {
     const auto& assets = registry.resource<assets::AssetManager>();
     const DrawList revealed = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Revealed);
@@ -93,8 +100,12 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& dra
     draw(revealed.opaque, source_);
     list_ = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Shown);
     upload(list_);
+    if (view.cut) {
+      const gfx::PassTimer::Step step("remember");
+      full_depth = depth_reader_.read(depth, size);
+    }
   }
-  triangles_occluded_ = remember_shown(registry);
+  triangles_occluded_ = remember_shown(registry, view, full_depth ? &*full_depth : nullptr);
 }
 
 FrameModule FrameDraws::occlusion_module() {
