@@ -60,11 +60,14 @@ constexpr std::array kDemoKeys{
             }},
     DemoKey{{GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT}, "", "",
             [](World& world, bool) { world.registry().resource<DemoRequests>().light_count = world.light_count() / 2; }},
-    DemoKey{{GLFW_KEY_P, 0}, "p", "pause / resume the light animation",
+    DemoKey{{GLFW_KEY_P, 0}, "p", "pause / resume the light animation (generated lights move; the built-in scene's lamps do not)",
             [](World& world, bool) {
               bool& paused = world.registry().resource<LightAnimationSettings>().paused;
               paused = !paused;
-              say(paused ? "light animation: paused" : "light animation: running");
+              // The built-in scene's first lights are its lamps', which stay put.
+              const bool none_moves = world.registry().count<LightAnimation>() == 0;
+              say(std::string(paused ? "light animation: paused" : "light animation: running") +
+                  (none_moves ? " (no light here moves: generated lights do, and + adds them)" : ""));
             }},
     // Where the camera is, as a scene-file view line and a --camera value, so
     // that users can author views by flying to them.
