@@ -93,6 +93,24 @@ double count_reaching(World& world) {
   return count_evaluations(world, "deferred-radius");
 }
 
+// With the light animation running (the window's, bench --moving-lights),
+// every mode is measured over the same light positions, and so are the lights
+// reaching each pixel: before each, the animation's clock goes back to where
+// the bench found it. Lights are placed from the clock, not moved by steps,
+// so going back places them again.
+class LightClock {
+ public:
+  explicit LightClock(World& world)
+      : settings_(world.registry().try_resource<LightAnimationSettings>()), start_(settings_ ? settings_->time : 0.0) {}
+  void rewind() const {
+    if (settings_) settings_->time = start_;
+  }
+
+ private:
+  LightAnimationSettings* settings_;
+  double start_;
+};
+
 // Frame and pass times of `mode` from the world's current camera. A frame
 // slower than `frame_limit_ms` ends the run after it (the row keeps that one
 // frame), so one slow mode cannot hold the whole sweep. The first frame gets
@@ -238,8 +256,10 @@ BenchResult bench_current_view(World& world, int frames, int warmup) {
   result.options.frames = frames;
   result.options.warmup = warmup;
   const std::string previous = world.mode();
+  const LightClock clock(world);
   const double reaching = count_reaching(world);
   for (const std::string& mode : world.modes()) {
+    clock.rewind();
     result.rows.push_back(measure_mode(world, mode, frames, warmup, reaching, BenchOptions{}.frame_limit_ms));
     result.rows.back().view_name = "current camera";
   }
@@ -286,6 +306,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
   // the lights as a world made with that count would have them.
   World world(world_options);
   if (options.moving_lights) register_light_animation(world.scheduler(), world.registry());
+  const LightClock clock(world);
   std::vector<int> views = options.views;
   if (views.empty()) {
     for (int v = 1; v <= static_cast<int>(world.scene().views.size()); ++v) views.push_back(v);
@@ -306,6 +327,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
     }
     for (const int view : views) {
       world.set_view(view);
+      clock.rewind();
       const double reaching = count_reaching(world);
       for (const auto& [shadows, stage] : sweep(shadow_counts, stages)) {
         settings.shadows = shadows;
@@ -322,6 +344,7 @@ BenchResult run_bench(const BenchOptions& options, const BenchProgress& progress
             BenchRow row;
             const std::string skipped = skip_reason(result.rows, mode, stage, lights, shadows, options.frame_limit_ms);
             if (skipped.empty()) {
+              clock.rewind();
               row = measure_mode(world, mode, options.frames, options.warmup, reaching, options.frame_limit_ms);
             } else {
               row.mode = mode;

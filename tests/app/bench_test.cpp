@@ -15,6 +15,7 @@
 #include "assets/mesh_builder.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/limits.hpp"
+#include "systems/light_animation.hpp"
 #include "support/gl_test.hpp"
 
 namespace atrium {
@@ -222,6 +223,51 @@ TEST(BenchCommand, AModeOverTheFrameLimitStopsAndIsSkippedAtLargerCounts) {
   EXPECT_NE(progress.find("bench 3/3: forward, 16 lights, view 1: skipped: "), std::string::npos) << progress;
   EXPECT_NE(read_text(folder / "stdout.txt").find("skipped: a frame took"), std::string::npos);
   fs::remove_all(folder);
+}
+
+// --moving-lights: the lights move while each mode is measured, and every
+// mode meets them in the same places. The two clustered modes evaluate the
+// same lists, so they count the same evaluations per pixel only when that
+// holds (before the clock went back for each mode, 80.8517 and 80.8224).
+TEST(BenchCommand, MovingLightsAreWhereTheyWereForEveryMode) {
+  const fs::path folder = fs::temp_directory_path() / ("atrium_bench_moving_" + std::to_string(::getpid()));
+  fs::create_directories(folder);
+  const std::string command = std::string(ATRIUM_BINARY) +
+                              " bench --moving-lights --modes clustered-forward,clustered-deferred --lights 1024 --views 1"
+                              " --size 160x90 --frames 2 --warmup 1 --csv " + (folder / "m.csv").string() + " > " +
+                              (folder / "stdout.txt").string() + " 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
+  std::istringstream csv(read_text(folder / "m.csv"));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+  ASSERT_EQ(rows.size(), 2u);
+  for (const auto& row : rows) EXPECT_NE(row[14].find("light motion"), std::string::npos) << "the lights move: " << row[14];
+  EXPECT_GT(std::stod(rows[0][11]), 0.0);
+  EXPECT_EQ(rows[0][11], rows[1][11]) << "evaluations per pixel of " << rows[0][0] << " and " << rows[1][0];
+  fs::remove_all(folder);
+}
+
+// The window's b measures every mode from the same light positions too
+// (without the clock going back, 22.0079 and 21.974 here).
+using WindowBench = testing::GlTest;
+
+TEST_F(WindowBench, EveryModeMeetsTheMovingLightsInTheSamePlaces) {
+  World world({.lights = 256u, .size = {96, 54}});
+  register_light_animation(world.scheduler(), world.registry());
+  world.frame(0.5);
+  const BenchResult result = bench_current_view(world, 2, 1);
+  const BenchRow* forward_plus = nullptr;
+  const BenchRow* deferred = nullptr;
+  for (const BenchRow& row : result.rows) {
+    if (row.mode == "clustered-forward") forward_plus = &row;
+    if (row.mode == "clustered-deferred") deferred = &row;
+  }
+  ASSERT_TRUE(forward_plus && deferred);
+  EXPECT_GT(forward_plus->evaluated_per_pixel, 0.0);
+  EXPECT_EQ(forward_plus->evaluated_per_pixel, deferred->evaluated_per_pixel);
+  EXPECT_EQ(world.mode(), "forward") << "the mode the window had";
 }
 
 using EfficiencyCounters = testing::GlTest;
