@@ -41,6 +41,16 @@ std::vector<std::string> csv_fields(const std::string& line) {
   return fields;
 }
 
+// The rows of a CSV file the bench wrote, its header left out.
+std::vector<std::vector<std::string>> csv_rows(const fs::path& path) {
+  std::istringstream csv(read_text(path));
+  std::string line;
+  std::getline(csv, line);
+  std::vector<std::vector<std::string>> rows;
+  while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+  return rows;
+}
+
 TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   const fs::path folder = fs::temp_directory_path() / ("atrium_bench_" + std::to_string(::getpid()));
   fs::create_directories(folder);
@@ -203,11 +213,7 @@ TEST(BenchCommand, AModeOverTheFrameLimitStopsAndIsSkippedAtLargerCounts) {
                               " --csv " + (folder / "l.csv").string() + " > " + (folder / "stdout.txt").string() + " 2> " +
                               (folder / "stderr.txt").string();
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stderr.txt");
-  std::istringstream csv(read_text(folder / "l.csv"));
-  std::string line;
-  std::getline(csv, line);
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+  const auto rows = csv_rows(folder / "l.csv");
   ASSERT_EQ(rows.size(), 3u);
   // Counts run smallest first; llvmpipe draws no frame of the built-in scene in 1 ms.
   EXPECT_EQ(rows[0][1], "4");
@@ -237,11 +243,7 @@ TEST(BenchCommand, MovingLightsAreWhereTheyWereForEveryMode) {
                               " --size 160x90 --frames 2 --warmup 1 --csv " + (folder / "m.csv").string() + " > " +
                               (folder / "stdout.txt").string() + " 2>&1";
   ASSERT_EQ(std::system(command.c_str()), 0) << read_text(folder / "stdout.txt");
-  std::istringstream csv(read_text(folder / "m.csv"));
-  std::string line;
-  std::getline(csv, line);
-  std::vector<std::vector<std::string>> rows;
-  while (std::getline(csv, line)) rows.push_back(csv_fields(line));
+  const auto rows = csv_rows(folder / "m.csv");
   ASSERT_EQ(rows.size(), 2u);
   for (const auto& row : rows) EXPECT_NE(row[14].find("light motion"), std::string::npos) << "the lights move: " << row[14];
   EXPECT_GT(std::stod(rows[0][11]), 0.0);
