@@ -243,8 +243,12 @@ bool ShadowAtlas::update(ecs::Registry& registry, render::LightBuffer& lights, c
   stats_.atlas_size = limits_.atlas_size;
   collect_changed_geometry(registry);
 
+  // A camera cut forgets which lights had maps: there is no flicker to
+  // prevent, and the last view's choice says little about this one's.
   PreviousShadows previous;
-  for (const auto& [entity, entry] : entries_) previous.emplace(entity, entry.resolution);
+  if (!view.cut) {
+    for (const auto& [entity, entry] : entries_) previous.emplace(entity, entry.resolution);
+  }
   std::vector<ShadowChoice> choices = choose_shadowed_lights(lights.staging, lights.entities, view, viewport, count, previous, limits_);
 
   // Lights no longer shadowed, or at another size, give their tiles back.

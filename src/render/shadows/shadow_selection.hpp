@@ -3,7 +3,8 @@
 // the screen their sphere covers; a directional light always first), each map's
 // side from the light's size on screen, all within the atlas. Lights shadowed
 // last frame keep their place and size unless another light clearly outweighs
-// them, so that shadows do not flicker as the camera moves. Pure CPU.
+// them, so that shadows do not flicker as the camera moves (but for a camera
+// cut, ViewState::cut, when the ShadowAtlas passes no last frame). Pure CPU.
 #pragma once
 
 #include <cstdint>

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include "app/world.hpp"
 #include "assets/mesh_builder.hpp"
@@ -302,6 +303,39 @@ TEST_F(Shadows, AMovingLightRedrawsOnlyItsOwnMaps) {
   EXPECT_EQ(stats.maps_reused, maps - 6u);
   EXPECT_GT(stats.triangles, 0u);
   EXPECT_LT(stats.triangles, all_triangles) << "only its six faces drawn";
+}
+
+// The lights that have maps (their entities' indices).
+std::set<std::uint32_t> shadowed_lights(World& world) {
+  const auto& lights = world.registry().resource<render::LightBuffer>();
+  std::set<std::uint32_t> shadowed;
+  for (std::size_t i = 0; i < lights.staging.size(); ++i) {
+    if (lights.staging[i].spot.z > 0.0f) shadowed.insert(lights.entities[i].index);
+  }
+  return shadowed;
+}
+
+// Lights shadowed last frame keep their maps over slightly brighter ones, so
+// that shadows do not flicker as the camera moves; after a jump to a stored
+// view (a camera cut) the maps go where a camera that started there puts them.
+TEST_F(Shadows, AfterACameraCutTheMapsGoWhereAFreshStartPutsThem) {
+  auto with_shadows = [](int view) {
+    auto world = std::make_unique<World>(WorldOptions{.scene = "atrium", .lights = 48u, .mode = "forward", .view = view, .size = {160, 90}});
+    world->registry().resource<RendererSettings>().shadows = 4;
+    world->frame(0.0);
+    return world;
+  };
+  // Four of these six jumps kept some of the last view's maps while the
+  // choice remembered them across the cut.
+  const std::unique_ptr<World> world = with_shadows(1);
+  int from = 1;
+  for (const int to : {4, 1, 3, 4, 5, 3}) {
+    world->frame(0.0);
+    world->set_view(to);
+    world->frame(0.0);
+    EXPECT_EQ(shadowed_lights(*world), shadowed_lights(*with_shadows(to))) << "from view " << from << " to view " << to;
+    from = to;
+  }
 }
 
 TEST_F(Shadows, MovingGeometryRedrawsTheMapsItReaches) {
