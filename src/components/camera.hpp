@@ -23,8 +23,9 @@ struct CameraAngles {
 // Put on a camera entity by whatever moves it somewhere new at once (apply_view:
 // a stored view, --camera, the page's view switch), as engines flag a camera
 // cut: what the last frame showed says little about the next, so what keeps
-// history across frames (occlusion culling) learns anew. The camera system
-// turns it into ViewState::cut for one frame and takes it off.
+// history across frames (occlusion culling, the shadow maps' choice) learns
+// anew. The camera system turns it into ViewState::cut for one frame and
+// takes it off.
 struct CameraCut {};
 
 // Lets the fly-camera system steer a camera (systems/fly_camera.hpp).
