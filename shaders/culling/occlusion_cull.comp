@@ -109,13 +109,15 @@ void main() {
   if (u_phase == 0u) {
     command.instance_count = shown_before ? 1u : 0u;
     u_out[i] = command;
-  } else if (u_phase == 2u) {
-    if (opaque && record.unit != kNeverCulled) u_last_shown[record.unit] = hides(record.box_min.xyz, record.box_max.xyz) ? 0u : 1u;
   } else {
     // Every opaque unit is tested, the ones drawn first too: what that depth
-    // hides is not drawn first next frame.
+    // hides is not drawn first next frame. shown_before was read above, so
+    // this invocation, the unit's only one, may write its bit now.
     bool tested = opaque && record.unit != kNeverCulled;
     bool hidden = tested && hides(record.box_min.xyz, record.box_max.xyz);
+    if (tested) u_last_shown[record.unit] = hidden ? 0u : 1u;
+    // A cut's second test chooses only what the next frame draws first.
+    if (u_phase == 2u) return;
     // Blended commands: drawn by the passes after the first, not by this one.
     bool shown = !opaque || shown_before || !hidden;
     DrawCommand late = command;
@@ -123,8 +125,6 @@ void main() {
     u_out[i] = late;
     command.instance_count = shown ? 1u : 0u;
     u_shown[i] = command;
-    // One command a unit: this invocation alone reads and writes its bit.
-    if (tested) u_last_shown[record.unit] = hidden ? 0u : 1u;
     if (opaque) atomicAdd(u_counters[shown ? 0 : 1], record.triangles);
   }
 }
