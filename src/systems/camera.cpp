@@ -50,7 +50,10 @@ DepthPlanes settle_depth_planes(DepthPlanes previous, DepthPlanes fitted) {
   const float floor = previous.far_plane * kMinNearFarRatio * 1.0001f;
   const bool holds = previous.near_plane <= std::max(fitted.near_plane, floor) && previous.far_plane >= fitted.far_plane;
   const bool tight = previous.near_plane * 2.0f >= fitted.near_plane && previous.far_plane <= fitted.far_plane * 2.0f;
-  if (holds && tight) return previous;
+  return holds && tight ? previous : fresh_depth_planes(fitted);
+}
+
+DepthPlanes fresh_depth_planes(DepthPlanes fitted) {
   const float far_plane = fitted.far_plane * 1.25f;
   return {std::max(fitted.near_plane * 0.8f, std::min(fitted.near_plane, far_plane * kMinNearFarRatio)), far_plane};
 }
@@ -69,7 +72,11 @@ void register_camera(ecs::Scheduler& scheduler) {
       const float aspect = static_cast<float>(std::max(size.x, 1)) / static_cast<float>(std::max(size.y, 1));
       const glm::mat4 world = glm::translate(glm::mat4(1.0f), transform.position) * glm::mat4_cast(transform.rotation);
       state.view = glm::inverse(world);
-      const DepthPlanes planes = settle_depth_planes({state.near_plane, state.far_plane}, fit_depth_planes(state.view, lo, hi));
+      // A cut owes nothing to the last view: its planes are the ones a camera
+      // starting here gets, so a view's clusters do not depend on the one before.
+      const DepthPlanes fitted = fit_depth_planes(state.view, lo, hi);
+      const DepthPlanes planes =
+          state.cut ? fresh_depth_planes(fitted) : settle_depth_planes({state.near_plane, state.far_plane}, fitted);
       state.near_plane = camera.near_plane.value_or(planes.near_plane);
       state.far_plane = camera.far_plane.value_or(planes.far_plane);
       state.projection = gfx::perspective(glm::radians(camera.vertical_fov_degrees), aspect, state.near_plane, state.far_plane);

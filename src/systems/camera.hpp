@@ -35,6 +35,10 @@ struct DepthPlanes {
 // that moves a little keeps its projection (and the cluster grid its boxes).
 [[nodiscard]] DepthPlanes settle_depth_planes(DepthPlanes previous, DepthPlanes fitted);
 
+// `fitted` with that slack: the planes of a camera with no last frame to keep
+// (its first frame, or a CameraCut).
+[[nodiscard]] DepthPlanes fresh_depth_planes(DepthPlanes fitted);
+
 // The rotation that looks along yaw/pitch (yaw 0 = -Z, 90 = +X; pitch up > 0).
 [[nodiscard]] glm::quat camera_rotation(float yaw_degrees, float pitch_degrees);
 

@@ -272,10 +272,6 @@ TEST_F(WindowBench, EveryModeMeetsTheMovingLightsInTheSamePlaces) {
   EXPECT_EQ(world.mode(), "forward") << "the mode the window had";
 }
 
-using EfficiencyCounters = testing::GlTest;
-
-// A plane that fills the whole view from above, two lights whose radius covers
-// all of it and four whose radius reaches none of it.
 // --pass-steps: the steps a pass names are timed inside it, listed after it
 // in the table and as pass/step in the CSV, and never add up to more than the pass.
 TEST(BenchCommand, PassStepsAreTimedInsideTheirPasses) {
@@ -341,6 +337,10 @@ TEST(BenchTables, AStepThatRanInSomeFramesSaysInHowMany) {
   EXPECT_NE(csv.find("\"light culling/count=17.5000;light culling/sort=264.0000@1/3\""), std::string::npos) << csv;
 }
 
+using EfficiencyCounters = testing::GlTest;
+
+// A plane that fills the whole view from above, two lights whose radius covers
+// all of it and four whose radius reaches none of it.
 TEST_F(EfficiencyCounters, AreExactOnAHandBuiltScene) {
   assets::AssetManager manager;
   assets::MeshAsset plane;

@@ -10,6 +10,7 @@
 #include <glm/gtc/epsilon.hpp>
 
 #include "base/golden_angle.hpp"
+#include "components/bounds.hpp"
 #include "components/camera.hpp"
 #include "components/frame_resources.hpp"
 #include "components/input.hpp"
@@ -183,6 +184,32 @@ TEST(CameraSystem, AStoredViewIsACutForOneFrameAndFlyingIsNot) {
   rig.scheduler.run_frame(rig.registry, 10.0);
   EXPECT_GT(glm::length(view.camera_position - glm::vec3(5.0f, 1.0f, -2.0f)), 10.0f);
   EXPECT_FALSE(view.cut);
+}
+
+// After a cut the near and far planes are those of a camera that starts
+// there, whatever view came before: a small step keeps the last planes (so
+// that clusters hold still while flying), a stored view does not.
+TEST(CameraSystem, AStoredViewsDepthPlanesDoNotDependOnTheViewBefore) {
+  const auto planes_at = [](const std::vector<glm::vec3>& path, bool cut_each) {
+    FlyRig rig;
+    rig.registry.set_resource<Viewport>();
+    rig.registry.set_resource<SceneBounds>(SceneBounds{{glm::vec3(-10.0f), glm::vec3(10.0f), false}});
+    const ViewState& view = rig.registry.set_resource<ViewState>();
+    register_camera(rig.scheduler);
+    for (std::size_t i = 0; i < path.size(); ++i) {
+      if (i == 0 || cut_each) {
+        apply_view(rig.registry, assets::NamedView{"v", path[i], 0.0f, 0.0f});
+      } else {
+        rig.transform().position = path[i];
+      }
+      rig.scheduler.run_frame(rig.registry, 0.0);
+    }
+    return glm::vec2(view.near_plane, view.far_plane);
+  };
+  const glm::vec3 there(0.0f, 0.0f, 29.0f), before(0.0f, 0.0f, 30.0f);
+  const glm::vec2 fresh = planes_at({there}, true);
+  EXPECT_EQ(planes_at({before, there}, true), fresh) << "a cut from a view a metre behind";
+  EXPECT_NE(planes_at({before, there}, false), fresh) << "flying that metre keeps the planes it had";
 }
 
 // A light moves radius * speed / 60 along its circle in a frame of 60 Hz: so
