@@ -1,5 +1,7 @@
 #include "gfx/gpu_waits.hpp"
 
+#include "gfx/gl_features.hpp"
+
 namespace atrium::gfx {
 namespace {
 
@@ -14,6 +16,9 @@ void count_gpu_wait() { ++waits; }
 
 void read_buffer(GLuint buffer, GLintptr offset, GLsizeiptr bytes, void* data) {
   ++waits;
+  // Shaders' storage writes are incoherent: GL promises a read-back sees them
+  // only after this barrier, so every read goes through it here.
+  if (gl_features().memory_barriers) glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   glGetNamedBufferSubData(buffer, offset, bytes, data);
 }
 

@@ -19,7 +19,8 @@ namespace atrium::gfx {
 // Counts one call that could wait, for code that must make it itself.
 void count_gpu_wait();
 
-// glGetNamedBufferSubData, counted.
+// glGetNamedBufferSubData after the barrier that lets it see what shaders
+// wrote to the buffer, counted.
 void read_buffer(GLuint buffer, GLintptr offset, GLsizeiptr bytes, void* data);
 // glGetTextureImage, counted.
 void read_texture(GLuint texture, GLint level, GLenum format, GLenum type, GLsizei bytes, void* data);

@@ -171,7 +171,6 @@ DepthPyramid DepthReader::read(GLuint depth, glm::ivec2 size) {
   GLint program = 0;
   glGetIntegerv(GL_CURRENT_PROGRAM, &program);
   write_depth_tiles(shaders_, depth, tiles, tiles_.id());
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<float> farthest(count);
   gfx::read_buffer(tiles_.id(), 0, static_cast<GLsizeiptr>(count * sizeof(float)), farthest.data());
   glUseProgram(static_cast<GLuint>(program));

@@ -327,7 +327,6 @@ render::ResourceId LightIndexList::import_into(render::FrameGraph& graph, const 
 
 std::vector<std::vector<std::uint32_t>> LightIndexList::read() const {
   std::vector<std::uint32_t> ranges(static_cast<std::size_t>(bins_) * 2), indices(capacity_);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gfx::read_buffer(ranges_.id(), 0, static_cast<GLsizeiptr>(ranges.size() * sizeof(std::uint32_t)), ranges.data());
   gfx::read_buffer(indices_.id(), 0, static_cast<GLsizeiptr>(indices.size() * sizeof(std::uint32_t)), indices.data());
   std::vector<std::vector<std::uint32_t>> lists(bins_);
