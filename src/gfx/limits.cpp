@@ -22,6 +22,16 @@ int max_texture_size() {
   return size;
 }
 
+bool texture_fits(unsigned format, int levels, glm::ivec2 size) {
+  const GlFeatures& gl = gl_features();
+  if (std::max(size.x, size.y) > max_texture_size()) return false;  // past it the proxy call itself is an error
+  if (gl.es || !gl.texture_storage || !gl.level_queries) return true;
+  glTexStorage2D(GL_PROXY_TEXTURE_2D, levels, format, size.x, size.y);
+  GLint width = 0;
+  glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+  return width != 0;
+}
+
 glm::ivec2 max_render_size() {
   GLint viewport[2] = {0, 0}, width = 0, height = 0, renderbuffer = 0;
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);

@@ -21,6 +21,11 @@ class ResourceLimitError : public std::runtime_error {
 [[nodiscard]] std::uint64_t storage_block_limit();
 // GL_MAX_TEXTURE_SIZE: the widest and tallest 2D texture.
 [[nodiscard]] int max_texture_size();
+// Whether the context can make a 2D texture of `levels` levels of `format` at
+// `size`: asked of the proxy target, where a driver refuses what it cannot
+// hold (size or memory) without raising an error. True where there is no proxy
+// to ask (OpenGL ES and WebGL2, contexts without texture storage).
+[[nodiscard]] bool texture_fits(unsigned format, int levels, glm::ivec2 size);
 // The largest render size: the smallest of the viewport, framebuffer,
 // renderbuffer and texture limits, per axis.
 [[nodiscard]] glm::ivec2 max_render_size();

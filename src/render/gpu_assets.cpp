@@ -12,10 +12,15 @@ namespace {
 
 constexpr float kMaxAnisotropy = 8.0f;
 
+// A full mip chain's levels for an image of `size`.
+int mip_levels(glm::ivec2 size) { return 1 + static_cast<int>(std::floor(std::log2(std::max({size.x, size.y, 1})))); }
+
+GLenum image_format(assets::ColorSpace color_space) { return color_space == assets::ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8; }
+
 gfx::Texture upload_image(const assets::Image& image, assets::ColorSpace color_space, std::size_t& bytes) {
-  const int levels = 1 + static_cast<int>(std::floor(std::log2(std::max(image.width, image.height))));
+  const int levels = mip_levels({image.width, image.height});
   gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
-  const GLenum format = color_space == assets::ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8;
+  const GLenum format = image_format(color_space);
   glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTextureSubImage2D(texture.id(), 0, 0, 0, image.width, image.height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
@@ -87,19 +92,43 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
            "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + std::to_string(to.x) + "x" +
            std::to_string(to.y);
   };
+  auto not_held = [](std::size_t t, const assets::TextureData& data, glm::ivec2 from, glm::ivec2 to, const char* done) {
+    return "texture " + std::to_string(t) + " '" + data.name + "' at " + std::to_string(from.x) + "x" + std::to_string(from.y) +
+           " is more than this context can hold (its proxy texture refused it); it is " + done + std::to_string(to.x) + "x" +
+           std::to_string(to.y);
+  };
+  // Within GL_MAX_TEXTURE_SIZE a driver may still lack the memory (zink over
+  // lavapipe refuses 16384x16384 RGBA8 with its mips): halved until the proxy
+  // takes it, rather than a texture without storage that samples black.
+  auto upload_held = [&](std::size_t t, const assets::TextureData& data, const assets::Image& image) {
+    const glm::ivec2 size(image.width, image.height);
+    glm::ivec2 held = size;
+    while (std::max(held.x, held.y) > 1 && !gfx::texture_fits(image_format(data.color_space), mip_levels(held), held)) held = glm::max(held / 2, 1);
+    if (held == size) return upload_image(image, data.color_space, texture_bytes_);
+    const assets::Image smaller = assets::downscale_to_fit(image, std::max(held.x, held.y), data.color_space == assets::ColorSpace::Srgb);
+    warnings.push_back(not_held(t, data, size, {smaller.width, smaller.height}, "downscaled to "));
+    return upload_image(smaller, data.color_space, texture_bytes_);
+  };
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
     const assets::TextureData& data = assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)});
     two_channel_.push_back(data.compressed && data.compressed->format == assets::BlockFormat::BC5);
     if (data.compressed) {
       if (compressed_supported(data.compressed->format)) {
+        const assets::CompressedImage& image = *data.compressed;
+        const auto size_from = [&](std::size_t first) {
+          return glm::ivec2(std::max(1, image.width >> first), std::max(1, image.height >> first));
+        };
         std::size_t first = 0;
-        while (first + 1 < data.compressed->levels.size() &&
-               std::max(data.compressed->width >> first, data.compressed->height >> first) > limit) {
+        while (first + 1 < image.levels.size() && std::max(size_from(first).x, size_from(first).y) > limit) ++first;
+        if (first > 0) warnings.push_back(too_large(t, data, size_from(first)));
+        const std::size_t within_limit = first;
+        const GLenum format = compressed_format(image.format, data.color_space);
+        while (first + 1 < image.levels.size() &&
+               !gfx::texture_fits(format, static_cast<int>(image.levels.size() - first), size_from(first))) {
           ++first;
         }
-        const glm::ivec2 size(std::max(1, data.compressed->width >> first), std::max(1, data.compressed->height >> first));
-        if (first > 0) warnings.push_back(too_large(t, data, size));
-        textures_.push_back(upload_compressed(*data.compressed, first, data.color_space, texture_bytes_));
+        if (first > within_limit) warnings.push_back(not_held(t, data, size_from(within_limit), size_from(first), "uploaded from its mip level of "));
+        textures_.push_back(upload_compressed(image, first, data.color_space, texture_bytes_));
         continue;
       }
       std::string error;
@@ -111,17 +140,16 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
       }
       warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + assets::block_format_name(data.compressed->format) +
                          ", which this driver cannot sample; it is decoded and uploaded uncompressed");
-      const assets::Image fitted = assets::downscale_to_fit(*decoded, limit, data.color_space == assets::ColorSpace::Srgb);
-      textures_.push_back(upload_image(fitted, data.color_space, texture_bytes_));
+      textures_.push_back(upload_held(t, data, assets::downscale_to_fit(*decoded, limit, data.color_space == assets::ColorSpace::Srgb)));
       continue;
     }
     if (data.image.width <= limit && data.image.height <= limit) {
-      textures_.push_back(upload_image(data.image, data.color_space, texture_bytes_));
+      textures_.push_back(upload_held(t, data, data.image));
       continue;
     }
     const assets::Image smaller = assets::downscale_to_fit(data.image, limit, data.color_space == assets::ColorSpace::Srgb);
     warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
-    textures_.push_back(upload_image(smaller, data.color_space, texture_bytes_));
+    textures_.push_back(upload_held(t, data, smaller));
   }
   if (mesh_assets_.size() < assets.mesh_asset_count()) {
     for (std::size_t a = mesh_assets_.size(); a < assets.mesh_asset_count(); ++a) {

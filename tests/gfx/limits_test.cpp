@@ -1,6 +1,10 @@
 // What the context allows: the loop limit Atrium assumes is the one the driver
 // really applies (measured with a compute shader), the render size limit is
-// usable, and memory figures print the way refusal messages quote them.
+// usable, the proxy tells what texture the context can hold, and memory
+// figures print the way refusal messages quote them.
+#include <cmath>
+#include <cstdio>
+
 #include <gmock/gmock.h>
 
 #include "base/format.hpp"
@@ -52,6 +56,18 @@ TEST_F(Limits, RenderAndTextureSizesAreUsable) {
   EXPECT_GE(render.y, 8192);
   EXPECT_LE(render.x, max_texture_size());
   EXPECT_GE(storage_block_limit(), std::uint64_t{1} << 24) << "OpenGL 4.3 and later guarantee 16 MiB";
+}
+
+// The proxy answers without raising an error: yes for a small texture, no
+// past GL_MAX_TEXTURE_SIZE, and for the most memory a 2D texture can ask
+// (16384 x 16384 RGBA32F with its mips, 5.3 GiB) whatever the driver holds.
+TEST_F(Limits, TheProxyTellsWhatTextureTheContextCanHoldWithoutAnError) {
+  EXPECT_TRUE(texture_fits(GL_RGBA8, 7, {64, 64}));
+  EXPECT_TRUE(texture_fits(GL_SRGB8_ALPHA8, 1, {max_texture_size(), 1}));
+  EXPECT_FALSE(texture_fits(GL_RGBA8, 1, {max_texture_size() * 2, 1}));
+  const int most = max_texture_size();
+  std::printf("%dx%d RGBA32F with its mips: %s\n", most, most,
+              texture_fits(GL_RGBA32F, 1 + static_cast<int>(std::log2(most)), {most, most}) ? "held" : "refused");
 }
 
 TEST(FormatBytes, PicksTheUnitAUserReads) {
