@@ -84,18 +84,16 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
   }
   const int context_limit = gfx::max_texture_size();
   const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
+  const auto wxh = [](glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); };
   auto too_large = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 to) {
-    return "texture " + std::to_string(t) + " '" + data.name + "' is " + std::to_string(data.width()) + "x" + std::to_string(data.height()) +
-           ", more than " +
+    return "texture " + std::to_string(t) + " '" + data.name + "' is " + wxh({data.width(), data.height()}) + ", more than " +
            (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
                                   : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
-           "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + std::to_string(to.x) + "x" +
-           std::to_string(to.y);
+           "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + wxh(to);
   };
-  auto not_held = [](std::size_t t, const assets::TextureData& data, glm::ivec2 from, glm::ivec2 to, const char* done) {
-    return "texture " + std::to_string(t) + " '" + data.name + "' at " + std::to_string(from.x) + "x" + std::to_string(from.y) +
-           " is more than this context can hold (its proxy texture refused it); it is " + done + std::to_string(to.x) + "x" +
-           std::to_string(to.y);
+  auto not_held = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 from, glm::ivec2 to, const char* done) {
+    return "texture " + std::to_string(t) + " '" + data.name + "' at " + wxh(from) +
+           " is more than this context can hold (its proxy texture refused it); it is " + done + wxh(to);
   };
   // Within GL_MAX_TEXTURE_SIZE a driver may still lack the memory (zink over
   // lavapipe refuses 16384x16384 RGBA8 with its mips): halved until the proxy

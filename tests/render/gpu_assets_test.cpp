@@ -1,8 +1,8 @@
 // Texture upload limits: a texture wider or taller than the context allows (or
 // than --max-texture-size), or one it cannot hold, is downscaled with one
 // warning naming it, and draws the picture that a small texture of the same
-// content draws. The data comes
-// from tests/data/make_big_texture.py at build time.
+// content draws. The data comes from tests/data/make_big_texture.py at build
+// time.
 #include <gmock/gmock.h>
 
 #include "app/world.hpp"
