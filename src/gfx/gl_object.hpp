@@ -73,6 +73,10 @@ using Program = GlObject<GlKind::Program>;
 using Query = GlObject<GlKind::Query>;
 using Sampler = GlObject<GlKind::Sampler>;
 
+// Whether the GPU has passed `sync`, asked without waiting (timeout 0; `flags`
+// GL_SYNC_FLUSH_COMMANDS_BIT submits it if it was not yet).
+[[nodiscard]] bool sync_passed(GLsync sync, GLbitfield flags);
+
 // A sync object placed in the command stream (glFenceSync), deleted with its
 // owner. Sync objects have no names, so they are not counted with the others.
 class Fence {
@@ -94,6 +98,8 @@ class Fence {
   // Until the GPU has passed it (at once when none is placed): a wait, counted
   // (gfx/gpu_waits.hpp), unless it has passed already. Leaves none placed.
   void wait();
+  // The same wait, not counted (gfx/frame_pacer.hpp): whether it had to wait.
+  bool wait_uncounted();
   void reset();
 
  private:

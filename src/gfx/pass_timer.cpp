@@ -34,9 +34,9 @@ void PassTimer::begin_frame() {
     return;
   }
   collect();
-  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  FrameQueries& frame = frames_[frame_ % kQueryFrames];
   if (frame.pending) {
-    // Still not available after kFramesInFlight frames: wait rather than lose it.
+    // Still not available after kQueryFrames frames: wait rather than lose it.
     for (std::size_t i = 0; i < frame.used; ++i) {
       GLuint64 ignored = 0;
       count_gpu_wait();
@@ -52,7 +52,7 @@ void PassTimer::end_frame() {
     latest_ = current_;
     return;
   }
-  frames_[frame_ % kFramesInFlight].pending = frames_[frame_ % kFramesInFlight].used > 0;
+  frames_[frame_ % kQueryFrames].pending = frames_[frame_ % kQueryFrames].used > 0;
   ++frame_;
 }
 
@@ -65,7 +65,7 @@ void PassTimer::begin_pass(const std::string& name) {
     pass_start_ = std::chrono::steady_clock::now();
     return;
   }
-  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  FrameQueries& frame = frames_[frame_ % kQueryFrames];
   if (frame.used == frame.passes.size()) {
     frame.passes.push_back({name, create_query(GL_TIME_ELAPSED), counts_fragments_ ? create_query(GL_FRAGMENT_SHADER_INVOCATIONS_ARB) : Query{}, 0.0, {}, 0});
   }
@@ -93,7 +93,7 @@ void PassTimer::end_pass() {
     }
     return;
   }
-  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  FrameQueries& frame = frames_[frame_ % kQueryFrames];
   frame.passes[frame.used - 1].cpu_milliseconds = cpu_milliseconds;
   glEndQuery(GL_TIME_ELAPSED);
   if (counts_fragments_) glEndQuery(GL_FRAGMENT_SHADER_INVOCATIONS_ARB);
@@ -101,7 +101,7 @@ void PassTimer::end_pass() {
 
 void PassTimer::wait_for_latest() {
   if (method_ == TimingMethod::CpuFinish || frame_ == 0) return;
-  const FrameQueries& newest = frames_[(frame_ - 1) % kFramesInFlight];
+  const FrameQueries& newest = frames_[(frame_ - 1) % kQueryFrames];
   if (!newest.pending) return;
   // Queries finish in submission order: once the newest frame's last one has
   // its result, every pending frame's queries have theirs.
@@ -113,9 +113,9 @@ void PassTimer::wait_for_latest() {
 
 // Reads back the oldest pending frame whose queries are all available.
 void PassTimer::collect() {
-  for (std::size_t age = kFramesInFlight; age > 0; --age) {
+  for (std::size_t age = kQueryFrames; age > 0; --age) {
     if (frame_ < age) continue;
-    FrameQueries& frame = frames_[(frame_ - age) % kFramesInFlight];
+    FrameQueries& frame = frames_[(frame_ - age) % kQueryFrames];
     if (!frame.pending) continue;
     GLint available = GL_FALSE;
     glGetQueryObjectiv(frame.passes[frame.used - 1].query.id(), GL_QUERY_RESULT_AVAILABLE, &available);
@@ -140,7 +140,7 @@ void PassTimer::collect() {
 }
 
 PassTimer::QueryPass& PassTimer::open_pass() {
-  FrameQueries& frame = frames_[frame_ % kFramesInFlight];
+  FrameQueries& frame = frames_[frame_ % kQueryFrames];
   return frame.passes[frame.used - 1];
 }
 

@@ -18,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "gfx/frame_pacer.hpp"
 #include "gfx/gl_object.hpp"
 
 namespace atrium::gfx {
@@ -104,7 +105,9 @@ class PassTimer {
   [[nodiscard]] Scope scope(const std::string& name) { return Scope(*this, name); }
 
  private:
-  static constexpr std::size_t kFramesInFlight = 4;
+  // The frames whose queries are kept: one more than FramePacer lets the CPU
+  // run ahead, so the slot a frame reuses held a frame the GPU has finished.
+  static constexpr std::size_t kQueryFrames = FramePacer::kFramesInFlight + 1;
   struct QueryStep {
     std::string name;
     Query begin, end;  // GL_TIMESTAMP
@@ -132,7 +135,7 @@ class PassTimer {
   TimingMethod method_;
   bool counts_fragments_;
   Query cpu_fragments_;  // CpuFinish: the running pass's invocation count
-  std::array<FrameQueries, kFramesInFlight> frames_;
+  std::array<FrameQueries, kQueryFrames> frames_;
   std::size_t frame_ = 0;
   std::vector<PassTime> current_;  // CpuFinish: the frame being timed
   std::chrono::steady_clock::time_point pass_start_;  // after the GPU went idle (CpuFinish) or the pass began

@@ -62,9 +62,8 @@ void ReadbackRing::poll(const std::function<void(const void* data, std::size_t b
   std::vector<std::size_t> done;
   for (std::size_t i = 0; i < slots_.size(); ++i) {
     if (!slots_[i].fence) continue;
-    // Timeout 0: asks, never waits; the flush lets a fence never submitted pass at all.
-    const GLenum status = glClientWaitSync(slots_[i].fence, GL_SYNC_FLUSH_COMMANDS_BIT, 0);
-    if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) done.push_back(i);
+    // Asks, never waits; the flush lets a fence never submitted pass at all.
+    if (sync_passed(slots_[i].fence, GL_SYNC_FLUSH_COMMANDS_BIT)) done.push_back(i);
   }
   std::sort(done.begin(), done.end(), [&](std::size_t a, std::size_t b) { return slots_[a].order < slots_[b].order; });
   for (const std::size_t i : done) {

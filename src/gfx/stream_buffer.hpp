@@ -14,14 +14,16 @@
 #include <cstddef>
 #include <vector>
 
+#include "gfx/frame_pacer.hpp"
 #include "gfx/gl_object.hpp"
 
 namespace atrium::gfx {
 
 struct StreamBuffer {
-  // Frames in flight a stream keeps its uploads apart for: an upload waits
-  // (counted, gfx/gpu_waits.hpp) only when the GPU is this many uploads behind.
-  static constexpr std::size_t kStagingCopies = 3;
+  // Uploads a stream keeps apart: an upload waits (counted, gfx/gpu_waits.hpp)
+  // only when the GPU is this many uploads behind, which a stream refilled
+  // once a frame never is under FramePacer (one more than it lets run ahead).
+  static constexpr std::size_t kStagingCopies = FramePacer::kFramesInFlight + 1;
 
   Buffer buffer;
   std::size_t capacity = 0;  // bytes

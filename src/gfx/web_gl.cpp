@@ -32,7 +32,7 @@
   X(glDisableVertexAttribArray) X(glDispatchCompute) X(glDispatchComputeIndirect) X(glDrawArrays) \
   X(glDrawArraysInstanced) X(glDrawBuffers) X(glDrawElements) X(glDrawElementsInstanced) \
   X(glDrawElementsInstancedBaseVertex) X(glEnable) X(glEnableVertexArrayAttrib) X(glEnableVertexAttribArray) \
-  X(glEndQuery) X(glFenceSync) X(glFinish) X(glFramebufferTexture) X(glFramebufferTexture2D) X(glFrontFace) \
+  X(glEndQuery) X(glFenceSync) X(glFinish) X(glFlush) X(glFramebufferTexture) X(glFramebufferTexture2D) X(glFrontFace) \
   X(glGenBuffers) X(glGenFramebuffers) X(glGenQueries) X(glGenSamplers) X(glGenTextures) X(glGenVertexArrays) \
   X(glGenerateMipmap) X(glGenerateTextureMipmap) X(glGetBufferParameteri64v) X(glGetBufferSubData) X(glGetError) X(glGetInteger64v) \
   X(glGetIntegerv) X(glGetNamedBufferParameteri64v) X(glGetNamedBufferSubData) X(glGetProgramInfoLog) \

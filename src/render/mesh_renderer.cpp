@@ -271,6 +271,8 @@ void MeshRenderer::add_modules(FrameBuild& build) {
 void MeshRenderer::render(ecs::Registry& registry) {
   const glm::ivec2 size = registry.resource<Viewport>().size;
   if (size.x <= 0 || size.y <= 0) return;  // a minimised window draws nothing
+  // Before the frame's first upload: what it refills, the GPU is done reading.
+  pacer_.begin_frame();
   const std::uint64_t waits_at_start = gfx::gpu_waits();
   gfx::use_depth_convention();
   const auto& settings = registry.resource<RendererSettings>();
@@ -306,7 +308,9 @@ void MeshRenderer::render(ecs::Registry& registry) {
                                   std::to_string(size.y) + ": " + e.what());
   }
   timer_.end_frame();
+  pacer_.end_frame();
   frame_stats_.gpu_waits = static_cast<std::uint32_t>(gfx::gpu_waits() - waits_at_start);
+  frame_stats_.paced_ms = pacer_.waited_ms();
   stats_ = frame_stats_;
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

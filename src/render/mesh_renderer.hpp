@@ -50,6 +50,9 @@ struct FrameStats {
   double light_list_density = 0.0;  // what the choice of assignment went by (LightIndexList::last_density)
   shadows::ShadowStats shadows;              // maps drawn and reused (--shadows)
   std::uint32_t gpu_waits = 0;               // calls in the frame that could wait for the GPU (gfx/gpu_waits.hpp)
+  // How long the frame waited before it began for the GPU to finish the frame
+  // kFramesInFlight before it (gfx/frame_pacer.hpp): above 0, the GPU sets the pace.
+  double paced_ms = 0.0;
   std::string technique_variant;             // LightingTechnique::variant(): "material binding bindless"
 };
 
@@ -162,6 +165,7 @@ class MeshRenderer {
   double light_average_ = 0.0, fragment_average_ = 0.0;
   bool counted_lights_ = false, counted_fragments_ = false;
   gfx::PassTimer timer_;
+  gfx::FramePacer pacer_;
   FrameGraph graph_;  // the frame's passes; its pool keeps transient targets between frames
   std::uint32_t loop_limit_;  // gfx::shader_loop_limit(), asked once
   glm::vec2 planes_{0.05f, 200.0f};  // the last frame's near and far planes

@@ -127,6 +127,8 @@ void Overlay::statistics(ecs::Registry& registry) {
   }
   // Each is a stall on a GPU: the queue drains while the CPU waits (gfx/gpu_waits.hpp).
   ImGui::Text("GPU waits this frame: %u", stats.gpu_waits);
+  // Not a stall: the GPU still has a frame queued (gfx/frame_pacer.hpp).
+  if (stats.paced_ms > 0.0) ImGui::Text("GPU-bound: waited %.2f ms before the frame for the GPU", stats.paced_ms);
   ImGui::Text("GPU memory (estimate): %.1f MiB", static_cast<double>(memory_bytes_) / (1024.0 * 1024.0));
   const render::GraphMemory targets = renderer.graph().memory();
   ImGui::Text("render targets: %.1f MiB long-lived, %.1f MiB transient (%.1f unshared)", static_cast<double>(targets.imported_bytes) / (1024.0 * 1024.0),

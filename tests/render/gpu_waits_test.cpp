@@ -10,6 +10,7 @@
 // still draws what forward draws (the lights that did not fit are shaded
 // wherever they reach), shows the overflow a frame later, and the grown lists
 // fit the frames after.
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -17,6 +18,7 @@
 #include "app/world.hpp"
 #include "assets/image.hpp"
 #include "components/frame_resources.hpp"
+#include "gfx/frame_pacer.hpp"
 #include "gfx/limits.hpp"
 #include "support/gl_test.hpp"
 #include "support/modes.hpp"
@@ -79,6 +81,33 @@ TEST_F(GpuWaits, NoSteadyFrameWaitsUnderAnyDebugView) {
       world.registry().resource<RendererSettings>().debug_view = view;
       EXPECT_EQ(waits_after_warm_up(world), 0u) << mode << ", debug view " << view;
     }
+  }
+}
+
+// Frames submitted back to back keep the GPU at most FramePacer::kFramesInFlight
+// frames behind, and the CPU waits for it only before a frame, uncounted: once
+// frame N is recorded, a fence placed after frame N - 3 has passed, and no
+// frame counts a wait. On llvmpipe each pass's glFinish (its timing) keeps the
+// GPU caught up anyway; where passes are timed by queries (zink, a GPU) the
+// loop runs ahead, and the pacer is what holds it (ctest zink.gpu_waits).
+TEST_F(GpuWaits, AFrameLoopStaysTwoFramesAheadOfTheGpuAndWaitsOnlyBetweenFrames) {
+  static_assert(gfx::FramePacer::kFramesInFlight == 2);
+  WorldOptions options = steady_options("clustered-deferred");
+  options.lights = 1024u;
+  options.size = {320, 180};
+  World world(options);
+  // Timed by queries, as on a GPU: no glFinish after each pass holds the loop back.
+  world.renderer().timer() = gfx::PassTimer(gfx::TimingMethod::GpuQueries);
+  for (int f = 0; f < 4; ++f) world.frame(1.0 / 60.0);
+  std::deque<gfx::Fence> after_frame;  // placed after each of the last frames, oldest first
+  for (int f = 0; f < 12; ++f) {
+    world.frame(1.0 / 60.0);
+    EXPECT_EQ(world.renderer().stats().gpu_waits, 0u) << "frame " << f;
+    if (after_frame.size() == gfx::FramePacer::kFramesInFlight + 1) {
+      EXPECT_FALSE(after_frame.front().wait_uncounted()) << "frame " << f << " began before the GPU finished the frame two before it";
+      after_frame.pop_front();
+    }
+    after_frame.emplace_back().place();
   }
 }
 
