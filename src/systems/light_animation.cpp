@@ -46,18 +46,28 @@ void move_every_light(ecs::Registry& registry, double time) {
   });
 }
 
+// Whether some animated light is one the GPU moves (moves_on_gpu): a point
+// light. Stops at the first, so a million moving point lights cost one look.
+bool any_moves_on_gpu(const ecs::Registry& registry, const LightAnimationSettings& settings) {
+  for (const ecs::Entity e : registry.entities_with<LightAnimation>()) {
+    if (moves_on_gpu(settings, registry.has<SpotCone>(e), registry.has<DirectionalLight>(e))) return true;
+  }
+  return false;
+}
+
 // The GPU half: after the LightBuffer has sent the records (point lights
 // carry their motion, render::with_motion), one invocation a light places
 // each moving one at the clock's time, before anything reads the lights.
 // A frame where neither the clock nor the buffer moved since the pass last
-// ran (paused, nothing sent) skips it: the buffer still holds its result, and
-// at 2^20 lights a pass over every record is not free even on a GPU.
+// ran (paused, nothing sent) skips it, and so does one where only spot and
+// directional lights animate (the CPU moves those): the buffer holds the
+// result, and at 2^20 lights a pass over every record is not free even on a GPU.
 class MotionPass {
  public:
   void add_pass(render::FrameBuild& build) {
     const auto* settings = build.registry.try_resource<LightAnimationSettings>();
     const auto* buffer = build.registry.try_resource<render::LightBuffer>();
-    if (!settings || !settings->on_gpu || !buffer || build.registry.count<LightAnimation>() == 0 || build.frame.lights.empty()) return;
+    if (!settings || !settings->on_gpu || !buffer || build.frame.lights.empty() || !any_moves_on_gpu(build.registry, *settings)) return;
     const Placed now{buffer->buffer.id(), buffer->sends, static_cast<std::uint32_t>(build.frame.lights.size()), static_cast<float>(settings->time)};
     if (placed_ && *placed_ == now) return;
     if (!program_) program_ = &build.registry.resource<render::GpuAssets>().shaders().get({"light_animation/move_lights.comp"});

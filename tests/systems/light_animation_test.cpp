@@ -153,6 +153,35 @@ TEST_F(LightAnimationOnGpu, APausedClockSkipsThePassUntilALightIsSentAgain) {
   expect_lights_at(registry, stopped + kStep);
 }
 
+// Spot and directional lights move on the CPU: where only they animate, no
+// pass runs over every light record for nothing.
+TEST_F(LightAnimationOnGpu, OnlySpotLightsAnimatingRunNoPassOverEveryLight) {
+  World world(options_for("clustered-deferred"));
+  ecs::Registry& registry = world.registry();
+  // The generated point lights hold still: they animate by default.
+  std::vector<ecs::Entity> animated(registry.entities_with<LightAnimation>().begin(), registry.entities_with<LightAnimation>().end());
+  for (const ecs::Entity e : animated) registry.remove<LightAnimation>(e);
+  const ecs::Entity spot = registry.create();
+  const glm::vec3 origin(0.0f, 3.0f, 0.0f);
+  registry.add<Transform>(spot, Transform{origin});
+  registry.add<LightColor>(spot, LightColor{glm::vec3(1.0f), 4.0f});
+  registry.add<SpotCone>(spot);
+  registry.add<LightAnimation>(spot, origin, 0.0f, 2.0f);
+  ASSERT_TRUE(registry.resource<LightAnimationSettings>().on_gpu);
+  register_light_animation(world.scheduler(), registry);
+  for (int f = 0; f < kFrames; ++f) {
+    world.frame(kStep);
+    EXPECT_FALSE(ran_motion_pass(world)) << "frame " << f;
+  }
+  EXPECT_GT(glm::distance(registry.get<Transform>(spot).position, origin), 0.5f) << "the CPU moved the spot light";
+  expect_lights_at(registry, kStep * kFrames);
+
+  animate_point_lights(world);
+  world.frame(kStep);
+  EXPECT_TRUE(ran_motion_pass(world)) << "point lights animate too: the GPU moves them";
+  expect_lights_at(registry, kStep * (kFrames + 1));
+}
+
 // Moved on the GPU against held still where the CPU's animation puts them:
 // the same picture in every mode, and not the picture before they moved.
 void expect_moved_as_placed(const std::vector<std::string>& modes, int shadows) {
