@@ -183,9 +183,14 @@ BenchRow measure_mode(World& world, const std::string& mode, int frames, int war
   if (!over_limit && !frame_ms.empty()) {
     gfx::finish();
     const auto start = std::chrono::steady_clock::now();
-    for (int f = 0; f < frames; ++f) world.frame(1.0 / 60.0);
+    double paced_ms = 0.0;
+    for (int f = 0; f < frames; ++f) {
+      world.frame(1.0 / 60.0);
+      paced_ms += world.renderer().stats().paced_ms;
+    }
     gfx::finish();
     row.pipelined_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / frames;
+    row.paced_ms = paced_ms / frames;
   }
   row.sliced = slices_depth();
   if (const lighting::LightBins* bins = world.renderer().graph().published<lighting::LightBins>()) {
@@ -466,11 +471,12 @@ std::string bench_markdown(const BenchResult& result) {
   md << "\nPer mode, light count and view (times in ms; evaluated and reaching are lights per pixel, averaged over the image; "
         "passes' sum is the frame's passes as the pass timing measured them, GPU time with timer queries; GPU waits are calls "
         "in one frame that could wait for the GPU; pipelined is the frame with frames submitted back to back, one frame's CPU work "
-        "overlapping the GPU's of the one before, as in a window; systems are the CPU time of those over 0.05 ms, the renderer's including its "
-        "passes' submission; in brackets after a pass, with --pass-steps, the steps it names, a step that ran in some of the frames "
-        "only with its median over those):\n\n"
-        "| mode | lights | view | median | p5 | p95 | fps | pipelined | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists | systems (CPU, median) |\n"
-        "|---|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
+        "overlapping the GPU's of the one before, as in a window; paced is the part of a pipelined frame the CPU waited "
+        "before it for the GPU to finish the frame two before (near pipelined: GPU-bound; near 0: the CPU sets the pace); "
+        "systems are the CPU time of those over 0.05 ms, the renderer's including its passes' submission; in brackets after a pass, "
+        "with --pass-steps, the steps it names, a step that ran in some of the frames only with its median over those):\n\n"
+        "| mode | lights | view | median | p5 | p95 | fps | pipelined | paced | passes (median) | evaluated | reaching | efficiency | triangles drawn | draws | passes' sum | GPU waits | light lists | systems (CPU, median) |\n"
+        "|---|---:|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---|---|\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     for (const auto& pass : row.pass_medians) {
@@ -493,7 +499,7 @@ std::string bench_markdown(const BenchResult& result) {
     }
     md << "| " << label(result, row) << " | " << row.lights << " | " << row.view << " " << row.view_name << " | " << fixed(row.median_ms, 2)
        << " | " << fixed(row.p5_ms, 2) << " | " << fixed(row.p95_ms, 2) << " | " << fixed(row.fps(), 1) << " | "
-       << fixed(row.pipelined_ms, 2) << " | " << passes
+       << fixed(row.pipelined_ms, 2) << " | " << fixed(row.paced_ms, 2) << " | " << passes
        << " | " << fixed(row.evaluated_per_pixel, 2) << " | " << fixed(row.reaching_per_pixel, 2) << " | "
        << fixed(row.efficiency(), 3) << " | " << row.triangles_drawn << " | " << row.draw_calls << " | " << fixed(row.gpu_ms, 2) << " | "
        << (std::isnan(row.median_ms) ? std::string("-") : std::to_string(row.gpu_waits)) << " | " << row.light_lists << " | " << systems << " |\n";
@@ -505,7 +511,7 @@ std::string bench_csv(const BenchResult& result) {
   std::ostringstream csv;
   csv << "mode,lights,view,view_name,width,height,frames,median_ms,p5_ms,p95_ms,fps,evaluated_per_pixel,"
          "reaching_per_pixel,efficiency,passes,timing_method,renderer,refused,triangles_drawn,draw_calls,cpu_passes,z_slicing,shadows,"
-         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps\n";
+         "triangles_occluded,gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps,paced_ms\n";
   for (const BenchRow& row : result.rows) {
     std::string passes;
     std::string cpu_passes;
@@ -534,7 +540,7 @@ std::string bench_csv(const BenchResult& result) {
         << "\","
         << (std::isnan(row.median_ms) ? std::string_view() : kLightingStageNames[static_cast<std::size_t>(row.lighting_stage)])
         << ",\"" << row.light_lists << "\",\"" << cpu_systems << "\"," << fixed(row.pipelined_ms, 4) << ",\"" << row.technique_variant
-        << "\",\"" << pass_steps << "\"\n";
+        << "\",\"" << pass_steps << "\"," << fixed(row.paced_ms, 4) << "\n";
   }
   return csv.str();
 }

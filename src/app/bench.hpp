@@ -78,6 +78,10 @@ struct BenchRow {
   // frame as a window sees it, one frame's CPU work overlapping the GPU's work
   // of the one before (median_ms adds the two: glFinish before and after each).
   double pipelined_ms = std::numeric_limits<double>::quiet_NaN();
+  // Of pipelined_ms, the time the CPU waited before a frame for the GPU to
+  // finish the one two before it (FramePacer::waited_ms, mean per frame): near
+  // pipelined_ms the loop was GPU-bound, near 0 the CPU set the pace.
+  double paced_ms = std::numeric_limits<double>::quiet_NaN();
   // The most calls that could wait for the GPU in one measured frame
   // (FrameStats::gpu_waits): 0 in a frame that never stalls the GPU.
   std::uint32_t gpu_waits = 0;

@@ -64,7 +64,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   std::string line;
   std::getline(csv, line);
   const std::vector<std::string> header = csv_fields(line);
-  ASSERT_EQ(header.size(), 33u);
+  ASSERT_EQ(header.size(), 34u);
   EXPECT_EQ(header[0], "mode");
   EXPECT_EQ(header[7], "median_ms");
   EXPECT_EQ(header[17], "refused");
@@ -83,6 +83,7 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
   EXPECT_EQ(header[30], "pipelined_ms");
   EXPECT_EQ(header[31], "technique_variant");
   EXPECT_EQ(header[32], "pass_steps");
+  EXPECT_EQ(header[33], "paced_ms");
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
@@ -108,6 +109,10 @@ TEST(BenchCommand, TinySweepWritesWellFormedCsvMarkdownAndPlot) {
     EXPECT_EQ(f[26], "") << "nothing skipped";
     EXPECT_EQ(f[28], "") << "neither mode has light lists";
     EXPECT_EQ(f[32], "") << "steps are timed only with --pass-steps";
+    // The frames back to back wait for the GPU only between frames, and for no
+    // longer than they took.
+    EXPECT_GE(std::stod(f[33]), 0.0);
+    EXPECT_LE(std::stod(f[33]), std::stod(f[30])) << "paced within pipelined";
     ++rows;
   }
   EXPECT_EQ(rows, 2 * 2 * 2);
@@ -139,7 +144,7 @@ TEST(BenchCommand, EachModeIsMeasuredInEachLightingStage) {
     std::istringstream csv(read_text(folder / "s.csv"));
     std::string line;
     std::getline(csv, line);
-    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps")) << line;
+    EXPECT_TRUE(line.ends_with(",skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps,paced_ms")) << line;
     std::vector<std::vector<std::string>> rows;
     while (std::getline(csv, line)) rows.push_back(csv_fields(line));
     return rows;
@@ -185,7 +190,7 @@ TEST(BenchCommand, SlicingSchemesAreMeasuredForTheClusteredModesOnly) {
   std::vector<std::string> measured;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 33u) << line;
+    ASSERT_EQ(f.size(), 34u) << line;
     measured.push_back(f[0] + (f[21].empty() ? "" : "/" + f[21]));
     // A pixel grid never has fewer tiles than 16x9 (32x18 pixels: 2-pixel tiles), each cut into 32 slices.
     if (f[0] == "clustered-forward") EXPECT_TRUE(f[28].starts_with("16x9x32 clusters, ")) << f[28];
@@ -288,7 +293,7 @@ TEST(BenchCommand, PassStepsAreTimedInsideTheirPasses) {
   int rows = 0;
   while (std::getline(csv, line)) {
     const std::vector<std::string> f = csv_fields(line);
-    ASSERT_EQ(f.size(), 33u) << line;
+    ASSERT_EQ(f.size(), 34u) << line;
     std::map<std::string, double> passes, step_sums;
     std::istringstream pass_list(f[14]), step_list(f[32]);
     for (std::string item; std::getline(pass_list, item, ';');) passes[item.substr(0, item.find('='))] = std::stod(item.substr(item.find('=') + 1));

@@ -61,7 +61,7 @@ grep -q "^| clustered-deferred | 16 | 1 .*| 16x9x32 clusters, gather at density 
 for scene in atrium sponza shadows; do
   csv=$work/out/bench-$scene.csv
   [ -s "$csv" ] || fail "$csv is missing"
-  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps$" || fail "$csv has no lighting_stage, light_lists, cpu_systems, pipelined_ms, technique_variant and pass_steps columns"
+  head -n 1 "$csv" | grep -q ",gpu_ms,gpu_waits,skipped,lighting_stage,light_lists,cpu_systems,pipelined_ms,technique_variant,pass_steps,paced_ms$" || fail "$csv has no lighting_stage, light_lists, cpu_systems, pipelined_ms, technique_variant, pass_steps and paced_ms columns"
   grep -q ",compute,\"" "$csv" || fail "$csv has no run in the compute stage"
   # Every mode in the technique table has a row.
   for mode in forward deferred deferred-radius light-volumes tiled-deferred clustered-forward clustered-deferred \
