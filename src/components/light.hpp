@@ -4,6 +4,7 @@
 // DirectionalLight component changes the kind.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include <glm/glm.hpp>
@@ -49,6 +50,11 @@ struct LightAnimation {
 // Where `animation` puts its light `time` seconds in. The GPU's twin is
 // moved_position in shaders/light_animation/move_lights.comp.
 [[nodiscard]] glm::vec3 animated_position(const LightAnimation& animation, double time);
+// The farthest animated_position ever puts its light from the origin: the
+// circle's diameter (the bob is level again wherever the circle is widest,
+// half a turn on), so that a test against a sphere grown by this much holds
+// at every time without computing where the light is.
+[[nodiscard]] inline float animated_reach(const LightAnimation& animation) { return 2.0f * std::abs(animation.radius); }
 
 // Shared by every LightAnimation: `p` in the window pauses them.
 struct LightAnimationSettings {

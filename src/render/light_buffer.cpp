@@ -305,6 +305,11 @@ std::vector<LightRun> refresh_staging(const ecs::Registry& registry, LightBuffer
   return runs;
 }
 
+// The LightAnimation that with_motion put in a point light's record.
+LightAnimation carried_motion(const GpuLight& light) {
+  return LightAnimation{glm::vec3(light.direction), light.spot.x, light.direction.w, light.spot.y};
+}
+
 }  // namespace
 
 GatheredLights gather_lights(ecs::Registry& registry) {
@@ -381,7 +386,11 @@ bool moves_on_gpu(const GpuLight& light) {
 
 glm::vec3 moved_position(const GpuLight& light, double time) {
   if (!moves_on_gpu(light)) return glm::vec3(light.position_radius);
-  return animated_position(LightAnimation{glm::vec3(light.direction), light.spot.x, light.direction.w, light.spot.y}, time);
+  return animated_position(carried_motion(light), time);
+}
+
+float motion_reach(const GpuLight& light) {
+  return moves_on_gpu(light) ? animated_reach(carried_motion(light)) : 0.0f;
 }
 
 std::uint32_t shadowed_light_count(std::span<const GpuLight> lights) {

@@ -52,6 +52,11 @@ static_assert(sizeof(GpuLight) == 64, "must match Light in shaders/common/lights
 // Where the GPU places `light` `time` seconds in: its position when it does
 // not move (for the few lights the CPU must place, the shadowed ones).
 [[nodiscard]] glm::vec3 moved_position(const GpuLight& light, double time);
+// How far from its record's position the GPU may place `light` at any time
+// (animated_reach; 0 for a light that does not move on the GPU): its sphere
+// grown by this much holds it wherever it is, for CPU tests over every light
+// that cannot afford moved_position's trigonometry.
+[[nodiscard]] float motion_reach(const GpuLight& light);
 
 // The indices of the directional lights among `lights`: volume techniques
 // light each in a full-screen pass of its own.

@@ -308,7 +308,9 @@ TEST_F(LightBufferSystem, APointLightMovedOnTheGpuCarriesItsMotion) {
   EXPECT_EQ(light.direction, glm::vec4(1, 2, 3, 0.5f));
   EXPECT_EQ(glm::vec2(light.spot), glm::vec2(0.25f, 0.6f));
   EXPECT_EQ(render::moved_position(light, 2.0), animated_position(registry.get<LightAnimation>(moving), 2.0));
+  EXPECT_EQ(render::motion_reach(light), animated_reach(registry.get<LightAnimation>(moving)));
   EXPECT_FALSE(render::moves_on_gpu(gathered.lights[1])) << "a spot light moves on the CPU";
+  EXPECT_EQ(render::motion_reach(gathered.lights[1]), 0.0f) << "the record holds where the CPU put it";
   ASSERT_EQ(gathered.rejected.size(), 1u);
   EXPECT_THAT(gathered.rejected[0].problem, ::testing::HasSubstr("animation (origin (0, 1, 0), radius 0.5, phase nan"));
 

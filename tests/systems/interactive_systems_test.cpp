@@ -2,6 +2,7 @@
 // the InputState or clock a system reads, runs one frame and checks components.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #define GLFW_INCLUDE_NONE
@@ -282,6 +283,23 @@ TEST(LightAnimationSystem, OnTheGpuTierMovesOnlySpotAndDirectionalLights) {
   EXPECT_FALSE(moves_on_gpu(registry.resource<LightAnimationSettings>(), true, false));
   EXPECT_FALSE(moves_on_gpu(registry.resource<LightAnimationSettings>(), false, true));
   EXPECT_FALSE(moves_on_gpu(LightAnimationSettings{}, false, false)) << "off the GPU tier every light moves on the CPU";
+}
+
+// animated_reach bounds how far a light strays from its origin at any time,
+// and no more loosely than it must: some phase and time come within a
+// thousandth of it (half a turn on, across the circle).
+TEST(LightAnimationSystem, AnimatedLightsStayWithinTheirReach) {
+  for (const float radius : {0.5f, 2.0f, -1.0f}) {
+    float farthest = 0.0f;
+    for (int p = 0; p < 64; ++p) {
+      const LightAnimation animation{glm::vec3(1, 2, 3), static_cast<float>(p) * 0.1f, radius, 0.6f};
+      for (int t = 0; t < 400; ++t) {
+        farthest = std::max(farthest, glm::distance(animated_position(animation, t * 0.05), animation.origin));
+      }
+    }
+    EXPECT_LE(farthest, animated_reach({glm::vec3(0.0f), 0.0f, radius, 0.6f}) * (1.0f + 1e-5f)) << radius;
+    EXPECT_GE(farthest, animated_reach({glm::vec3(0.0f), 0.0f, radius, 0.6f}) * 0.999f) << radius;
+  }
 }
 
 TEST(LightAnimationSystem, MovesAnimatedLightsFromWhereTheyStartedAndPauses) {

@@ -30,7 +30,11 @@ int map_resolution(float pixels, int previous, const AtlasLimits& limits) {
 }
 
 // The estimated contribution of one light to the image (0 when its sphere
-// misses `frustum`, the view's) and its radius on screen in pixels.
+// misses `frustum`, the view's) and its radius on screen in pixels. A light
+// the GPU moves is estimated from its record's position (its origin): where
+// the GPU puts it costs trigonometry per light, over as many as 2^20, each
+// frame. Its sphere grown by how far it can stray meets the frustum wherever
+// it is, so that no light moving into view is left out.
 float light_importance(const render::GpuLight& light, const ViewState& view, const Frustum& frustum, glm::ivec2 viewport, float& pixels_radius) {
   const glm::vec3 color(light.color_kind);
   const float luminance = glm::dot(color, glm::vec3(0.2126f, 0.7152f, 0.0722f));
@@ -42,7 +46,7 @@ float light_importance(const render::GpuLight& light, const ViewState& view, con
   }
   const glm::vec3 centre(light.position_radius);
   const float radius = light.position_radius.w;
-  if (!intersects(frustum, centre, radius)) return 0.0f;
+  if (!intersects(frustum, centre, radius + render::motion_reach(light))) return 0.0f;
   const float distance = glm::length(centre - view.camera_position);
   float pixels = static_cast<float>(std::max(viewport.x, viewport.y));
   if (distance > radius * 1.0001f) {

@@ -11,8 +11,11 @@
 #include <optional>
 #include <set>
 
+#include <glm/gtc/constants.hpp>
+
 #include "app/world.hpp"
 #include "assets/mesh_builder.hpp"
+#include "base/frustum.hpp"
 #include "components/frame_resources.hpp"
 #include "components/light.hpp"
 #include "components/mesh_instance.hpp"
@@ -467,6 +470,28 @@ TEST(ShadowSelection, AShadowedLightKeepsItsPlaceOverOneSlightlyBrighter) {
   lights[1].color_kind = glm::vec4(glm::vec3(2.0f), 0.0f);
   choices = shadows::choose_shadowed_lights(lights, entities, view, {1280, 720}, 1, previous, {});
   EXPECT_EQ(choices[0].light, 1u);
+}
+
+// A light the GPU moves is ranked from its record, which holds its origin:
+// one whose origin sphere lies just outside the view but whose circle brings
+// it in is still a candidate, as a light standing there is not.
+TEST(ShadowSelection, ALightTheGpuMovesIntoViewIsACandidate) {
+  const ViewState view = camera_at_origin();
+  const glm::vec3 origin(7.0f, 0.0f, -5.0f);
+  const render::GpuLight still = point_light(origin, 1.0f, 1.0f);
+  // Phase 0: half a turn on, the light is a diameter (1 m) nearer the view's axis.
+  const LightAnimation motion{origin, 0.0f, 0.5f, 0.6f};
+  const render::GpuLight moving = render::with_motion(still, motion);
+  const Frustum frustum = frustum_of(view.view_projection);
+  ASSERT_FALSE(intersects(frustum, origin, 1.0f)) << "the origin's sphere is out of view";
+  ASSERT_TRUE(intersects(frustum, render::moved_position(moving, glm::pi<double>() / motion.angular_speed), 1.0f))
+      << "the light moves into view";
+
+  const std::vector<ecs::Entity> entities{{0, 0}};
+  EXPECT_TRUE(shadows::choose_shadowed_lights(std::vector{still}, entities, view, {1280, 720}, 1, {}, {}).empty());
+  const auto choices = shadows::choose_shadowed_lights(std::vector{moving}, entities, view, {1280, 720}, 1, {}, {});
+  ASSERT_EQ(choices.size(), 1u);
+  EXPECT_EQ(choices[0].light, 0u);
 }
 
 TEST(ShadowSelection, MapsShrinkToFitTheAtlas) {
