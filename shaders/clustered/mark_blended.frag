@@ -1,5 +1,5 @@
 #version 450 core
-// Clustered modes, after mark_active.comp and before light assignment: marks the
+// Clustered modes, before mark_active.comp and light assignment: marks the
 // clusters of blended fragments in front of the opaque depth (tested, not
 // written), so that the lists the transparency pass reads hold the lights that
 // reach glass floating where no opaque pixel is.

@@ -59,11 +59,11 @@ GLuint ClusterLights::mark_clusters(const render::PassResources& res, const rend
   }
   grid_->bind();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, render::kPerClusterBinding, buffer);
-  bind_positions();
-  mark_->use();
-  glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
+  // Blended surfaces mark first: the geometry before ran on the graphics
+  // pipeline, so the marks' draw follows it there and the frame switches to
+  // compute once, for the depth marks and the assignment (the marks are
+  // atomic minima, maxima or flags: their order does not matter).
   if (!frame.draws.list().blended.empty()) {
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     glBindFramebuffer(GL_FRAMEBUFFER, render::scene_framebuffer(res, frame));
     glViewport(0, 0, targets.size.x, targets.size.y);
     glEnable(GL_DEPTH_TEST);
@@ -74,7 +74,11 @@ GLuint ClusterLights::mark_clusters(const render::PassResources& res, const rend
     render::draw_items(frame.draws.list().blended, frame.draws.commands());
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     glDepthMask(GL_TRUE);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
+  bind_positions();
+  mark_->use();
+  glDispatchCompute((static_cast<GLuint>(targets.size.x) + 7) / 8, (static_cast<GLuint>(targets.size.y) + 7) / 8, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   return buffer;
 }
