@@ -85,11 +85,12 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
   const int context_limit = gfx::max_texture_size();
   const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
   const auto wxh = [](glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); };
-  auto too_large = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 to) {
+  // `done`: how the smaller texture is made ("downscaled to ", "uploaded from its mip level of ").
+  auto too_large = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 to, const char* done) {
     return "texture " + std::to_string(t) + " '" + data.name + "' is " + wxh({data.width(), data.height()}) + ", more than " +
            (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
                                   : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
-           "; it is " + (data.compressed ? "uploaded from its mip level of " : "downscaled to ") + wxh(to);
+           "; it is " + done + wxh(to);
   };
   auto not_held = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 from, glm::ivec2 to, const char* done) {
     return "texture " + std::to_string(t) + " '" + data.name + "' at " + wxh(from) +
@@ -107,38 +108,61 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
     warnings.push_back(not_held(t, data, size, {smaller.width, smaller.height}, "downscaled to "));
     return upload_image(smaller, data.color_space, texture_bytes_);
   };
+  // A DDS's blocks: uploaded as they are from the first mip level within the
+  // limit (levels over it are neither uploaded nor decoded), or decoded where
+  // the driver cannot sample them or no level is within the limit (a file
+  // without a mip chain), to be downscaled.
+  auto upload_blocks = [&](std::size_t t, const assets::TextureData& data) {
+    const assets::CompressedImage& image = *data.compressed;
+    const auto size_from = [&](std::size_t first) {
+      return glm::ivec2(std::max(1, image.width >> first), std::max(1, image.height >> first));
+    };
+    std::size_t first = 0;
+    while (first + 1 < image.levels.size() && std::max(size_from(first).x, size_from(first).y) > limit) ++first;
+    const bool within = std::max(size_from(first).x, size_from(first).y) <= limit;
+    const bool sampled = compressed_supported(image.format);
+    std::string error;
+    std::optional<assets::Image> decoded;
+    if (!sampled || !within) {
+      decoded = first == 0 ? assets::decode_blocks(image, error)
+                           : assets::decode_blocks({image.format, size_from(first).x, size_from(first).y, {image.levels[first]}}, error);
+    }
+    if (!decoded && sampled) {
+      if (first > 0) warnings.push_back(too_large(t, data, size_from(first), "uploaded from its mip level of "));
+      if (!within) {
+        warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + wxh(size_from(first)) +
+                           " at its smallest level, more than the limit (" + std::to_string(limit) + "), and " +
+                           assets::block_format_name(image.format) + " blocks cannot be decoded here to downscale it; it is uploaded as it is");
+      }
+      const std::size_t within_limit = first;
+      const GLenum format = compressed_format(image.format, data.color_space);
+      while (first + 1 < image.levels.size() && !gfx::texture_fits(format, static_cast<int>(image.levels.size() - first), size_from(first))) {
+        ++first;
+      }
+      if (first > within_limit) warnings.push_back(not_held(t, data, size_from(within_limit), size_from(first), "uploaded from its mip level of "));
+      return upload_compressed(image, first, data.color_space, texture_bytes_);
+    }
+    if (!decoded) {
+      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
+      return upload_image(assets::Image{1, 1, {255, 255, 255, 255}}, assets::ColorSpace::Linear, texture_bytes_);
+    }
+    if (!sampled) {
+      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + assets::block_format_name(image.format) +
+                         ", which this driver cannot sample; it is decoded and uploaded uncompressed");
+    }
+    if (within) {
+      if (first > 0) warnings.push_back(too_large(t, data, size_from(first), "decoded from its mip level of "));
+      return upload_held(t, data, *decoded);
+    }
+    const assets::Image smaller = assets::downscale_to_fit(*decoded, limit, data.color_space == assets::ColorSpace::Srgb);
+    warnings.push_back(too_large(t, data, {smaller.width, smaller.height}, "decoded and downscaled to "));
+    return upload_held(t, data, smaller);
+  };
   for (std::size_t t = textures_.size(); t < assets.texture_count(); ++t) {
     const assets::TextureData& data = assets.texture(assets::TextureHandle{static_cast<std::uint32_t>(t)});
     two_channel_.push_back(data.compressed && data.compressed->format == assets::BlockFormat::BC5);
     if (data.compressed) {
-      if (compressed_supported(data.compressed->format)) {
-        const assets::CompressedImage& image = *data.compressed;
-        const auto size_from = [&](std::size_t first) {
-          return glm::ivec2(std::max(1, image.width >> first), std::max(1, image.height >> first));
-        };
-        std::size_t first = 0;
-        while (first + 1 < image.levels.size() && std::max(size_from(first).x, size_from(first).y) > limit) ++first;
-        if (first > 0) warnings.push_back(too_large(t, data, size_from(first)));
-        const std::size_t within_limit = first;
-        const GLenum format = compressed_format(image.format, data.color_space);
-        while (first + 1 < image.levels.size() &&
-               !gfx::texture_fits(format, static_cast<int>(image.levels.size() - first), size_from(first))) {
-          ++first;
-        }
-        if (first > within_limit) warnings.push_back(not_held(t, data, size_from(within_limit), size_from(first), "uploaded from its mip level of "));
-        textures_.push_back(upload_compressed(image, first, data.color_space, texture_bytes_));
-        continue;
-      }
-      std::string error;
-      std::optional<assets::Image> decoded = assets::decode_blocks(*data.compressed, error);
-      if (!decoded) {
-        warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
-        textures_.push_back(upload_image(assets::Image{1, 1, {255, 255, 255, 255}}, assets::ColorSpace::Linear, texture_bytes_));
-        continue;
-      }
-      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + assets::block_format_name(data.compressed->format) +
-                         ", which this driver cannot sample; it is decoded and uploaded uncompressed");
-      textures_.push_back(upload_held(t, data, assets::downscale_to_fit(*decoded, limit, data.color_space == assets::ColorSpace::Srgb)));
+      textures_.push_back(upload_blocks(t, data));
       continue;
     }
     if (data.image.width <= limit && data.image.height <= limit) {
@@ -146,7 +170,7 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
       continue;
     }
     const assets::Image smaller = assets::downscale_to_fit(data.image, limit, data.color_space == assets::ColorSpace::Srgb);
-    warnings.push_back(too_large(t, data, {smaller.width, smaller.height}));
+    warnings.push_back(too_large(t, data, {smaller.width, smaller.height}, "downscaled to "));
     textures_.push_back(upload_held(t, data, smaller));
   }
   if (mesh_assets_.size() < assets.mesh_asset_count()) {

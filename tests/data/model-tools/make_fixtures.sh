@@ -18,11 +18,12 @@ assimp export "$testdata/gltf/blender-exports/torusknot.gltf" torusknot.assimp.o
 blender --background --python blender_fbx.py -- "$testdata/gltf/blender-exports/subpass_scene_opaque.gltf" subpass_scene_opaque.blender-zup.fbx Z
 blender --background --python blender_fbx.py -- "$testdata/gltf/blender-exports/torusknot.gltf" torusknot.blender-yup.fbx Y
 
-# DDS by ImageMagick (BC1 and BC3 with mip chains, uncompressed RGB and RGBA)
+# DDS by ImageMagick (BC1 and BC3 with mip chains, BC1 without one, uncompressed RGB and RGBA)
 # from two of Sponza's textures, with their PNG twins.
 textures=$testdata/scenes/sponza-crytek/textures
 $im "$textures/7268504077753552595.jpg" -resize 128x128 bricks.png
 $im bricks.png -define dds:compression=dxt1 -define dds:mipmaps=7 bricks.bc1.dds
+$im bricks.png -define dds:compression=dxt1 -define dds:mipmaps=0 bricks.bc1-nomips.dds
 $im bricks.png -define dds:compression=none -define dds:mipmaps=0 bricks.rgba.dds
 $im "$textures/5061699253647017043.png" -resize 128x128 leaves.png
 $im leaves.png -define dds:compression=dxt5 -define dds:mipmaps=7 leaves.bc3.dds
