@@ -130,8 +130,14 @@ TEST_F(ComputeStageWith, MsaaShadingTheEdgesSamplesAsTheFragmentStageDoes) {
     EXPECT_GE(assets::psnr(reference, compute), kMinimumPsnr) << mode;
     if (world.renderer().timer().counts_fragments()) {
       EXPECT_EQ(fragments_of(world, "lighting"), 0u) << mode;
-      // The fragment stage's geometry pass ends with the edge-marking pass over every pixel.
-      EXPECT_LE(fragments_of(world, "geometry") + static_cast<std::uint64_t>(kSize.x) * kSize.y, geometry_fragments) << mode;
+      // The fragment stage's geometry pass ends with the edge-marking pass, a
+      // full-screen pass whose fragments mostly discard; the compute stage marks
+      // edges in compute. llvmpipe counts every pixel of that pass, but the
+      // pipeline statistics leave a driver free to skip invocations (or run
+      // more) where the picture does not change (lavapipe, under zink, counts
+      // about 2,900 of 14,400, near the number of edge pixels): fewer is what
+      // holds on every driver.
+      EXPECT_LT(fragments_of(world, "geometry"), geometry_fragments) << mode;
     }
     settings.debug_view = "heatmap";
     (void)draw(world, LightingStage::Fragment);
