@@ -85,15 +85,17 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
   const int context_limit = gfx::max_texture_size();
   const int limit = max_texture_size_ > 0 ? std::min(max_texture_size_, context_limit) : context_limit;
   const auto wxh = [](glm::ivec2 size) { return std::to_string(size.x) + "x" + std::to_string(size.y); };
+  // How every warning names a texture.
+  const auto named = [](std::size_t t, const assets::TextureData& data) { return "texture " + std::to_string(t) + " '" + data.name + "'"; };
   // `done`: how the smaller texture is made ("downscaled to ", "uploaded from its mip level of ").
   auto too_large = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 to, const char* done) {
-    return "texture " + std::to_string(t) + " '" + data.name + "' is " + wxh({data.width(), data.height()}) + ", more than " +
+    return named(t, data) + " is " + wxh({data.width(), data.height()}) + ", more than " +
            (limit < context_limit ? "--max-texture-size allows (" + std::to_string(limit) + ")"
                                   : "this context allows (" + std::to_string(limit) + ", GL_MAX_TEXTURE_SIZE)") +
            "; it is " + done + wxh(to);
   };
   auto not_held = [&](std::size_t t, const assets::TextureData& data, glm::ivec2 from, glm::ivec2 to, const char* done) {
-    return "texture " + std::to_string(t) + " '" + data.name + "' at " + wxh(from) +
+    return named(t, data) + " at " + wxh(from) +
            " is more than this context can hold (its proxy texture refused it); it is " + done + wxh(to);
   };
   // Within GL_MAX_TEXTURE_SIZE a driver may still lack the memory (zink over
@@ -130,7 +132,7 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
     if (!decoded && sampled) {
       if (first > 0) warnings.push_back(too_large(t, data, size_from(first), "uploaded from its mip level of "));
       if (!within) {
-        warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + wxh(size_from(first)) +
+        warnings.push_back(named(t, data) + " is " + wxh(size_from(first)) +
                            " at its smallest level, more than the limit (" + std::to_string(limit) + "), and " +
                            assets::block_format_name(image.format) + " blocks cannot be decoded here to downscale it; it is uploaded as it is");
       }
@@ -143,11 +145,11 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
       return upload_compressed(image, first, data.color_space, texture_bytes_);
     }
     if (!decoded) {
-      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + error + "; a neutral default is used");
+      warnings.push_back(named(t, data) + " is " + error + "; a neutral default is used");
       return upload_image(assets::Image{1, 1, {255, 255, 255, 255}}, assets::ColorSpace::Linear, texture_bytes_);
     }
     if (!sampled) {
-      warnings.push_back("texture " + std::to_string(t) + " '" + data.name + "' is " + assets::block_format_name(image.format) +
+      warnings.push_back(named(t, data) + " is " + assets::block_format_name(image.format) +
                          ", which this driver cannot sample; it is decoded and uploaded uncompressed");
     }
     if (within) {

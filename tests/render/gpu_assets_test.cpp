@@ -10,25 +10,19 @@
 #include "assets/image.hpp"
 #include "gfx/limits.hpp"
 #include "support/gl_test.hpp"
+#include "support/uploaded_texture.hpp"
 
 namespace atrium {
 namespace {
 
 using TextureLimits = testing::GlTest;
+using testing::uploaded_size;
 
 const std::string kBig = std::string(ATRIUM_BIG_TEXTURE_DIR) + "/big-texture.gltf";
 const std::string kSmall = std::string(ATRIUM_BIG_TEXTURE_DIR) + "/small-texture.gltf";
 
 WorldOptions options(const std::string& scene, int max_texture_size = 0) {
   return {.scene = scene, .lights = 0u, .size = {160, 90}, .max_texture_size = max_texture_size};
-}
-
-glm::ivec2 uploaded_size(World& world) {
-  const GLuint texture = world.registry().resource<render::GpuAssets>().texture(assets::TextureHandle{0});
-  glm::ivec2 size{0};
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_WIDTH, &size.x);
-  glGetTextureLevelParameteriv(texture, 0, GL_TEXTURE_HEIGHT, &size.y);
-  return size;
 }
 
 assets::Image render(World& world) {
