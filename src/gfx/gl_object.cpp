@@ -113,6 +113,19 @@ void destroy_gl_object(GlKind kind, GLuint name) {
 }  // namespace detail
 
 namespace {
+// Whether the GPU has passed `sync`, asked without waiting (timeout 0; `flags`
+// GL_SYNC_FLUSH_COMMANDS_BIT submits it if it was not yet).
+bool sync_passed(GLsync sync, GLbitfield flags) {
+  // Asked twice before it counts as not passed: zink 25.0.7 (over lavapipe)
+  // answered a signalled fence's first query with GL_TIMEOUT_EXPIRED and the
+  // next one with GL_ALREADY_SIGNALED.
+  for (int ask = 0; ask < 2; ++ask) {
+    const GLenum status = glClientWaitSync(sync, flags, 0);
+    if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) return true;
+  }
+  return false;
+}
+
 // Calls a glCreate* function for one name: create(args..., 1, &name).
 template <GlKind K, typename Create, typename... Args>
 GlObject<K> create_one(Create create, Args... args) {
@@ -176,17 +189,6 @@ void require_complete(GLuint framebuffer, std::string_view what) {
   throw std::runtime_error("render target " + std::string(what) + " is incomplete (status 0x" + hex + ")" + why);
 }
 
-bool sync_passed(GLsync sync, GLbitfield flags) {
-  // Asked twice before it counts as not passed: zink 25.0.7 (over lavapipe)
-  // answered a signalled fence's first query with GL_TIMEOUT_EXPIRED and the
-  // next one with GL_ALREADY_SIGNALED.
-  for (int ask = 0; ask < 2; ++ask) {
-    const GLenum status = glClientWaitSync(sync, flags, 0);
-    if (status == GL_ALREADY_SIGNALED || status == GL_CONDITION_SATISFIED) return true;
-  }
-  return false;
-}
-
 void Fence::place() {
   reset();
   sync_ = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
@@ -206,6 +208,10 @@ bool Fence::wait_uncounted() {
   }
   reset();
   return waited;
+}
+
+bool Fence::passed() const {
+  return sync_ && sync_passed(sync_, GL_SYNC_FLUSH_COMMANDS_BIT);
 }
 
 void Fence::reset() {

@@ -73,10 +73,6 @@ using Program = GlObject<GlKind::Program>;
 using Query = GlObject<GlKind::Query>;
 using Sampler = GlObject<GlKind::Sampler>;
 
-// Whether the GPU has passed `sync`, asked without waiting (timeout 0; `flags`
-// GL_SYNC_FLUSH_COMMANDS_BIT submits it if it was not yet).
-[[nodiscard]] bool sync_passed(GLsync sync, GLbitfield flags);
-
 // A sync object placed in the command stream (glFenceSync), deleted with its
 // owner. Sync objects have no names, so they are not counted with the others.
 class Fence {
@@ -100,6 +96,11 @@ class Fence {
   void wait();
   // The same wait, not counted (gfx/frame_pacer.hpp): whether it had to wait.
   bool wait_uncounted();
+  // Whether the GPU has passed it, asked without waiting (false when none is
+  // placed). Submits it if it was not yet, so that a fence asked about again
+  // and again passes without anything else flushing.
+  [[nodiscard]] bool passed() const;
+  [[nodiscard]] bool placed() const { return sync_ != nullptr; }
   void reset();
 
  private:

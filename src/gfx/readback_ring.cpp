@@ -26,15 +26,12 @@ ReadbackRing::ReadbackRing(std::size_t slot_bytes, std::size_t slots)
 }
 
 ReadbackRing::~ReadbackRing() {
-  for (Slot& slot : slots_) {
-    if (slot.fence) glDeleteSync(slot.fence);
-  }
   if (mapped_) glUnmapNamedBuffer(buffer_.id());
 }
 
 bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::uint64_t tag) {
   Slot& slot = slots_[next_];
-  if (slot.fence || bytes > slot_bytes_ || (!mapped_ && staging_.empty())) return false;
+  if (slot.fence.placed() || bytes > slot_bytes_ || (!mapped_ && staging_.empty())) return false;
   const std::size_t destination = next_ * slot_bytes_;
   if (copy_program_ && bytes % 4 == 0 && offset % 4 == 0 && destination % 4 == 0) {
     // The shader reads what shaders wrote, and the CPU reads what it writes.
@@ -53,7 +50,10 @@ bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glCopyNamedBufferSubData(buffer, buffer_.id(), offset, static_cast<GLintptr>(destination), static_cast<GLsizeiptr>(bytes));
   }
-  slot = {glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0), bytes, tag, copies_++};
+  slot.fence.place();
+  slot.bytes = bytes;
+  slot.tag = tag;
+  slot.order = copies_++;
   next_ = (next_ + 1) % slots_.size();
   return true;
 }
@@ -61,14 +61,11 @@ bool ReadbackRing::copy(GLuint buffer, GLintptr offset, std::size_t bytes, std::
 void ReadbackRing::poll(const std::function<void(const void* data, std::size_t bytes, std::uint64_t tag)>& arrived) {
   std::vector<std::size_t> done;
   for (std::size_t i = 0; i < slots_.size(); ++i) {
-    if (!slots_[i].fence) continue;
-    // Asks, never waits; the flush lets a fence never submitted pass at all.
-    if (sync_passed(slots_[i].fence, GL_SYNC_FLUSH_COMMANDS_BIT)) done.push_back(i);
+    if (slots_[i].fence.passed()) done.push_back(i);
   }
   std::sort(done.begin(), done.end(), [&](std::size_t a, std::size_t b) { return slots_[a].order < slots_[b].order; });
   for (const std::size_t i : done) {
-    glDeleteSync(slots_[i].fence);
-    slots_[i].fence = nullptr;
+    slots_[i].fence.reset();
     if (mapped_) {
       arrived(mapped_ + i * slot_bytes_, slots_[i].bytes, slots_[i].tag);
     } else {

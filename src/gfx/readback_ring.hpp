@@ -16,6 +16,7 @@
 #include <functional>
 #include <vector>
 
+#include "gfx/frame_pacer.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/shader_program.hpp"
 
@@ -26,8 +27,13 @@ inline constexpr unsigned kReadbackSourceBinding = 22, kReadbackSlotBinding = 23
 
 class ReadbackRing {
  public:
+  // Twice the frames FramePacer lets run ahead: a copy a frame never finds
+  // every slot in flight, and a page, where requestAnimationFrame sets the
+  // pace instead, may fall as far behind again.
+  static constexpr std::size_t kDefaultSlots = 2 * FramePacer::kFramesInFlight;
+
   // Slots of `slot_bytes` each.
-  explicit ReadbackRing(std::size_t slot_bytes, std::size_t slots = 4);
+  explicit ReadbackRing(std::size_t slot_bytes, std::size_t slots = kDefaultSlots);
   ~ReadbackRing();
   ReadbackRing(const ReadbackRing&) = delete;
   ReadbackRing& operator=(const ReadbackRing&) = delete;
@@ -44,7 +50,7 @@ class ReadbackRing {
 
  private:
   struct Slot {
-    GLsync fence = nullptr;
+    Fence fence;  // placed while the copy is in flight
     std::size_t bytes = 0;
     std::uint64_t tag = 0;
     std::uint64_t order = 0;  // when it was copied, to hand slots back oldest first

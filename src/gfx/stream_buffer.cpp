@@ -18,17 +18,33 @@ void StreamBuffer::reserve(std::size_t bytes) {
 }
 
 void StreamBuffer::upload(const void* data, std::size_t bytes) {
+  upload({std::span<const std::byte>(static_cast<const std::byte*>(data), bytes)});
+}
+
+void StreamBuffer::upload(std::initializer_list<std::span<const std::byte>> pieces) {
+  std::size_t bytes = 0;
+  for (const std::span<const std::byte> piece : pieces) bytes += piece.size();
   reserve(bytes);
   if (bytes == 0) return;
   if (gl_features().buffer_storage && !unmappable_ && (staging_.empty() || staging_bytes_ != capacity)) make_staging();
   if (staging_.empty()) {
-    glNamedBufferSubData(buffer.id(), 0, static_cast<GLsizeiptr>(bytes), data);
+    std::size_t offset = 0;
+    for (const std::span<const std::byte> piece : pieces) {
+      if (!piece.empty()) {
+        glNamedBufferSubData(buffer.id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(piece.size()), piece.data());
+      }
+      offset += piece.size();
+    }
     return;
   }
   Staging& copy = staging_[next_];
   next_ = (next_ + 1) % staging_.size();
   copy.copied.wait();
-  std::memcpy(copy.mapped, data, bytes);
+  std::size_t offset = 0;
+  for (const std::span<const std::byte> piece : pieces) {
+    if (!piece.empty()) std::memcpy(static_cast<std::byte*>(copy.mapped) + offset, piece.data(), piece.size());
+    offset += piece.size();
+  }
   glCopyNamedBufferSubData(copy.buffer.id(), buffer.id(), 0, 0, static_cast<GLsizeiptr>(bytes));
   copy.copied.place();
 }

@@ -12,6 +12,8 @@
 #pragma once
 
 #include <cstddef>
+#include <initializer_list>
+#include <span>
 #include <vector>
 
 #include "gfx/frame_pacer.hpp"
@@ -33,6 +35,9 @@ struct StreamBuffer {
   // Copies `bytes` from `data` to the start of the buffer (made or grown first),
   // as a command: commands submitted before it read the contents before it.
   void upload(const void* data, std::size_t bytes);
+  // The same for pieces laid back to back from the start (a head and an array,
+  // say), each copied once: no contiguous copy of them on the CPU first.
+  void upload(std::initializer_list<std::span<const std::byte>> pieces);
 
  private:
   // A CPU-written copy of one upload, mapped for as long as it lives.

@@ -1,10 +1,12 @@
 // StreamBuffer uploads land in command order: commands submitted between two
 // uploads read the first one's data, however many uploads the CPU makes before
 // the GPU runs them, and uploads into a stream the GPU has caught up with
-// never wait.
+// never wait. A gather upload lays its pieces back to back.
 #include "gfx/stream_buffer.hpp"
 
+#include <cstddef>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "gfx/gpu_waits.hpp"
@@ -57,6 +59,31 @@ TEST_F(StreamBufferTest, UploadsIntoAStreamTheGpuCaughtUpWithNeverWait) {
     EXPECT_EQ(gpu_waits(), before) << "frame " << frame;
   }
   EXPECT_EQ(read_words(stream.buffer.id(), 1)[0], 7u);
+}
+
+// A head and an array in one upload, as the visibility buffer sends its units:
+// the head at the start, the array right after it, an empty piece adding
+// nothing; then a shorter gather leaves what lies past it as it was.
+TEST_F(StreamBufferTest, AGatherUploadLaysItsPiecesBackToBack) {
+  StreamBuffer stream;
+  const std::uint32_t head = 0xABCD0123u;
+  std::vector<std::uint32_t> array(777);
+  for (std::size_t w = 0; w < array.size(); ++w) array[w] = static_cast<std::uint32_t>(w * 3 + 1);
+  for (int frame = 0; frame < 3; ++frame) {
+    stream.upload({std::as_bytes(std::span(&head, 1)), std::span<const std::byte>(), std::as_bytes(std::span(array))});
+  }
+  const std::vector<std::uint32_t> words = read_words(stream.buffer.id(), 1 + array.size());
+  EXPECT_EQ(words[0], head);
+  for (std::size_t w = 0; w < array.size(); ++w) ASSERT_EQ(words[1 + w], array[w]) << "word " << w;
+
+  const std::uint32_t short_head = 5u;
+  stream.upload({std::as_bytes(std::span(&short_head, 1)), std::as_bytes(std::span(array).first(2))});
+  const std::vector<std::uint32_t> after = read_words(stream.buffer.id(), 4);
+  EXPECT_EQ(after[0], short_head);
+  EXPECT_EQ(after[1], array[0]);
+  EXPECT_EQ(after[2], array[1]);
+  EXPECT_EQ(after[3], array[2]) << "past the upload: the last one's word";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 #include "render/techniques/visibility/visibility.hpp"
 
 #include <algorithm>
-#include <cstring>
+#include <span>
 #include <vector>
 
 #include "gfx/depth.hpp"
@@ -203,12 +203,11 @@ void VisibilityTechnique::bind_inputs(const render::PassResources& res, const re
 
 void VisibilityTechnique::upload_units(const render::DrawList& list) {
   unit_count_ = list.visibility_units.size();
-  // The head, then the units (Units in visibility.glsl).
+  // The head, then the units (Units in visibility.glsl), in room for at least
+  // the one unit bind_inputs binds.
   const render::VisibilityUnitsHead head{static_cast<std::uint32_t>(unit_count_)};
-  staged_units_.resize(units_bytes(unit_count_));
-  std::memcpy(staged_units_.data(), &head, sizeof(head));
-  std::memcpy(staged_units_.data() + sizeof(head), list.visibility_units.data(), unit_count_ * sizeof(render::VisibilityUnit));
-  units_.upload(staged_units_.data(), staged_units_.size());
+  units_.reserve(units_bytes(unit_count_));
+  units_.upload({std::as_bytes(std::span(&head, 1)), std::as_bytes(std::span(list.visibility_units))});
 }
 
 std::vector<const render::DrawBatch*> VisibilityTechnique::batches_by_material(const render::DrawList& list) {

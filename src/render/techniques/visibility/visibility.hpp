@@ -100,7 +100,6 @@ class VisibilityTechnique final : public LightingTechnique {
   gfx::StreamBuffer units_;
   gfx::StreamBuffer material_textures_;  // bindless: MaterialTextures of each material
   std::size_t unit_count_ = 0;  // of this frame, after the head of units_
-  std::vector<std::byte> staged_units_;  // the head and the units, as uploaded
   render::ResourceId identifiers_target_;
   render::ResourceId shading_depth_;  // with MSAA: each sample's depth at its pixel centre
 };
