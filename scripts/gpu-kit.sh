@@ -12,23 +12,28 @@
 #   scripts/gpu-kit.sh DIR --xz FILE       also writes the kit as FILE (tar.xz, about 30 MiB):
 #                                          what a device run carries beside the repository
 #                                          within its 64 MiB (unpack it with tar -xJf FILE -C /tmp)
+#   scripts/gpu-kit.sh DIR --before TREE   also packs the version to compare with (before/: its
+#                                          atrium and shaders), for run.sh's before-and-after step:
+#                                          TREE is its source tree (git worktree add TREE COMMIT),
+#                                          with atrium built in TREE/build (built here in Release if not)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 readonly max_bytes=$((60 * 1024 * 1024))
 
 usage() {
-  echo "usage: scripts/gpu-kit.sh DIR [--binary FILE] [--sponza DIR] [--xz FILE]" >&2
+  echo "usage: scripts/gpu-kit.sh DIR [--binary FILE] [--sponza DIR] [--xz FILE] [--before TREE]" >&2
   exit 2
 }
 [ $# -ge 1 ] || usage
 kit=$1
 shift
-binary="" sponza="" tarball=""
+binary="" sponza="" tarball="" before=""
 while [ $# -gt 0 ]; do
   case $1 in
     --binary) [ $# -ge 2 ] || usage; binary=$2; shift 2 ;;
     --sponza) [ $# -ge 2 ] || usage; sponza=$2; shift 2 ;;
     --xz) [ $# -ge 2 ] || usage; tarball=$2; shift 2 ;;
+    --before) [ $# -ge 2 ] || usage; before=$(cd "$2" && pwd) || usage; shift 2 ;;
     *) usage ;;
   esac
 done
@@ -39,6 +44,13 @@ if [ -z "$binary" ]; then
   binary=$root/build/atrium
 fi
 [ -x "$binary" ] || { echo "gpu-kit: $binary is not an executable" >&2; exit 1; }
+if [ -n "$before" ]; then
+  [ -d "$before/shaders" ] || { echo "gpu-kit: $before has no shaders/: --before takes a source tree" >&2; exit 1; }
+  if [ ! -x "$before/build/atrium" ]; then
+    cmake -S "$before" -B "$before/build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+    cmake --build "$before/build" --target atrium -j"$(nproc)"
+  fi
+fi
 if [ -z "$sponza" ]; then
   for candidate in "$root/assets/sponza/glTF" "$root/../shared/testdata/scenes/sponza-crytek"; do
     if [ -f "$candidate/Sponza.gltf" ]; then sponza=$candidate; break; fi
@@ -50,9 +62,19 @@ fi
 rm -rf "$kit"
 mkdir -p "$kit/bin" "$kit/lib" "$kit/glvnd" "$kit/assets/sponza"
 strip --strip-unneeded -o "$kit/bin/atrium" "$binary"
+binaries=("$binary")
+if [ -n "$before" ]; then
+  mkdir -p "$kit/before/bin"
+  strip --strip-unneeded -o "$kit/before/bin/atrium" "$before/build/atrium"
+  cp -rL "$before/shaders" "$kit/before/shaders"
+  # The before-and-after step's scene with blended surfaces (neither Sponza nor
+  # the built-in scene has any): Blender's glass panes.
+  cp "$root/tests/data/gltf-tools/blender-glass.glb" "$kit/assets/glass.glb"
+  binaries+=("$before/build/atrium")
+fi
 # What the dynamic linker resolves, less what every Linux with a GL driver has:
 # glibc's libraries and the GL loaders, which must be the machine's own.
-ldd "$binary" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }' | while read -r name path; do
+ldd "${binaries[@]}" | awk '$2 == "=>" && $3 ~ /^\// { print $1, $3 }' | while read -r name path; do
   case $name in
     libc.so.* | libm.so.* | libdl.so.* | libpthread.so.* | librt.so.* | ld-linux* | libGL* | libEGL* | libOpenGL*) continue ;;
   esac
@@ -78,16 +100,20 @@ chmod +x "$kit/run.sh"
 {
   echo "atrium $(git -C "$root" describe --always --dirty 2>/dev/null || echo unknown), kit made $(date -u +%Y-%m-%dT%H:%MZ)"
   echo "binary: $binary"
+  [ -z "$before" ] || echo "before: atrium $(git -C "$before" describe --always --dirty 2>/dev/null || echo unknown) ($before)"
 } >"$kit/VERSION"
 
+# What a device run carries is the tarball where there is one, else the folder.
 bytes=$(du -sb "$kit" | cut -f1)
-if [ "$bytes" -gt "$max_bytes" ]; then
-  echo "gpu-kit: $kit holds $((bytes / 1024 / 1024)) MiB, more than the 60 MiB a device run may carry" >&2
-  exit 1
-fi
 echo "gpu-kit: $kit ($((bytes / 1024 / 1024)) MiB, $(ls "$kit/lib" | wc -l) libraries); run: $kit/run.sh OUT [--quick]"
+carried=$kit
 if [ -n "$tarball" ]; then
   mkdir -p "$(dirname "$tarball")"
   tar -C "$(dirname "$kit")" -cf - "$(basename "$kit")" | xz -T0 -4 >"$tarball"
-  echo "gpu-kit: $tarball ($(($(stat -c %s "$tarball") / 1024 / 1024)) MiB); on the GPU machine: tar -xJf $(basename "$tarball") -C /tmp && /tmp/$(basename "$kit")/run.sh OUT"
+  bytes=$(stat -c %s "$tarball") carried=$tarball
+  echo "gpu-kit: $tarball ($((bytes / 1024 / 1024)) MiB); on the GPU machine: tar -xJf $(basename "$tarball") -C /tmp && /tmp/$(basename "$kit")/run.sh OUT"
+fi
+if [ "$bytes" -gt "$max_bytes" ]; then
+  echo "gpu-kit: $carried holds $((bytes / 1024 / 1024)) MiB, more than the 60 MiB a device run may carry" >&2
+  exit 1
 fi

@@ -4,7 +4,8 @@
 #   ./run.sh OUT           1920x1080, 128 to 131,072 lights, built-in scene and Sponza, each mode in
 #                          the fragment and the compute stage, then the light lists' choices, and
 #                          1,048,576 lights last, still and then moving (the riskiest steps) (at most 9 minutes: each step gets
-#                          what is left of that)
+#                          what is left of that); with a kit packed with --before, the version before a change
+#                          against this one, run after run
 #   ./run.sh OUT --quick   160x90 and few lights: checks the kit on a software renderer
 # Writes into OUT: report.md (the GL context, the SMs each shader stage reaches, PSNR of every mode against forward,
 # the bench tables, occlusion culling on the CPU and on the GPU), bench-atrium.csv, bench-sponza.csv, bench-shadows.csv,
@@ -49,10 +50,11 @@ atrium=$kit/bin/atrium
 sponza=$kit/scenes/sponza.json
 if [ "$quick" = 1 ]; then
   size=160x90 lights=16 frames=1 warmup=1 shadow_lights=64 shadowed=8 picture_lights=64 picture_radius=8 cluster_lights=16 \
-    assign_lights=16 million=256 budget=900 slack=4
+    assign_lights=16 million=256 budget=900 slack=4 ab_lights=16 ab_density_lights=16
 else
   size=1920x1080 lights=128,1024,16384,131072 frames=5 warmup=2 shadow_lights=1024 shadowed=256 picture_lights=131072 \
-    picture_radius=0.8 cluster_lights=1024,131072 assign_lights=1024,16384,131072 million=1048576 budget=540 slack=1
+    picture_radius=0.8 cluster_lights=1024,131072 assign_lights=1024,16384,131072 million=1048576 budget=540 slack=1 \
+    ab_lights=1024 ab_density_lights=1024,16384
 fi
 lights=${ATRIUM_KIT_LIGHTS:-$lights}
 budget=${ATRIUM_KIT_SECONDS:-$budget}
@@ -183,6 +185,33 @@ for first in "${firsts[@]}"; do
   step "first mode $first" 20 "$out/.first-$mode-$binding.txt" "$atrium" render --mode "$mode" --material-binding "$binding" \
     --lights 1024 --size "$size" --debug-view heatmap --out "$out/.heatmap.png"
 done
+# Before and after (a kit packed with --before): the version before a change
+# made without a GPU (before/: its binary and shaders) against this one, on the
+# same GPU, in three cases: Sponza's lion view with dense lights, the built-in
+# scene at constant density, and Blender's glass panes (blended surfaces, which
+# the other scenes lack). Each case runs before, after, after, before, so that
+# a GPU warming up or throttling weighs on both sides alike.
+ab_cases=(lion density glass)
+ab_order=("before 1" "after 1" "after 2" "before 2")
+ab_case() {  # ab_case CASE: the bench arguments of a before-and-after case
+  case $1 in
+    lion) echo "$sponza --modes clustered-deferred,visibility-buffer --views 4 --lights $ab_lights --light-radius 4" ;;
+    density) echo "--modes clustered-deferred,visibility-buffer --views 1 --constant-density --lights $ab_density_lights" ;;
+    glass) echo "$kit/assets/glass.glb --modes clustered-forward,clustered-deferred --views 1 --lights $ab_lights" ;;
+  esac
+}
+if [ -x "$kit/before/bin/atrium" ]; then
+  for run in "${ab_order[@]}"; do
+    side=${run% *} round=${run#* }
+    program=("$atrium")
+    [ "$side" = before ] && program=(env ATRIUM_SHADER_DIR="$kit/before/shaders" "$kit/before/bin/atrium")
+    for ab in "${ab_cases[@]}"; do
+      # shellcheck disable=SC2046 # the case's arguments split into words on purpose (no path holds a space)
+      step "before and after: $ab, $side, round $round" 30 "$out/.ab-$ab-$side-$round.md" "${program[@]}" bench $(ab_case "$ab") \
+        --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --csv "$out/.ab-$ab-$side-$round.csv"
+    done
+  done
+fi
 step "bench, built-in scene" 110 "$out/.bench-atrium.md" "${bench[@]}" --lights "$lights" --csv "$out/bench-atrium.csv"
 step "bench, Sponza" 110 "$out/.bench-sponza.md" "${bench[@]}" "$sponza" --lights "$lights" --csv "$out/bench-sponza.csv"
 step "bench, Sponza, $shadowed shadowed lights" 60 "$out/.bench-shadows.md" "${bench[@]}" "$sponza" --lights "$shadow_lights" \
@@ -243,6 +272,35 @@ for python in /usr/bin/python3 python3; do
   break
 done
 
+ab_table() {  # the before-and-after runs' medians (the CSVs' 8th column, before any quoted field) as one table
+  local header="| case | mode | lights | view |" rule="|---|---|---:|---:|" run
+  for run in "${ab_order[@]}"; do header+=" $run |" rule+="---:|"; done
+  echo "$header change |"
+  echo "$rule---:|"
+  for ab in "${ab_cases[@]}"; do
+    for run in "${ab_order[@]}"; do
+      local csv=$out/.ab-$ab-${run% *}-${run#* }.csv
+      [ -s "$csv" ] && awk -F, -v run="$run" -v ab="$ab" 'NR > 1 { print ab "\t" $1 "\t" $2 "\t" $3 "\t" run "\t" $8 }' "$csv"
+    done
+  done | awk -F'\t' -v order="${ab_order[*]}" '
+    BEGIN { runs = split(order, words, " ") / 2; for (i = 1; i <= runs; ++i) column[i] = words[2 * i - 1] " " words[2 * i] }
+    { key = $1 "\t" $2 "\t" $3 "\t" $4; if (!(key in seen)) { seen[key] = 1; keys[++count] = key } median[key, $5] = $6 }
+    END {
+      for (k = 1; k <= count; ++k) {
+        split(keys[k], part, "\t")
+        line = "| " part[1] " | " part[2] " | " part[3] " | " part[4] " |"
+        before = after = nb = na = 0
+        for (i = 1; i <= runs; ++i) {
+          value = ((keys[k], column[i]) in median) ? median[keys[k], column[i]] : "-"
+          line = line " " value " |"
+          if (value ~ /^[0-9.]+$/) { if (column[i] ~ /^before/) { before += value; ++nb } else { after += value; ++na } }
+        }
+        change = (nb && na && before > 0) ? sprintf("%+.1f%%", 100 * (after / na) / (before / nb) - 100) : "-"
+        print line " " change " |"
+      }
+    }'
+}
+
 section() {  # section TITLE FILE: a file's text under a heading, as a code block unless it is markdown
   echo
   echo "## $1"
@@ -289,6 +347,14 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   done
   [[ " ${firsts[*]} " == *" visibility-buffer:bindless "* ]] ||
     echo "- visibility-buffer, material binding bindless: not run, the context lacks GL_ARB_bindless_texture"
+  if [ -x "$kit/before/bin/atrium" ]; then
+    echo
+    echo "## Before and after: $(sed -n 's/^before: //p' "$kit/VERSION" | cut -d' ' -f1-2) against $(head -n 1 "$kit/VERSION" | cut -d, -f1)"
+    echo
+    echo "Median frame time (ms) of each run, in the order they ran; the change is the after runs' mean against the before runs'."
+    echo
+    ab_table
+  fi
   section "Bench, built-in scene" "$out/.bench-atrium.md"
   section "Bench, Sponza" "$out/.bench-sponza.md"
   section "Bench, Sponza, $shadowed shadowed lights" "$out/.bench-shadows.md"

@@ -4,6 +4,8 @@
 # everything but PATH, so the libraries come from the kit): every step passes,
 # every mode agrees with forward on both scenes in both lighting stages, each
 # mode is benched in both, and OUT holds the files the kit promises, no more than 8.
+# The kit is packed with a version to compare with (--before: here a source tree
+# of this build's binary and shaders), whose runs make the before-and-after table.
 #   gpu_kit_test.sh ATRIUM_BINARY WORK_DIR
 set -euo pipefail
 binary=$1 work=$2
@@ -14,7 +16,10 @@ fail() {
 }
 rm -rf "$work"
 mkdir -p "$work"
-"$root/scripts/gpu-kit.sh" "$work/kit" --binary "$binary" --xz "$work/kit.tar.xz"
+mkdir -p "$work/before/build"
+ln -s "$(realpath "$binary")" "$work/before/build/atrium"
+ln -s "$root/shaders" "$work/before/shaders"
+"$root/scripts/gpu-kit.sh" "$work/kit" --binary "$binary" --xz "$work/kit.tar.xz" --before "$work/before"
 
 # The tarball a device run carries holds the kit, and the kit's glvnd loaders
 # (for a machine with the driver alone) dispatch to the machine's driver: here
@@ -74,6 +79,12 @@ done
   fail "no CSV rows of the grid's culling runs (cpu_passes, cpu_systems) in the report"
 [ "$(grep -c "^visibility-buffer,1024,1,.*Render/mesh_renderer=" "$report")" = 3 ] ||
   fail "no CSV rows of the visibility buffer's runs in every scene (cpu_passes, cpu_systems) in the report"
+# Before and after: each case's modes, each with a median from all four runs and a change.
+grep -q "^## Before and after: atrium .* against atrium " "$report" || fail "no before-and-after section: $(cat "$report")"
+grep -q "^| case | mode | lights | view | before 1 | after 1 | after 2 | before 2 | change |$" "$report" ||
+  fail "no before-and-after table"
+[ "$(grep -cE "^\| (lion|density|glass) \| [a-z-]+ \| 16 \| [14] \|( [0-9.]+ \|){4} [+-][0-9.]+% \|$" "$report")" = 6 ] ||
+  fail "not every case measured in all four runs: $(grep -A 9 "^## Before and after" "$report")"
 for png in sponza.png atrium.png; do
   [ "$(head -c 4 "$work/out/$png" | tail -c 3)" = PNG ] || fail "$png is not a PNG"
 done
