@@ -7,11 +7,12 @@
 // textures bound at units 0-4), one work group per tile of its list
 // (material_tiles.glsl). BINDLESS_TEXTURES: one dispatch, one work group per tile of
 // the frame, which gives the background to empty samples (the classification's
-// job otherwise) and shades the materials its tile shows one after the other,
-// each sampled by handle: the loop keeps the handle dynamically uniform, as
-// ARB_bindless_texture asks. With MSAA each surface a pixel's samples show is
-// shaded once, at the pixel centre as a raster pass shades it, and stored to
-// the samples that show it (surface_groups in visibility.glsl).
+// job otherwise) and evaluates the materials its tile shows one after the
+// other, each sampled by handle: the loop keeps the handle dynamically
+// uniform, as ARB_bindless_texture asks; each pixel is lit after the loop,
+// once. With MSAA each surface a pixel's samples show is shaded once, at the
+// pixel centre as a raster pass shades it, and stored to the samples that
+// show it (surface_groups in visibility.glsl).
 #ifdef BINDLESS_TEXTURES
 #extension GL_ARB_bindless_texture : require
 #endif
@@ -25,12 +26,18 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/lighting_targets.glsl"
 #include "visibility/visibility.glsl"
 
-// Shades `triangle` of `instance` (whose material is `material`) where `pixel`
-// shows it, storing to the samples lighting_targets.glsl is told.
-void shade(ivec2 pixel, Instance instance, uint triangle, uint material) {
-  VisibleSurface v = visible_surface(pixel, instance, triangle);
-  Surface s = evaluate_material(material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
+Surface material_surface(VisibleSurface v, uint material) {
+  return evaluate_material(material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
+}
+
+// Lights `s` where `pixel` shows it, storing to the samples lighting_targets.glsl is told.
+void light(ivec2 pixel, Surface s) {
   write_lighting(shade_unlit_terms(s, u_ambient.rgb), shade_cluster_lights(s, vec2(pixel) + 0.5));
+}
+
+// Shades `triangle` of `instance` (whose material is `material`) where `pixel` shows it.
+void shade(ivec2 pixel, Instance instance, uint triangle, uint material) {
+  light(pixel, material_surface(visible_surface(pixel, instance, triangle), material));
 }
 
 #ifdef BINDLESS_TEXTURES
@@ -68,12 +75,15 @@ void main() {
 #else
   uint id = inside ? texelFetch(u_visibility, pixel, 0).r : 0u;
   if (inside && id == 0u) background = 1u;
-  uint triangle;
-  Instance instance;
   uint material = kNone;
+  // The surface before its material: what the triangle gives does not depend on it.
+  VisibleSurface visible;
+  Surface surface;
   if (id != 0u) {
-    instance = visible_instance(id, triangle);
+    uint triangle;
+    Instance instance = visible_instance(id, triangle);
     material = instance.material.x;
+    visible = visible_surface(pixel, instance, triangle);
   }
   s_slot_material[first] = material;
 #endif
@@ -101,9 +111,14 @@ void main() {
       shade(pixel, instance, triangle, m);
     }
 #else
-    if (material == m) shade(pixel, instance, triangle, m);
+    if (material == m) surface = material_surface(visible, m);
 #endif
   }
+#ifndef MSAA_SAMPLES
+  // Lit once, after every material: a tile that shows several runs the light
+  // loop (the resolve's longest part) once, not once per material.
+  if (material != kNone) light(pixel, surface);
+#endif
 }
 #else
 #include "visibility/material_tiles.glsl"
