@@ -89,8 +89,11 @@ void carry_out(World& world) {
     say(overlay.message);
   }
   if (requests.benchmark) {
-    say("benchmark: every mode from the current camera, 8 frames after 2 warm-up...");
-    const BenchResult result = bench_current_view(world, 8, 2);
+    // Few frames: the window stands still while it runs.
+    constexpr int kFrames = 8, kWarmup = 2;
+    say("benchmark: every mode from the current camera, " + std::to_string(kFrames) + " frames after " + std::to_string(kWarmup) +
+        " warm-up...");
+    const BenchResult result = bench_current_view(world, kFrames, kWarmup);
     overlay.message = bench_markdown(result);
     say(overlay.message);
   }
