@@ -12,7 +12,9 @@
 // uniform, as ARB_bindless_texture asks; each pixel is lit after the loop,
 // once. With MSAA each surface a pixel's samples show is shaded once, at the
 // pixel centre as a raster pass shades it, and stored to the samples that
-// show it (surface_groups in visibility.glsl).
+// show it (surface_groups in visibility.glsl); bindless takes a pixel's
+// surfaces one after the other, each a loop over the materials and one
+// light loop.
 #ifdef BINDLESS_TEXTURES
 #extension GL_ARB_bindless_texture : require
 #endif
@@ -95,26 +97,35 @@ void main() {
   }
   barrier();
   uint count = s_material_count;
+#ifdef MSAA_SAMPLES
+  // Each surface of the pixel in turn: rebuilt once, its material evaluated
+  // in the material's turn, lit after the turns. The light loop runs as many
+  // times as the pixel shows surfaces, not once per material and surface.
+  // (Every invocation that runs the loop over the materials reads the same
+  // material from shared memory: the handles stay dynamically uniform.)
+  for (uint rest = leaders; rest != 0u; rest &= rest - 1u) {
+    int leader = findLSB(rest);
+    uint material = s_slot_material[first + uint(leader)];
+    uint triangle;
+    // Looked up again, not kept from the grouping: kSamples instance
+    // records (36 words each) held across the barriers would cost registers
+    // in every invocation, and the second lookup (a binary search over the
+    // units, one record) reads what the first brought into the cache.
+    Instance instance = visible_instance(id_at(ids, leader), triangle);
+    VisibleSurface visible = visible_surface(pixel, instance, triangle);
+    Surface surface;
+    for (uint k = 0u; k < count; ++k) {
+      uint m = s_materials[k];
+      if (material == m) surface = material_surface(visible, m);
+    }
+    g_shaded_samples = group_mask(group_of, leader);
+    light(pixel, surface);
+  }
+#else
   for (uint k = 0u; k < count; ++k) {
     uint m = s_materials[k];
-#ifdef MSAA_SAMPLES
-    for (uint rest = leaders; rest != 0u; rest &= rest - 1u) {
-      int leader = findLSB(rest);
-      if (s_slot_material[first + uint(leader)] != m) continue;
-      g_shaded_samples = group_mask(group_of, leader);
-      uint triangle;
-      // Looked up again, not kept from the first loop: kSamples instance
-      // records (36 words each) held across the barriers would cost registers
-      // in every invocation, and the second lookup (a binary search over the
-      // units, one record) reads what the first brought into the cache.
-      Instance instance = visible_instance(id_at(ids, leader), triangle);
-      shade(pixel, instance, triangle, m);
-    }
-#else
     if (material == m) surface = material_surface(visible, m);
-#endif
   }
-#ifndef MSAA_SAMPLES
   // Lit once, after every material: a tile that shows several runs the light
   // loop (the resolve's longest part) once, not once per material.
   if (material != kNone) light(pixel, surface);
