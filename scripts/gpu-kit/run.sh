@@ -187,16 +187,18 @@ for first in "${firsts[@]}"; do
 done
 # Before and after (a kit packed with --before): the version before a change
 # made without a GPU (before/: its binary and shaders) against this one, on the
-# same GPU, in three cases: Sponza's lion view with dense lights, the built-in
-# scene at constant density, and Blender's glass panes (blended surfaces, which
-# the other scenes lack). Each case runs before, after, after, before, so that
-# a GPU warming up or throttling weighs on both sides alike.
-ab_cases=(lion density glass)
+# same GPU, in four cases: Sponza's lion view with dense lights, the built-in
+# scene at constant density and with 4x MSAA, and Blender's glass panes
+# (blended surfaces, which the other scenes lack). Each case runs before,
+# after, after, before, so that a GPU warming up or throttling weighs on both
+# sides alike.
+ab_cases=(lion density msaa glass)
 ab_order=("before 1" "after 1" "after 2" "before 2")
 ab_case() {  # ab_case CASE: the bench arguments of a before-and-after case
   case $1 in
     lion) echo "$sponza --modes clustered-deferred,visibility-buffer --views 4 --lights $ab_lights --light-radius 4" ;;
     density) echo "--modes clustered-deferred,visibility-buffer --views 1 --constant-density --lights $ab_density_lights" ;;
+    msaa) echo "--modes clustered-deferred,visibility-buffer --views 1 --msaa 4 --lights $ab_lights" ;;
     glass) echo "$kit/assets/glass.glb --modes clustered-forward,clustered-deferred --views 1 --lights $ab_lights" ;;
   esac
 }

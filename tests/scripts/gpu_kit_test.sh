@@ -83,7 +83,7 @@ done
 grep -q "^## Before and after: atrium .* against atrium " "$report" || fail "no before-and-after section: $(cat "$report")"
 grep -q "^| case | mode | lights | view | before 1 | after 1 | after 2 | before 2 | change |$" "$report" ||
   fail "no before-and-after table"
-[ "$(grep -cE "^\| (lion|density|glass) \| [a-z-]+ \| 16 \| [14] \|( [0-9.]+ \|){4} [+-][0-9.]+% \|$" "$report")" = 6 ] ||
+[ "$(grep -cE "^\| (lion|density|msaa|glass) \| [a-z-]+ \| 16 \| [14] \|( [0-9.]+ \|){4} [+-][0-9.]+% \|$" "$report")" = 8 ] ||
   fail "not every case measured in all four runs: $(grep -A 9 "^## Before and after" "$report")"
 for png in sponza.png atrium.png; do
   [ "$(head -c 4 "$work/out/$png" | tail -c 3)" = PNG ] || fail "$png is not a PNG"
