@@ -202,15 +202,15 @@ ab_case() {  # ab_case CASE: the bench arguments of a before-and-after case
     glass) echo "$kit/assets/glass.glb --modes clustered-forward,clustered-deferred --views 1 --lights $ab_lights" ;;
   esac
 }
-if [ -x "$kit/before/bin/atrium" ]; then
-  for run in "${ab_order[@]}"; do
-    side=${run% *} round=${run#* }
+before_atrium=$kit/before/bin/atrium
+if [ -x "$before_atrium" ]; then
+  for i in "${!ab_order[@]}"; do
     program=("$atrium")
-    [ "$side" = before ] && program=(env ATRIUM_SHADER_DIR="$kit/before/shaders" "$kit/before/bin/atrium")
+    [ "${ab_order[i]% *}" = before ] && program=(env ATRIUM_SHADER_DIR="$kit/before/shaders" "$before_atrium")
     for ab in "${ab_cases[@]}"; do
       # shellcheck disable=SC2046 # the case's arguments split into words on purpose (no path holds a space)
-      step "before and after: $ab, $side, round $round" 30 "$out/.ab-$ab-$side-$round.md" "${program[@]}" bench $(ab_case "$ab") \
-        --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --csv "$out/.ab-$ab-$side-$round.csv"
+      step "before and after: $ab, ${ab_order[i]}" 30 "$out/.ab-$ab-$i.md" "${program[@]}" bench $(ab_case "$ab") \
+        --size "$size" --frames "$frames" --warmup "$warmup" --frame-limit 1000 --csv "$out/.ab-$ab-$i.csv"
     done
   done
 fi
@@ -275,27 +275,26 @@ for python in /usr/bin/python3 python3; do
 done
 
 ab_table() {  # the before-and-after runs' medians (the CSVs' 8th column, before any quoted field) as one table
-  local header="| case | mode | lights | view |" rule="|---|---|---:|---:|" run
-  for run in "${ab_order[@]}"; do header+=" $run |" rule+="---:|"; done
+  local header="| case | mode | lights | view |" rule="|---|---|---:|---:|" i
+  for i in "${!ab_order[@]}"; do header+=" ${ab_order[i]} |" rule+="---:|"; done
   echo "$header change |"
   echo "$rule---:|"
   for ab in "${ab_cases[@]}"; do
-    for run in "${ab_order[@]}"; do
-      local csv=$out/.ab-$ab-${run% *}-${run#* }.csv
-      [ -s "$csv" ] && awk -F, -v run="$run" -v ab="$ab" 'NR > 1 { print ab "\t" $1 "\t" $2 "\t" $3 "\t" run "\t" $8 }' "$csv"
+    for i in "${!ab_order[@]}"; do
+      [ -s "$out/.ab-$ab-$i.csv" ] && awk -F, -v ab="$ab" -v run="$i" -v side="${ab_order[i]% *}" \
+        'NR > 1 { print ab "\t" $1 "\t" $2 "\t" $3 "\t" run "\t" side "\t" $8 }' "$out/.ab-$ab-$i.csv"
     done
-  done | awk -F'\t' -v order="${ab_order[*]}" '
-    BEGIN { runs = split(order, words, " ") / 2; for (i = 1; i <= runs; ++i) column[i] = words[2 * i - 1] " " words[2 * i] }
-    { key = $1 "\t" $2 "\t" $3 "\t" $4; if (!(key in seen)) { seen[key] = 1; keys[++count] = key } median[key, $5] = $6 }
+  done | awk -F'\t' -v runs="${#ab_order[@]}" '
+    { key = $1 "\t" $2 "\t" $3 "\t" $4; if (!(key in seen)) { seen[key] = 1; keys[++count] = key } median[key, $5] = $7; side[$5] = $6 }
     END {
       for (k = 1; k <= count; ++k) {
         split(keys[k], part, "\t")
         line = "| " part[1] " | " part[2] " | " part[3] " | " part[4] " |"
         before = after = nb = na = 0
-        for (i = 1; i <= runs; ++i) {
-          value = ((keys[k], column[i]) in median) ? median[keys[k], column[i]] : "-"
+        for (i = 0; i < runs; ++i) {
+          value = ((keys[k], i) in median) ? median[keys[k], i] : "-"
           line = line " " value " |"
-          if (value ~ /^[0-9.]+$/) { if (column[i] ~ /^before/) { before += value; ++nb } else { after += value; ++na } }
+          if (value ~ /^[0-9.]+$/) { if (side[i] == "before") { before += value; ++nb } else { after += value; ++na } }
         }
         change = (nb && na && before > 0) ? sprintf("%+.1f%%", 100 * (after / na) / (before / nb) - 100) : "-"
         print line " " change " |"
@@ -349,7 +348,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
   done
   [[ " ${firsts[*]} " == *" visibility-buffer:bindless "* ]] ||
     echo "- visibility-buffer, material binding bindless: not run, the context lacks GL_ARB_bindless_texture"
-  if [ -x "$kit/before/bin/atrium" ]; then
+  if [ -x "$before_atrium" ]; then
     echo
     echo "## Before and after: $(sed -n 's/^before: //p' "$kit/VERSION" | cut -d' ' -f1-2) against $(head -n 1 "$kit/VERSION" | cut -d, -f1)"
     echo

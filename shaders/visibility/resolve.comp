@@ -50,6 +50,19 @@ void shade(ivec2 pixel, Instance instance, uint triangle, uint material) {
 shared uint s_materials[64 * kSamples];
 shared uint s_material_count;
 
+// The material of `visible`, evaluated in its turn of the loop over the
+// tile's `count` materials (its surface is undefined where `material` is
+// kNone). Every invocation that runs the loop reads the same material from
+// shared memory in a turn: the handles stay dynamically uniform.
+Surface material_in_its_turn(VisibleSurface visible, uint material, uint count) {
+  Surface surface;
+  for (uint k = 0u; k < count; ++k) {
+    uint m = s_materials[k];
+    if (material == m) surface = material_surface(visible, m);
+  }
+  return surface;
+}
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
@@ -80,7 +93,6 @@ void main() {
   uint material = kNone;
   // The surface before its material: what the triangle gives does not depend on it.
   VisibleSurface visible;
-  Surface surface;
   if (id != 0u) {
     uint triangle;
     Instance instance = visible_instance(id, triangle);
@@ -101,8 +113,6 @@ void main() {
   // Each surface of the pixel in turn: rebuilt once, its material evaluated
   // in the material's turn, lit after the turns. The light loop runs as many
   // times as the pixel shows surfaces, not once per material and surface.
-  // (Every invocation that runs the loop over the materials reads the same
-  // material from shared memory: the handles stay dynamically uniform.)
   for (uint rest = leaders; rest != 0u; rest &= rest - 1u) {
     int leader = findLSB(rest);
     uint material = s_slot_material[first + uint(leader)];
@@ -112,20 +122,12 @@ void main() {
     // in every invocation, and the second lookup (a binary search over the
     // units, one record) reads what the first brought into the cache.
     Instance instance = visible_instance(id_at(ids, leader), triangle);
-    VisibleSurface visible = visible_surface(pixel, instance, triangle);
-    Surface surface;
-    for (uint k = 0u; k < count; ++k) {
-      uint m = s_materials[k];
-      if (material == m) surface = material_surface(visible, m);
-    }
+    Surface surface = material_in_its_turn(visible_surface(pixel, instance, triangle), material, count);
     g_shaded_samples = group_mask(group_of, leader);
     light(pixel, surface);
   }
 #else
-  for (uint k = 0u; k < count; ++k) {
-    uint m = s_materials[k];
-    if (material == m) surface = material_surface(visible, m);
-  }
+  Surface surface = material_in_its_turn(visible, material, count);
   // Lit once, after every material: a tile that shows several runs the light
   // loop (the resolve's longest part) once, not once per material.
   if (material != kNone) light(pixel, surface);
