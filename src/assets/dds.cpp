@@ -5,6 +5,7 @@
 #include <cctype>
 
 #include "assets/byte_order.hpp"
+#include "base/mip_levels.hpp"
 
 namespace atrium::assets {
 namespace {
@@ -138,7 +139,7 @@ std::optional<DdsTexture> read_dds(std::span<const std::uint8_t> bytes, std::str
   } else {
     return fail("a DDS whose pixel format names no layout Atrium reads");
   }
-  mips = std::clamp<std::uint32_t>(mips, 1, 1 + static_cast<std::uint32_t>(std::bit_width(static_cast<unsigned>(std::max(width, height))) - 1));
+  mips = std::clamp<std::uint32_t>(mips, 1, static_cast<std::uint32_t>(mip_levels(width, height)));
 
   DdsTexture texture;
   texture.srgb = layout.srgb;

@@ -1,9 +1,9 @@
 #include "render/gpu_assets.hpp"
 
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 
+#include "base/mip_levels.hpp"
 #include "gfx/gl_features.hpp"
 #include "gfx/limits.hpp"
 
@@ -12,13 +12,10 @@ namespace {
 
 constexpr float kMaxAnisotropy = 8.0f;
 
-// A full mip chain's levels for an image of `size`.
-int mip_levels(glm::ivec2 size) { return 1 + static_cast<int>(std::floor(std::log2(std::max({size.x, size.y, 1})))); }
-
 GLenum image_format(assets::ColorSpace color_space) { return color_space == assets::ColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8; }
 
 gfx::Texture upload_image(const assets::Image& image, assets::ColorSpace color_space, std::size_t& bytes) {
-  const int levels = mip_levels({image.width, image.height});
+  const int levels = mip_levels(image.width, image.height);
   gfx::Texture texture = gfx::create_texture(GL_TEXTURE_2D);
   const GLenum format = image_format(color_space);
   glTextureStorage2D(texture.id(), levels, format, image.width, image.height);
@@ -104,7 +101,7 @@ std::vector<std::string> GpuAssets::upload(const assets::AssetManager& assets) {
   auto upload_held = [&](std::size_t t, const assets::TextureData& data, const assets::Image& image) {
     const glm::ivec2 size(image.width, image.height);
     glm::ivec2 held = size;
-    while (std::max(held.x, held.y) > 1 && !gfx::texture_fits(image_format(data.color_space), mip_levels(held), held)) held = glm::max(held / 2, 1);
+    while (std::max(held.x, held.y) > 1 && !gfx::texture_fits(image_format(data.color_space), mip_levels(held.x, held.y), held)) held = glm::max(held / 2, 1);
     if (held == size) return upload_image(image, data.color_space, texture_bytes_);
     const assets::Image smaller = assets::downscale_to_fit(image, std::max(held.x, held.y), data.color_space == assets::ColorSpace::Srgb);
     warnings.push_back(not_held(t, data, size, {smaller.width, smaller.height}, "downscaled to "));

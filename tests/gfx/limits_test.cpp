@@ -2,12 +2,12 @@
 // really applies (measured with a compute shader), the render size limit is
 // usable, the proxy tells what texture the context can hold, and memory
 // figures print the way refusal messages quote them.
-#include <cmath>
 #include <cstdio>
 
 #include <gmock/gmock.h>
 
 #include "base/format.hpp"
+#include "base/mip_levels.hpp"
 #include "gfx/limits.hpp"
 #include "support/compute_probe.hpp"
 #include "support/gl_test.hpp"
@@ -67,7 +67,7 @@ TEST_F(Limits, TheProxyTellsWhatTextureTheContextCanHoldWithoutAnError) {
   EXPECT_FALSE(texture_fits(GL_RGBA8, 1, {max_texture_size() * 2, 1}));
   const int most = max_texture_size();
   std::printf("%dx%d RGBA32F with its mips: %s\n", most, most,
-              texture_fits(GL_RGBA32F, 1 + static_cast<int>(std::log2(most)), {most, most}) ? "held" : "refused");
+              texture_fits(GL_RGBA32F, mip_levels(most, most), {most, most}) ? "held" : "refused");
 }
 
 TEST(FormatBytes, PicksTheUnitAUserReads) {
