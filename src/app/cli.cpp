@@ -49,6 +49,7 @@ int run_render(const CliOptions& options) {
   const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   World world(world_options(options));
   world.frame(0.0);
+  require_offered_view(world, options.debug_view);
   assets::write_png(out, world.renderer().read_output());
   world.renderer().settle();  // what the GPU reports a frame late: averages, list totals, pass timings
   const render::FrameStats& stats = world.renderer().stats();

@@ -299,10 +299,11 @@ const std::vector<OptionSpec>& option_table() {
       {"--debug-view", "V", kWindow | kRender,
        "show a debug view: " + render::debug_view_names() +
            ", or any resource the mode's frame graph declares viewable, by its name; `render --debug-view list` "
-           "prints the views the mode offers with what each shows",
+           "prints the views the mode offers with what each shows; a view the mode does not offer is refused",
        [](std::string_view value, CliOptions& o) {
          // Resource views are known once the mode's graph is built: the
-         // renderer refuses a name that is neither (exit 2, listing the views).
+         // renderer refuses a name that is neither, and render and the window
+         // a view the mode does not offer (exit 2, listing the mode's views).
          if (value.empty()) throw UsageError("--debug-view needs a view name (see `atrium render --debug-view list`)");
          o.debug_view = std::string(value);
        }},

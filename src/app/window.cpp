@@ -166,6 +166,7 @@ int run_window(const CliOptions& options) {
     const auto now = Clock::now();
     try {
       world.frame(std::chrono::duration<double>(now - last).count());
+      if (frames == 0) require_offered_view(world, options.debug_view);
       settled = {world.mode(), world.light_count(), world.registry().resource<RendererSettings>().technique_options};
     } catch (const gfx::ResourceLimitError& e) {
       step_back(world, settled, e);

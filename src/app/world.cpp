@@ -248,4 +248,10 @@ std::vector<std::string> World::modes() const {
   return techniques::mode_names(registry_.resource<RendererSettings>().technique_options);
 }
 
+void require_offered_view(World& world, const std::string& view) {
+  if (view.empty() || world.renderer().offers(view)) return;
+  throw render::UnknownViewError("mode " + world.mode() + " does not offer the debug view '" + view +
+                                 "' (its views: " + render::view_names(world.renderer().offered_views()) + ")");
+}
+
 }  // namespace atrium

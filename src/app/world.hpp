@@ -126,4 +126,11 @@ class World {
 // Checks a mode name against the technique table; throws InputError listing the modes.
 void require_known_mode(const std::string& mode);
 
+// After a frame: a debug view asked for by name on the command line that this
+// mode's frame does not offer (a view of another mode, msaa-edges without
+// MSAA) would draw flat grey without a word, so it is refused,
+// render::UnknownViewError (exit 2) naming the mode and the views it offers.
+// The window's keys may still switch to a mode without the view: grey there.
+void require_offered_view(World& world, const std::string& view);
+
 }  // namespace atrium

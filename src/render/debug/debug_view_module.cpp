@@ -35,11 +35,7 @@ FrameModule DebugViewModule::view_module() {
             selected_.reset();
             if (!settings.debug_view.empty()) {
               selected_ = select_view(settings.debug_view, build.graph);
-              if (!selected_) {
-                std::string names;
-                for (const OfferedView& view : offered_) names += (names.empty() ? "" : ", ") + view.name;
-                throw UnknownViewError("unknown debug view '" + settings.debug_view + "' (views: " + names + ")");
-              }
+              if (!selected_) throw UnknownViewError("unknown debug view '" + settings.debug_view + "' (views: " + view_names(offered_) + ")");
             }
             const auto* extent = build.registry.try_resource<SceneBounds>();
             view_frame_.reset();

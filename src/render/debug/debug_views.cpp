@@ -177,6 +177,12 @@ std::vector<OfferedView> offered_views(const FrameGraph& graph, const TechniqueO
   return views;
 }
 
+std::string view_names(const std::vector<OfferedView>& views) {
+  std::string names;
+  for (const OfferedView& view : views) names += (names.empty() ? "" : ", ") + view.name;
+  return names;
+}
+
 std::optional<SelectedView> select_view(std::string_view name, const FrameGraph& graph) {
   if (const DebugView* row = find_debug_view(name)) return SelectedView{row, resource_of(*row, graph)};
   const ResourceId id = graph.find(std::string(name));

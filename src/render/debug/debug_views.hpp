@@ -97,6 +97,8 @@ struct OfferedView {
 // The named views `graph` offers, then each of its viewable resources under
 // its own name (G-buffer targets are shown through the named views).
 [[nodiscard]] std::vector<OfferedView> offered_views(const FrameGraph& graph, const TechniqueOptions& options);
+// Their names, comma-separated: what a refused view's message lists.
+[[nodiscard]] std::string view_names(const std::vector<OfferedView>& views);
 
 // A view name that is neither a row nor a viewable resource of the frame's
 // graph: bad input, which the CLI reports with exit 2.
