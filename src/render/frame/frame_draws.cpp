@@ -1,6 +1,5 @@
 #include "render/frame/frame_draws.hpp"
 
-#include <optional>
 
 #include "assets/asset_manager.hpp"
 #include "components/frame_resources.hpp"
@@ -91,21 +90,31 @@ void FrameDraws::draw_first_pass(ecs::Registry& registry, const BatchDrawer& dra
     bind();
     return;
   }
+  // On the CPU, under the GPU path's step names: the depth read back and
+  // tested, the revealed draws with the lists they need, and in the frame of
+  // a cut the completed depth read and tested again.
   const auto& view = registry.resource<ViewState>();
-  std::optional<DepthPyramid> full_depth;
-  if (reveal_unhidden(registry, depth_reader_.read(depth, size), view) > 0) {
+  std::size_t revealed = 0;
+  {
+    const gfx::PassTimer::Step step("reveal");
+    revealed = reveal_unhidden(registry, depth_reader_.read(depth, size), view);
+  }
+  if (revealed > 0) {
+    const gfx::PassTimer::Step step("revealed draws");
     const auto& assets = registry.resource<assets::AssetManager>();
-    const DrawList revealed = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Revealed);
-    upload(revealed);
-    draw(revealed.opaque, source_);
+    const DrawList revealed_list = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Revealed);
+    upload(revealed_list);
+    draw(revealed_list.opaque, source_);
     list_ = build_draw_list(registry, assets, gpu_, view.view, DrawSelection::Shown);
     upload(list_);
-    if (view.cut) {
-      const gfx::PassTimer::Step step("remember");
-      full_depth = depth_reader_.read(depth, size);
-    }
   }
-  triangles_occluded_ = remember_shown(registry, view, full_depth ? &*full_depth : nullptr);
+  if (revealed == 0 || !view.cut) {
+    triangles_occluded_ = remember_shown(registry, view, nullptr);
+    return;
+  }
+  const gfx::PassTimer::Step step("remember");
+  const DepthPyramid full_depth = depth_reader_.read(depth, size);
+  triangles_occluded_ = remember_shown(registry, view, &full_depth);
 }
 
 FrameModule FrameDraws::occlusion_module() {
