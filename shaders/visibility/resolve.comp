@@ -12,8 +12,9 @@
 // uniform, as ARB_bindless_texture asks; each pixel is lit after the loop,
 // once. With MSAA each surface a pixel's samples show is shaded once, at the
 // pixel centre as a raster pass shades it, and stored to the samples that
-// show it (surface_groups in visibility.glsl); bindless takes a pixel's
-// surfaces one after the other, each a loop over the materials and one
+// show it (surface_groups in visibility.glsl): the first by the pixel's own
+// invocation, the others shared out over the work group
+// (extra_surfaces.glsl); bindless, each a loop over the materials and one
 // light loop.
 #ifdef BINDLESS_TEXTURES
 #extension GL_ARB_bindless_texture : require
@@ -27,6 +28,9 @@ layout(local_size_x = 8, local_size_y = 8) in;
 #include "common/cluster_shading.glsl"
 #include "common/lighting_targets.glsl"
 #include "visibility/visibility.glsl"
+#ifdef MSAA_SAMPLES
+#include "visibility/extra_surfaces.glsl"
+#endif
 
 Surface material_surface(VisibleSurface v, uint material) {
   return evaluate_material(material, v.flags, v.position, v.normal, v.tangent, v.uv, v.color, v.front_facing);
@@ -63,11 +67,28 @@ Surface material_in_its_turn(VisibleSurface visible, uint material, uint count) 
   return surface;
 }
 
+#ifdef MSAA_SAMPLES
+// Shades the triangle `id` names where `pixel` shows it, its `material`
+// evaluated in its turn of the tile's `count`. The instance is looked up
+// again, not kept from the grouping: kSamples instance records (36 words
+// each) held across the barriers would cost registers in every invocation,
+// and the second lookup (a binary search over the units, one record) reads
+// what the first brought into the cache.
+void shade_in_its_turn(ivec2 pixel, uint id, uint material, uint count) {
+  uint triangle;
+  Instance instance = visible_instance(id, triangle);
+  light(pixel, material_in_its_turn(visible_surface(pixel, instance, triangle), material, count));
+}
+#endif
+
 void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
   g_shaded_pixel = pixel;
   if (gl_LocalInvocationIndex == 0u) s_material_count = 0u;
+#ifdef MSAA_SAMPLES
+  clear_extra_surfaces();
+#endif
   uint first = gl_LocalInvocationIndex * uint(kSamples);
   uint background = 0u;  // the samples without geometry, a bit each
 #ifdef MSAA_SAMPLES
@@ -107,24 +128,28 @@ void main() {
   for (int i = 0; i < kSamples; ++i) {
     if (first_slot_of_its_material(first + uint(i))) s_materials[atomicAdd(s_material_count, 1u)] = s_slot_material[first + uint(i)];
   }
+#ifdef MSAA_SAMPLES
+  for (uint rest = leaders & (leaders - 1u); rest != 0u; rest &= rest - 1u) add_extra_surface(findLSB(rest), group_of);
+#endif
   barrier();
   uint count = s_material_count;
 #ifdef MSAA_SAMPLES
-  // Each surface of the pixel in turn: rebuilt once, its material evaluated
-  // in the material's turn, lit after the turns. The light loop runs as many
-  // times as the pixel shows surfaces, not once per material and surface.
-  for (uint rest = leaders; rest != 0u; rest &= rest - 1u) {
-    int leader = findLSB(rest);
-    uint material = s_slot_material[first + uint(leader)];
-    uint triangle;
-    // Looked up again, not kept from the grouping: kSamples instance
-    // records (36 words each) held across the barriers would cost registers
-    // in every invocation, and the second lookup (a binary search over the
-    // units, one record) reads what the first brought into the cache.
-    Instance instance = visible_instance(id_at(ids, leader), triangle);
-    Surface surface = material_in_its_turn(visible_surface(pixel, instance, triangle), material, count);
+  // The pixel's first surface here, the others shared out over the group
+  // (extra_surfaces.glsl): each rebuilt once, its material evaluated in the
+  // material's turn, lit after the turns. The light loop runs once a surface,
+  // not once per material and surface.
+  if (leaders != 0u) {
+    int leader = findLSB(leaders);
     g_shaded_samples = group_mask(group_of, leader);
-    light(pixel, surface);
+    shade_in_its_turn(pixel, id_at(ids, leader), s_slot_material[first + uint(leader)], count);
+  }
+  ivec2 origin = ivec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy);
+  for (uint k = gl_LocalInvocationIndex; k < s_extra_count; k += gl_WorkGroupSize.x * gl_WorkGroupSize.y) {
+    int leader;
+    g_shaded_pixel = extra_surface(k, origin, leader, g_shaded_samples);
+    ivec2 local = g_shaded_pixel - origin;
+    uint material = s_slot_material[uint(local.y * int(gl_WorkGroupSize.x) + local.x) * uint(kSamples) + uint(leader)];
+    shade_in_its_turn(g_shaded_pixel, fetch_sample(u_visibility, g_shaded_pixel, leader).r, material, count);
   }
 #else
   Surface surface = material_in_its_turn(visible, material, count);
@@ -153,18 +178,34 @@ void main() {
   uint index = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   uint tile = index < u_material_tiles[u_material].tile_count ? u_tiles[u_material_tiles[u_material].first_tile + index] : kNoTile;
   // Its work group is classify.comp's: one group a tile.
-  ivec2 pixel = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy) + ivec2(gl_LocalInvocationID.xy);
-  if (any(greaterThanEqual(pixel, ivec2(u_viewport_size)))) return;
+  ivec2 origin = ivec2(tile & 0xffffu, tile >> 16) * ivec2(gl_WorkGroupSize.xy);
+  ivec2 pixel = origin + ivec2(gl_LocalInvocationID.xy);
+  bool inside = all(lessThan(pixel, ivec2(u_viewport_size)));
   g_shaded_pixel = pixel;
 #ifdef MSAA_SAMPLES
-  uint ids[kSamples], group_of;
-  for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
-  for (uint rest = surface_groups(pixel, ids, u_material, group_of); rest != 0u; rest &= rest - 1u) {
-    int leader = findLSB(rest);
+  // Every invocation reaches the barriers (no early return): the pixel's first
+  // surface of this material here, the others shared out over the group.
+  clear_extra_surfaces();
+  barrier();
+  uint ids[kSamples], group_of = 0xffffffffu, leaders = 0u;
+  if (inside) {
+    for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
+    leaders = surface_groups(pixel, ids, u_material, group_of);
+  }
+  if (leaders != 0u) {
+    int leader = findLSB(leaders);
+    for (uint rest = leaders & (leaders - 1u); rest != 0u; rest &= rest - 1u) add_extra_surface(findLSB(rest), group_of);
     g_shaded_samples = group_mask(group_of, leader);
     shade_triangle(pixel, id_at(ids, leader));
   }
+  barrier();
+  for (uint k = gl_LocalInvocationIndex; k < s_extra_count; k += gl_WorkGroupSize.x * gl_WorkGroupSize.y) {
+    int leader;
+    g_shaded_pixel = extra_surface(k, origin, leader, g_shaded_samples);
+    shade_triangle(g_shaded_pixel, fetch_sample(u_visibility, g_shaded_pixel, leader).r);
+  }
 #else
+  if (!inside) return;
   // A loop of one sample measured 10-15% slower on llvmpipe: the pixel's one identifier, straight.
   uint id = texelFetch(u_visibility, pixel, 0).r;
   if (id != 0u) shade_triangle(pixel, id);
