@@ -1,6 +1,5 @@
 #include "render/frame/frame_draws.hpp"
 
-
 #include "assets/asset_manager.hpp"
 #include "components/frame_resources.hpp"
 #include "gfx/pass_timer.hpp"
