@@ -7,6 +7,22 @@
 #include "base/format.hpp"
 
 namespace atrium::assets {
+namespace {
+
+// 10000000, 0.5, -1: the shortest form that reads back the same.
+std::string compact(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.10g", v);
+  return text;
+}
+
+// A bound as a user reads it: 1,000,000,000 rather than 1e+09.
+std::string readable(double v) {
+  if (v >= 1000.0 && v < 1e15 && v == std::floor(v)) return with_commas(static_cast<std::uint64_t>(v));
+  return compact(v);
+}
+
+}  // namespace
 
 JsonPointer JsonPointer::operator/(std::string_view key) const {
   JsonPointer out = *this;
@@ -48,12 +64,6 @@ std::string JsonReader::describe(const Json& value) {
 
 std::string JsonReader::range_words(double min, double max) {
   if (min == -kLargest && max == kLargest) return "a number";
-  // 10000000, 0.5, -1: the shortest form that reads back the same.
-  auto compact = [](double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.10g", v);
-    return std::string(text);
-  };
   if (max == kLargest) return "a number from " + compact(min);
   return "a number from " + compact(min) + " to " + compact(max);
 }
@@ -81,7 +91,14 @@ bool JsonReader::boolean(const Json& value, const JsonPointer& at) const {
 double JsonReader::number(const Json& value, const JsonPointer& at, double min, double max, std::string_view expected) const {
   const double v = value.is_number() ? value.get<double>() : 0.0;
   if (!value.is_number() || !std::isfinite(v) || v < min || v > max) {
-    fail(at, "expected " + std::string(expected) + ", got " + describe(value));
+    // A phrase that names no range ("a positive number") gets the bound the
+    // number passed: "expected a positive number, got 1e+30" would puzzle.
+    std::string bound;
+    if (value.is_number() && std::isfinite(v) && expected.find(" from ") == std::string_view::npos) {
+      if (v > max) bound = " no greater than " + readable(max);
+      else if (v > 0.0 && v < min) bound = " no less than " + readable(min);
+    }
+    fail(at, "expected " + std::string(expected) + bound + ", got " + describe(value));
   }
   return v;
 }

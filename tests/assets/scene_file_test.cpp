@@ -144,6 +144,12 @@ TEST_F(SceneFile, MistakesNameThePathAndWhatWasExpected) {
   EXPECT_EQ(error(R"({"views": []})"), file + ": /views: expected 1 to 9 views, got 0");
   EXPECT_EQ(error(R"({"views": [{"name": "a"}]})"), file + ": /views/0/position: is missing (or give position_in_bounds)");
   EXPECT_EQ(error(R"({"exposure": 0})"), file + ": /exposure: expected a positive number, got 0");
+  // A number of the right sign past a bound says which bound.
+  EXPECT_EQ(error(R"({"lights": [{"position": [0, 0, 0], "intensity": 1e30}]})"),
+            file + ": /lights/0/intensity: expected a positive number no greater than 1,000,000,000, got 1e+30");
+  EXPECT_EQ(error(R"({"models": [{"builtin": "atrium", "scale": 1e-30}]})"),
+            file + ": /models/0/scale: expected a positive number no less than 1e-06, got 1e-30");
+  EXPECT_EQ(error(R"({"ambient": 2e6})"), file + ": /ambient: expected a non-negative number no greater than 1,000,000, got 2000000.0");
 }
 
 TEST_F(SceneFile, MissingModelSaysHowToFetchIt) {
