@@ -270,9 +270,11 @@ const std::vector<OptionSpec>& option_table() {
        "allows; the deferred modes shade per sample only on the edges they mark (debug view msaa-edges), the "
        "visibility buffer each surface a pixel's samples show once (debug view msaa-surfaces)",
        [](std::string_view value, CliOptions& o) {
-         const int samples = parse_number<int>("--msaa", value, 1, 8);
-         if ((samples & (samples - 1)) != 0) throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
-         o.technique_options.msaa = samples;
+         // Four values: one message for every other, 3 as 16 or "x".
+         if (value != "1" && value != "2" && value != "4" && value != "8") {
+           throw UsageError("--msaa expects 1, 2, 4 or 8 samples per pixel, got '" + std::string(value) + "'");
+         }
+         o.technique_options.msaa = value[0] - '0';
        }},
       {"--shadows", "K", kWindow | kRender | kCompare,
        "shadow maps for the K lights that matter most this frame (0, the default, is off; at most " +
