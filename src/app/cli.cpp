@@ -25,6 +25,16 @@ namespace atrium {
 
 namespace {
 
+// A file a command writes once its work is done: its folder must exist
+// before the work starts, so that a bench measuring for minutes does not fail
+// at the end (exit 2).
+void require_folder_of(const std::string& file) {
+  const std::filesystem::path path(file);
+  if (path.has_parent_path() && !std::filesystem::is_directory(path.parent_path())) {
+    throw InputError(file + ": the folder " + path.parent_path().string() + " does not exist");
+  }
+}
+
 // `render --debug-view list`: the views the mode's graph (with these options)
 // offers, one per line with what each shows.
 int list_debug_views(const CliOptions& options) {
@@ -43,9 +53,7 @@ int list_debug_views(const CliOptions& options) {
 int run_render(const CliOptions& options) {
   if (options.debug_view == "list") return list_debug_views(options);
   const std::filesystem::path out(options.out);
-  if (out.has_parent_path() && !std::filesystem::is_directory(out.parent_path())) {
-    throw InputError(options.out + ": the folder " + out.parent_path().string() + " does not exist");
-  }
+  require_folder_of(options.out);
   const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   World world(world_options(options));
   world.frame(0.0);
@@ -196,6 +204,9 @@ void plot(const std::string& csv, const std::string& png) {
 }
 
 int run_bench_command(const CliOptions& options) {
+  for (const std::string* file : {&options.md, &options.csv, &options.plot}) {
+    if (!file->empty()) require_folder_of(*file);
+  }
   const auto context = gfx::HeadlessContext::create({.api = options.gl_api});
   BenchOptions bench = options.bench;
   bench.light_radius = options.light_radius;
