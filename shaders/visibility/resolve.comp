@@ -129,7 +129,7 @@ void main() {
     if (first_slot_of_its_material(first + uint(i))) s_materials[atomicAdd(s_material_count, 1u)] = s_slot_material[first + uint(i)];
   }
 #ifdef MSAA_SAMPLES
-  for (uint rest = leaders & (leaders - 1u); rest != 0u; rest &= rest - 1u) add_extra_surface(findLSB(rest), group_of);
+  add_extra_surfaces(leaders, group_of);
 #endif
   barrier();
   uint count = s_material_count;
@@ -138,23 +138,11 @@ void main() {
   // (extra_surfaces.glsl): each rebuilt once, its material evaluated in the
   // material's turn, lit after the turns. The light loop runs once a surface,
   // not once per material and surface.
-  // One loop over both, so that the shading is compiled once (two calls
-  // inlined it twice: zink took 75 s instead of 45 to compile this variant).
   ivec2 origin = ivec2(gl_WorkGroupID.xy * gl_WorkGroupSize.xy);
-  bool own = leaders != 0u;
-  for (uint k = gl_LocalInvocationIndex; own || k < s_extra_count;) {
-    int leader;
-    uint id;
-    if (own) {
-      leader = findLSB(leaders);
-      g_shaded_samples = group_mask(group_of, leader);
-      id = id_at(ids, leader);
-      own = false;
-    } else {
-      g_shaded_pixel = extra_surface(k, origin, leader, g_shaded_samples);
-      id = fetch_sample(u_visibility, g_shaded_pixel, leader).r;
-      k += gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-    }
+  SurfaceWalk walk = walk_surfaces(leaders);
+  uint id;
+  int leader;
+  while (next_surface(walk, ids, leaders, group_of, origin, id, leader)) {
     ivec2 local = g_shaded_pixel - origin;
     uint material = s_slot_material[uint(local.y * int(gl_WorkGroupSize.x) + local.x) * uint(kSamples) + uint(leader)];
     shade_in_its_turn(g_shaded_pixel, id, material, count);
@@ -200,26 +188,13 @@ void main() {
     for (int i = 0; i < kSamples; ++i) ids[i] = fetch_sample(u_visibility, pixel, i).r;
     leaders = surface_groups(pixel, ids, u_material, group_of);
   }
-  for (uint rest = leaders & (leaders - 1u); rest != 0u; rest &= rest - 1u) add_extra_surface(findLSB(rest), group_of);
+  add_extra_surfaces(leaders, group_of);
   barrier();
-  // The pixel's first surface, then the list's: one loop, so that the
-  // shading is compiled once.
-  bool own = leaders != 0u;
-  for (uint k = gl_LocalInvocationIndex; own || k < s_extra_count;) {
-    uint id;
-    if (own) {
-      int leader = findLSB(leaders);
-      g_shaded_samples = group_mask(group_of, leader);
-      id = id_at(ids, leader);
-      own = false;
-    } else {
-      int leader;
-      g_shaded_pixel = extra_surface(k, origin, leader, g_shaded_samples);
-      id = fetch_sample(u_visibility, g_shaded_pixel, leader).r;
-      k += gl_WorkGroupSize.x * gl_WorkGroupSize.y;
-    }
-    shade_triangle(g_shaded_pixel, id);
-  }
+  // The pixel's first surface, then the list's.
+  SurfaceWalk walk = walk_surfaces(leaders);
+  uint id;
+  int leader;
+  while (next_surface(walk, ids, leaders, group_of, origin, id, leader)) shade_triangle(g_shaded_pixel, id);
 #else
   if (!inside) return;
   // A loop of one sample measured 10-15% slower on llvmpipe: the pixel's one identifier, straight.
