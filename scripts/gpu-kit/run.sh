@@ -138,8 +138,9 @@ if [ "$quick" = 0 ] && echo "$gl" | grep -qiE 'llvmpipe|softpipe|swiftshader|sof
 fi
 
 # Where shaders run, first: which of the GPU's SMs a compute dispatch and a
-# full-screen fragment pass reach (NVIDIA's GL_NV_shader_thread_group), and the
-# same arithmetic timed in each stage.
+# full-screen fragment pass reach (NVIDIA's GL_NV_shader_thread_group), the
+# same arithmetic timed in each stage, and small triangles rasterised by the
+# raster pipeline and by compute (what a compute geometry pass would gain).
 step "where shaders run" 60 "$out/.probe.txt" "$atrium" probe --size "$size"
 
 # Constant density: radii shrink as lights grow (4 m at 1,024 lights, 0.4 m at
@@ -331,7 +332,7 @@ section() {  # section TITLE FILE: a file's text under a heading, as a code bloc
     echo "- the driver logged GPU faults (dmesg, NVRM Xid): $(dmesg 2>/dev/null | grep "NVRM: Xid" | tail -n 3 | tr '\n' ' ')"
   fi
   [ -n "$plot_note" ] && echo "- $plot_note"
-  section "Where shaders run: SMs reached by compute and by fragment work" "$out/.probe.txt"
+  section "Where shaders run: SMs reached by compute and by fragment work; small triangles by the raster pipeline and by compute" "$out/.probe.txt"
   section "Every mode against forward, built-in scene (PSNR)" "$out/.compare-atrium.txt"
   section "Every mode against forward, Sponza (PSNR)" "$out/.compare-sponza.txt"
   for scene in built-in sponza grid; do

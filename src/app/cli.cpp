@@ -260,9 +260,10 @@ int run_probe(const CliOptions& options) {
     throw UsageError("--size " + std::to_string(options.size.x) + "x" + std::to_string(options.size.y) + " is larger than this context renders (" +
                      std::to_string(gfx::max_render_size().x) + "x" + std::to_string(gfx::max_render_size().y) + ")");
   }
-  const gfx::StageProbeResult result = gfx::run_stage_probe(options.size);
+  const gfx::StageProbeResult stages = gfx::run_stage_probe(options.size);
+  const gfx::RasterProbeResult raster = gfx::run_raster_probe(options.size);
   const std::string& renderer = context->info().renderer;
-  std::fputs((options.json ? format_probe_json(result, renderer) : format_probe_text(result, renderer)).c_str(), stdout);
+  std::fputs((options.json ? format_probe_json(stages, raster, renderer) : format_probe_text(stages, raster, renderer)).c_str(), stdout);
   return kExitOk;
 }
 

@@ -56,8 +56,9 @@ constexpr std::array kCommands{
                 "frame and pass times over modes, light counts and views (default: all modes, 10,50,110,1024 "
                 "lights, all views, 320x180, 30 frames, 5 warm-up)"},
     CommandSpec{Command::Probe, "probe", "atrium probe [options]",
-                "the GPU's SMs that compute and fragment shaders run on (NVIDIA's GL_NV_shader_thread_group), and the same "
-                "arithmetic timed in each stage (default 1920x1080)"},
+                "the GPU's SMs that compute and fragment shaders run on (NVIDIA's GL_NV_shader_thread_group), the same "
+                "arithmetic timed in each stage, and small triangles rasterised by the raster pipeline and by compute "
+                "(default 1920x1080)"},
 };
 
 const CommandSpec& command_spec(Command command) {

@@ -34,9 +34,30 @@ double busiest_share(const gfx::StageReach& reach) {
   return static_cast<double>(*std::max_element(reach.invocations.begin(), reach.invocations.end())) / static_cast<double>(total);
 }
 
+// Thousands of triangles a millisecond: millions a second.
+double mtriangles(const gfx::RasterProbeResult& r, double milliseconds) {
+  return milliseconds > 0 ? r.triangles / (milliseconds * 1e3) : 0.0;
+}
+
+std::string raster_text(const gfx::RasterProbeResult& r) {
+  std::string text;
+  append(text, "triangles    %u of about 2 pixels in %u layers over %dx%d (each layer passes the depth test), %s, median of %u runs\n",
+         r.triangles, r.layers, r.size.x, r.size.y,
+         r.identifiers ? "depth and identifier" : "depth and identifier by the raster pipeline, depth alone by compute (no 64-bit atomics)",
+         r.runs);
+  append(text, "raster       %.3f ms, %.0f Mtriangles/s\n", r.raster_ms, mtriangles(r, r.raster_ms));
+  append(text, "compute      %.3f ms, %.0f Mtriangles/s (a triangle an invocation)\n", r.compute_ms, mtriangles(r, r.compute_ms));
+  if (r.compute_ms > 0) append(text, "ratio        raster time / compute time: %.2f\n", r.raster_ms / r.compute_ms);
+  append(text, "agreement    %llu of %llu covered pixels differ in depth", static_cast<unsigned long long>(r.depth_mismatches),
+         static_cast<unsigned long long>(r.covered));
+  if (r.identifiers) append(text, ", %llu in identifier", static_cast<unsigned long long>(r.identifier_mismatches));
+  text += "\n";
+  return text;
+}
+
 }  // namespace
 
-std::string format_probe_text(const gfx::StageProbeResult& r, const std::string& renderer) {
+std::string format_probe_text(const gfx::StageProbeResult& r, const gfx::RasterProbeResult& raster, const std::string& renderer) {
   std::string text;
   append(text, "gpu          %s\n", renderer.c_str());
   if (r.sm_ids) {
@@ -55,10 +76,10 @@ std::string format_probe_text(const gfx::StageProbeResult& r, const std::string&
     text += "\n";
   }
   if (r.compute.milliseconds > 0) append(text, "ratio        fragment time / compute time: %.2f\n", r.fragment.milliseconds / r.compute.milliseconds);
-  return text;
+  return text + raster_text(raster);
 }
 
-std::string format_probe_json(const gfx::StageProbeResult& r, const std::string& renderer) {
+std::string format_probe_json(const gfx::StageProbeResult& r, const gfx::RasterProbeResult& raster, const std::string& renderer) {
   auto stage = [&](const gfx::StageReach& reach) {
     nlohmann::json j = {{"milliseconds", reach.milliseconds}, {"gflops", gflops(r, reach)}};
     if (r.sm_ids) {
@@ -78,7 +99,18 @@ std::string format_probe_json(const gfx::StageProbeResult& r, const std::string&
                       {"sm_count", r.sm_ids ? nlohmann::json(r.sm_count) : nlohmann::json(nullptr)},
                       {"compute", stage(r.compute)},
                       {"fragment", stage(r.fragment)},
-                      {"fragment_over_compute", r.compute.milliseconds > 0 ? r.fragment.milliseconds / r.compute.milliseconds : 0.0}};
+                      {"fragment_over_compute", r.compute.milliseconds > 0 ? r.fragment.milliseconds / r.compute.milliseconds : 0.0},
+                      {"raster", {{"size", {raster.size.x, raster.size.y}},
+                                  {"layers", raster.layers},
+                                  {"triangles", raster.triangles},
+                                  {"runs", raster.runs},
+                                  {"compute_identifiers", raster.identifiers},
+                                  {"raster_milliseconds", raster.raster_ms},
+                                  {"compute_milliseconds", raster.compute_ms},
+                                  {"raster_over_compute", raster.compute_ms > 0 ? raster.raster_ms / raster.compute_ms : 0.0},
+                                  {"covered_pixels", raster.covered},
+                                  {"depth_mismatches", raster.depth_mismatches},
+                                  {"identifier_mismatches", raster.identifier_mismatches}}}};
   return j.dump(2) + "\n";
 }
 

@@ -1,5 +1,6 @@
 // `atrium probe [--size WxH] [--json]`: which SMs a compute dispatch and a
-// full-screen fragment pass reach, and the same arithmetic timed in each
+// full-screen fragment pass reach, the same arithmetic timed in each, and
+// small triangles rasterised by the raster pipeline and by compute
 // (gfx/stage_probe.hpp). The GPU kit runs it first.
 #pragma once
 
@@ -9,7 +10,9 @@
 
 namespace atrium {
 
-[[nodiscard]] std::string format_probe_text(const gfx::StageProbeResult& result, const std::string& renderer);
-[[nodiscard]] std::string format_probe_json(const gfx::StageProbeResult& result, const std::string& renderer);
+[[nodiscard]] std::string format_probe_text(const gfx::StageProbeResult& stages, const gfx::RasterProbeResult& raster,
+                                            const std::string& renderer);
+[[nodiscard]] std::string format_probe_json(const gfx::StageProbeResult& stages, const gfx::RasterProbeResult& raster,
+                                            const std::string& renderer);
 
 }  // namespace atrium

@@ -1,6 +1,8 @@
 #include "gfx/stage_probe.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <functional>
 #include <stdexcept>
 #include <string_view>
@@ -41,6 +43,78 @@ std::vector<std::uint32_t> read_census(const Buffer& census) {
   return counts;
 }
 
+void require_full_tier(std::string_view probe) {
+  const GlFeatures& features = gl_features();
+  if (!features.full_tier()) {
+    throw std::runtime_error("the " + std::string(probe) + " needs compute shaders and storage buffers, and this context has " +
+                             features.missing_for_full_tier());
+  }
+}
+
+// `runs` runs of `run`, each timed on its own after `prepare` (untimed), after
+// one warm-up: the median.
+double median_time(PassTimer& timer, const char* name, std::uint32_t runs, const std::function<void()>& prepare,
+                   const std::function<void()>& run) {
+  prepare();
+  run();
+  std::vector<double> times;
+  for (std::uint32_t i = 0; i < runs; ++i) {
+    prepare();
+    timer.begin_frame();
+    timer.begin_pass(name);
+    run();
+    timer.end_pass();
+    timer.end_frame();
+    timer.wait_for_latest();
+    if (!timer.latest().empty()) times.push_back(timer.latest().back().milliseconds);
+  }
+  return median(times);
+}
+
+// The raster probe's sheets: a grid of 2x2-pixel cells, two triangles each,
+// per layer, in clip space. Vertices sit at a quarter and three eighths of a
+// pixel off the grid, so that no edge passes through a pixel centre and the
+// two sides' rules for ties never decide a pixel. Layers are planes tilted in
+// x, the farthest first, their vertices bumped off them.
+struct Sheets {
+  std::vector<float> positions;  // xyz a vertex
+  std::vector<std::uint32_t> indices;
+};
+
+Sheets make_sheets(glm::ivec2 size, std::uint32_t layers) {
+  const int cells_x = (size.x + 1) / 2, cells_y = (size.y + 1) / 2;
+  const auto row = static_cast<std::uint32_t>(cells_x + 1);
+  Sheets sheets;
+  for (std::uint32_t layer = 0; layer < layers; ++layer) {
+    const float base = 0.6f - 1.0f * static_cast<float>(layer) / static_cast<float>(std::max(layers, 2u) - 1u);
+    const auto first = static_cast<std::uint32_t>(sheets.positions.size() / 3);
+    for (int j = 0; j <= cells_y; ++j) {
+      for (int i = 0; i <= cells_x; ++i) {
+        const float x = (2.0f * static_cast<float>(i) + 0.25f) / static_cast<float>(size.x) * 2.0f - 1.0f;
+        const float y = (2.0f * static_cast<float>(j) + 0.375f) / static_cast<float>(size.y) * 2.0f - 1.0f;
+        // Each vertex a little off the plane, so that neighbouring triangles
+        // lie in planes of their own: a pixel given to the wrong one shows in depth.
+        const float bump = 0.02f * static_cast<float>((static_cast<unsigned>(i) * 73856093u ^ static_cast<unsigned>(j) * 19349663u) % 1024u) / 1024.0f;
+        sheets.positions.insert(sheets.positions.end(), {x, y, base + 0.05f * x + bump});
+      }
+    }
+    for (int j = 0; j < cells_y; ++j) {
+      for (int i = 0; i < cells_x; ++i) {
+        const std::uint32_t a = first + static_cast<std::uint32_t>(j) * row + static_cast<std::uint32_t>(i), b = a + 1, c = a + row, d = c + 1;
+        sheets.indices.insert(sheets.indices.end(), {a, b, d, a, d, c});
+      }
+    }
+  }
+  return sheets;
+}
+
+template <typename T>
+std::vector<T> read_texture(const Texture& texture, glm::ivec2 size, GLenum format, GLenum type) {
+  std::vector<T> texels(static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y));
+  glGetTextureImage(texture.id(), 0, format, type, static_cast<GLsizei>(texels.size() * sizeof(T)), texels.data());
+  return texels;
+}
+
 }  // namespace
 
 std::uint32_t StageReach::sms_reached() const {
@@ -50,11 +124,7 @@ std::uint32_t StageReach::sms_reached() const {
 double StageProbeResult::flops() const { return static_cast<double>(size.x) * size.y * iterations * 16.0; }
 
 StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations, std::uint32_t runs) {
-  const GlFeatures& features = gl_features();
-  if (!features.full_tier()) {
-    throw std::runtime_error("the stage probe needs compute shaders and storage buffers, and this context has " +
-                             features.missing_for_full_tier());
-  }
+  require_full_tier("stage probe");
   StageProbeResult result;
   result.size = size;
   result.iterations = iterations;
@@ -117,21 +187,104 @@ StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations, std:
   // The timing: one warm-up, then `runs` passes each timed on its own.
   PassTimer timer;
   result.timing = timer.method_name();
-  for (const Stage& stage : stages) {
-    stage.run();
-    std::vector<double> times;
-    for (std::uint32_t run = 0; run < result.runs; ++run) {
-      timer.begin_frame();
-      timer.begin_pass(stage.name);
-      stage.run();
-      timer.end_pass();
-      timer.end_frame();
-      timer.wait_for_latest();
-      if (!timer.latest().empty()) times.push_back(timer.latest().back().milliseconds);
-    }
-    stage.reach->milliseconds = median(times);
-  }
+  for (const Stage& stage : stages) stage.reach->milliseconds = median_time(timer, stage.name, result.runs, [] {}, stage.run);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return result;
+}
+
+RasterProbeResult run_raster_probe(glm::ivec2 size, std::uint32_t layers, std::uint32_t runs) {
+  require_full_tier("raster probe");
+  RasterProbeResult result;
+  result.size = size;
+  result.layers = std::max(layers, 1u);
+  result.runs = std::max(runs, 1u);
+  result.identifiers = epoxy_has_gl_extension("GL_NV_shader_atomic_int64") && epoxy_has_gl_extension("GL_ARB_gpu_shader_int64");
+  const Sheets sheets = make_sheets(size, result.layers);
+  result.triangles = static_cast<std::uint32_t>(sheets.indices.size() / 3);
+
+  ShaderProgram raster = ShaderProgram::load({"probe/raster.vert", "probe/raster.frag"});
+  ShaderProgram compute = ShaderProgram::load({"probe/raster.comp"}, result.identifiers ? std::vector<ShaderDefine>{{"IDENTIFIERS"}} : std::vector<ShaderDefine>{});
+  compute.set("u_triangles", result.triangles);
+  glProgramUniform2i(compute.id(), glGetUniformLocation(compute.id(), "u_size"), size.x, size.y);
+
+  Buffer positions = create_buffer();
+  glNamedBufferStorage(positions.id(), static_cast<GLsizeiptr>(sheets.positions.size() * sizeof(float)), sheets.positions.data(), 0);
+  Buffer indices = create_index_buffer();
+  glNamedBufferStorage(indices.id(), static_cast<GLsizeiptr>(sheets.indices.size() * sizeof(std::uint32_t)), sheets.indices.data(), 0);
+  VertexArray vertices = create_vertex_array();
+  glVertexArrayVertexBuffer(vertices.id(), 0, positions.id(), 0, 3 * sizeof(float));
+  glVertexArrayElementBuffer(vertices.id(), indices.id());
+  glEnableVertexArrayAttrib(vertices.id(), 0);
+  glVertexArrayAttribFormat(vertices.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(vertices.id(), 0, 0);
+
+  Texture ids = create_render_target(GL_R32UI, size.x, size.y);
+  Texture depth = create_render_target(GL_DEPTH_COMPONENT32F, size.x, size.y);
+  Framebuffer framebuffer = create_framebuffer();
+  glNamedFramebufferTexture(framebuffer.id(), GL_COLOR_ATTACHMENT0, ids.id(), 0);
+  glNamedFramebufferTexture(framebuffer.id(), GL_DEPTH_ATTACHMENT, depth.id(), 0);
+  require_complete(framebuffer.id(), "raster probe");
+  const std::size_t pixels = static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y);
+  const std::size_t texel_bytes = result.identifiers ? sizeof(std::uint64_t) : sizeof(std::uint32_t);
+  Buffer texels = create_buffer();
+  glNamedBufferStorage(texels.id(), static_cast<GLsizeiptr>(pixels * texel_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
+
+  auto clear_raster = [&] {
+    const GLuint no_id = 0;
+    const GLfloat far = 1.0f;
+    glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, &no_id);
+    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
+  };
+  auto run_raster = [&] {
+    raster.use();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+    glViewport(0, 0, size.x, size.y);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glDisable(GL_CULL_FACE);
+    glBindVertexArray(vertices.id());
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sheets.indices.size()), GL_UNSIGNED_INT, nullptr);
+  };
+  // Every texel's bits set: farther than any depth.
+  auto clear_compute = [&] {
+    const std::uint32_t all = 0xffffffffu;
+    glClearNamedBufferData(texels.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  };
+  auto run_compute = [&] {
+    compute.use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, indices.id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, texels.id());
+    const GLuint groups = (result.triangles + 63u) / 64u;
+    // A dispatch's x count is capped at 65,535 groups: the rest in y.
+    const GLuint x = std::min(groups, 65535u);
+    glDispatchCompute(x, (groups + x - 1u) / x, 1);
+  };
+  PassTimer timer;
+  result.timing = timer.method_name();
+  result.raster_ms = median_time(timer, "raster", result.runs, clear_raster, run_raster);
+  result.compute_ms = median_time(timer, "compute", result.runs, clear_compute, run_compute);
+  glDisable(GL_DEPTH_TEST);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  // The last run of each, pixel by pixel.
+  const auto raster_depth = read_texture<float>(depth, size, GL_DEPTH_COMPONENT, GL_FLOAT);
+  const auto raster_ids = read_texture<std::uint32_t>(ids, size, GL_RED_INTEGER, GL_UNSIGNED_INT);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::vector<std::uint32_t> words(pixels * texel_bytes / sizeof(std::uint32_t));
+  glGetNamedBufferSubData(texels.id(), 0, static_cast<GLsizeiptr>(words.size() * sizeof(std::uint32_t)), words.data());
+  for (std::size_t i = 0; i < pixels; ++i) {
+    // A 64-bit texel in little-endian words: the identifier low, the depth's bits high.
+    const std::uint32_t depth_bits = result.identifiers ? words[2 * i + 1] : words[i];
+    const bool raster_covered = raster_depth[i] < 1.0f, compute_covered = depth_bits != 0xffffffffu;
+    if (raster_covered) ++result.covered;
+    float compute_depth = 1.0f;
+    if (compute_covered) std::memcpy(&compute_depth, &depth_bits, sizeof compute_depth);
+    if (raster_covered != compute_covered || std::abs(raster_depth[i] - compute_depth) > 1e-5f) ++result.depth_mismatches;
+    if (result.identifiers && raster_covered && compute_covered && raster_ids[i] != words[2 * i]) ++result.identifier_mismatches;
+  }
   return result;
 }
 

@@ -1,7 +1,8 @@
 // Where the GPU runs each shader stage, and what that costs: one pass of
 // arithmetic per pixel run as a compute dispatch and as a full-screen fragment
 // pass, each counted per SM (NVIDIA's GL_NV_shader_thread_group: gl_SMIDNV,
-// GL_SM_COUNT_NV, where the driver has it) and timed. It exists because a
+// GL_SM_COUNT_NV, where the driver has it) and timed; and small triangles
+// rasterised by the raster pipeline and by compute. It exists because a
 // Hopper GPU runs fragment shaders on few of its SMs and compute on all of them
 // (docs/benchmarks.md): `atrium probe` measures that instead of assuming it.
 #pragma once
@@ -37,5 +38,33 @@ struct StageProbeResult {
 // Runs the probe on the current context, which must have compute shaders and
 // storage buffers (throws std::runtime_error naming what is missing).
 [[nodiscard]] StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations = 256, std::uint32_t runs = 5);
+
+// The visibility buffer's geometry work for triangles of about two pixels
+// (the density of the twelve-courtyard grid at 1080p), done twice: by the
+// raster pipeline (depth test, the identifier written) and by a compute
+// shader that rasterises a triangle an invocation (shaders/probe/raster.comp,
+// as Nanite does small triangles). Where the raster pipeline reaches few SMs,
+// this is what moving the geometry pass to compute would gain; the two
+// pictures are compared pixel by pixel, so the compute side is known to do
+// the same work.
+struct RasterProbeResult {
+  glm::ivec2 size{0};
+  std::uint32_t layers = 0;     // full-image sheets of triangles, drawn farthest first (each passes the depth test)
+  std::uint32_t triangles = 0;  // in all layers
+  std::uint32_t runs = 0;
+  // The compute side keeps depth and identifier in one 64-bit texel
+  // (GL_NV_shader_atomic_int64, as on NVIDIA); without it, depth alone.
+  bool identifiers = false;
+  std::string timing;
+  double raster_ms = 0, compute_ms = 0;  // medians of the runs
+  // Pixels where the two disagree: one covered and the other not, or the
+  // nearest depths apart by more than 1e-5; with identifiers, a different triangle.
+  std::uint64_t depth_mismatches = 0, identifier_mismatches = 0;
+  std::uint64_t covered = 0;  // pixels the raster side covered
+};
+
+// Runs it on the current context (compute shaders and storage buffers, as
+// run_stage_probe).
+[[nodiscard]] RasterProbeResult run_raster_probe(glm::ivec2 size, std::uint32_t layers = 3, std::uint32_t runs = 5);
 
 }  // namespace atrium::gfx
