@@ -35,24 +35,41 @@ double busiest_share(const gfx::StageReach& reach) {
 }
 
 // Thousands of triangles a millisecond: millions a second.
-double mtriangles(const gfx::RasterProbeResult& r, double milliseconds) {
-  return milliseconds > 0 ? r.triangles / (milliseconds * 1e3) : 0.0;
+double mtriangles(std::uint32_t triangles, double milliseconds) {
+  return milliseconds > 0 ? triangles / (milliseconds * 1e3) : 0.0;
 }
 
 std::string raster_text(const gfx::RasterProbeResult& r) {
   std::string text;
-  append(text, "triangles    %u of about 2 pixels in %u layers over %dx%d (each layer passes the depth test), %s, median of %u runs\n",
-         r.triangles, r.layers, r.size.x, r.size.y,
+  append(text, "triangles    %u layers over %dx%d, each passing the depth test; %s; median of %u runs\n", r.layers, r.size.x, r.size.y,
          r.identifiers ? "depth and identifier" : "depth and identifier by the raster pipeline, depth alone by compute (no 64-bit atomics)",
          r.runs);
-  append(text, "raster       %.3f ms, %.0f Mtriangles/s\n", r.raster_ms, mtriangles(r, r.raster_ms));
-  append(text, "compute      %.3f ms, %.0f Mtriangles/s (a triangle an invocation)\n", r.compute_ms, mtriangles(r, r.compute_ms));
-  if (r.compute_ms > 0) append(text, "ratio        raster time / compute time: %.2f\n", r.raster_ms / r.compute_ms);
-  append(text, "agreement    %llu of %llu covered pixels differ in depth", static_cast<unsigned long long>(r.depth_mismatches),
-         static_cast<unsigned long long>(r.covered));
-  if (r.identifiers) append(text, ", %llu in identifier", static_cast<unsigned long long>(r.identifier_mismatches));
-  text += "\n";
+  append(text, "  pixels a triangle  triangles   raster ms  Mtri/s   compute ms  Mtri/s   raster/compute  pixels that differ\n");
+  for (const gfx::RasterProbeRow& row : r.rows) {
+    append(text, "  %17.1f  %9u  %10.3f  %6.0f  %11.3f  %6.0f  %14.2f  %llu of %llu", row.triangle_pixels(), row.triangles, row.raster_ms,
+           mtriangles(row.triangles, row.raster_ms), row.compute_ms, mtriangles(row.triangles, row.compute_ms),
+           row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0, static_cast<unsigned long long>(row.depth_mismatches),
+           static_cast<unsigned long long>(row.covered));
+    if (r.identifiers) append(text, " (identifier: %llu)", static_cast<unsigned long long>(row.identifier_mismatches));
+    text += "\n";
+  }
   return text;
+}
+
+nlohmann::json raster_json(const gfx::RasterProbeResult& r) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const gfx::RasterProbeRow& row : r.rows) {
+    rows.push_back({{"cell_pixels", row.cell},
+                    {"triangle_pixels", row.triangle_pixels()},
+                    {"triangles", row.triangles},
+                    {"raster_milliseconds", row.raster_ms},
+                    {"compute_milliseconds", row.compute_ms},
+                    {"raster_over_compute", row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0},
+                    {"covered_pixels", row.covered},
+                    {"depth_mismatches", row.depth_mismatches},
+                    {"identifier_mismatches", row.identifier_mismatches}});
+  }
+  return {{"size", {r.size.x, r.size.y}}, {"layers", r.layers}, {"runs", r.runs}, {"compute_identifiers", r.identifiers}, {"sizes", rows}};
 }
 
 }  // namespace
@@ -100,17 +117,7 @@ std::string format_probe_json(const gfx::StageProbeResult& r, const gfx::RasterP
                       {"compute", stage(r.compute)},
                       {"fragment", stage(r.fragment)},
                       {"fragment_over_compute", r.compute.milliseconds > 0 ? r.fragment.milliseconds / r.compute.milliseconds : 0.0},
-                      {"raster", {{"size", {raster.size.x, raster.size.y}},
-                                  {"layers", raster.layers},
-                                  {"triangles", raster.triangles},
-                                  {"runs", raster.runs},
-                                  {"compute_identifiers", raster.identifiers},
-                                  {"raster_milliseconds", raster.raster_ms},
-                                  {"compute_milliseconds", raster.compute_ms},
-                                  {"raster_over_compute", raster.compute_ms > 0 ? raster.raster_ms / raster.compute_ms : 0.0},
-                                  {"covered_pixels", raster.covered},
-                                  {"depth_mismatches", raster.depth_mismatches},
-                                  {"identifier_mismatches", raster.identifier_mismatches}}}};
+                      {"raster", raster_json(raster)}};
   return j.dump(2) + "\n";
 }
 

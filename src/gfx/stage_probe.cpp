@@ -71,18 +71,18 @@ double median_time(PassTimer& timer, const char* name, std::uint32_t runs, const
   return median(times);
 }
 
-// The raster probe's sheets: a grid of 2x2-pixel cells, two triangles each,
-// per layer, in clip space. Vertices sit at a quarter and three eighths of a
-// pixel off the grid, so that no edge passes through a pixel centre and the
-// two sides' rules for ties never decide a pixel. Layers are planes tilted in
+// The raster probe's sheets: a grid of square cells `cell` pixels a side,
+// two triangles each, per layer, in clip space. Vertices sit at a quarter and
+// three eighths of a pixel off the grid, so that no edge passes through a
+// pixel centre and the two sides' rules for ties never decide a pixel. Layers are planes tilted in
 // x, the farthest first, their vertices bumped off them.
 struct Sheets {
   std::vector<float> positions;  // xyz a vertex
   std::vector<std::uint32_t> indices;
 };
 
-Sheets make_sheets(glm::ivec2 size, std::uint32_t layers) {
-  const int cells_x = (size.x + 1) / 2, cells_y = (size.y + 1) / 2;
+Sheets make_sheets(glm::ivec2 size, int cell, std::uint32_t layers) {
+  const int cells_x = (size.x + cell - 1) / cell, cells_y = (size.y + cell - 1) / cell;
   const auto row = static_cast<std::uint32_t>(cells_x + 1);
   Sheets sheets;
   for (std::uint32_t layer = 0; layer < layers; ++layer) {
@@ -90,8 +90,8 @@ Sheets make_sheets(glm::ivec2 size, std::uint32_t layers) {
     const auto first = static_cast<std::uint32_t>(sheets.positions.size() / 3);
     for (int j = 0; j <= cells_y; ++j) {
       for (int i = 0; i <= cells_x; ++i) {
-        const float x = (2.0f * static_cast<float>(i) + 0.25f) / static_cast<float>(size.x) * 2.0f - 1.0f;
-        const float y = (2.0f * static_cast<float>(j) + 0.375f) / static_cast<float>(size.y) * 2.0f - 1.0f;
+        const float x = (static_cast<float>(cell * i) + 0.25f) / static_cast<float>(size.x) * 2.0f - 1.0f;
+        const float y = (static_cast<float>(cell * j) + 0.375f) / static_cast<float>(size.y) * 2.0f - 1.0f;
         // Each vertex a little off the plane, so that neighbouring triangles
         // lie in planes of their own: a pixel given to the wrong one shows in depth.
         const float bump = 0.02f * static_cast<float>((static_cast<unsigned>(i) * 73856093u ^ static_cast<unsigned>(j) * 19349663u) % 1024u) / 1024.0f;
@@ -192,32 +192,17 @@ StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations, std:
   return result;
 }
 
-RasterProbeResult run_raster_probe(glm::ivec2 size, std::uint32_t layers, std::uint32_t runs) {
+RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, std::uint32_t layers, std::uint32_t runs) {
   require_full_tier("raster probe");
   RasterProbeResult result;
   result.size = size;
   result.layers = std::max(layers, 1u);
   result.runs = std::max(runs, 1u);
   result.identifiers = epoxy_has_gl_extension("GL_NV_shader_atomic_int64") && epoxy_has_gl_extension("GL_ARB_gpu_shader_int64");
-  const Sheets sheets = make_sheets(size, result.layers);
-  result.triangles = static_cast<std::uint32_t>(sheets.indices.size() / 3);
 
   ShaderProgram raster = ShaderProgram::load({"probe/raster.vert", "probe/raster.frag"});
   ShaderProgram compute = ShaderProgram::load({"probe/raster.comp"}, result.identifiers ? std::vector<ShaderDefine>{{"IDENTIFIERS"}} : std::vector<ShaderDefine>{});
-  compute.set("u_triangles", result.triangles);
   glProgramUniform2i(compute.id(), glGetUniformLocation(compute.id(), "u_size"), size.x, size.y);
-
-  Buffer positions = create_buffer();
-  glNamedBufferStorage(positions.id(), static_cast<GLsizeiptr>(sheets.positions.size() * sizeof(float)), sheets.positions.data(), 0);
-  Buffer indices = create_index_buffer();
-  glNamedBufferStorage(indices.id(), static_cast<GLsizeiptr>(sheets.indices.size() * sizeof(std::uint32_t)), sheets.indices.data(), 0);
-  VertexArray vertices = create_vertex_array();
-  glVertexArrayVertexBuffer(vertices.id(), 0, positions.id(), 0, 3 * sizeof(float));
-  glVertexArrayElementBuffer(vertices.id(), indices.id());
-  glEnableVertexArrayAttrib(vertices.id(), 0);
-  glVertexArrayAttribFormat(vertices.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(vertices.id(), 0, 0);
-
   Texture ids = create_render_target(GL_R32UI, size.x, size.y);
   Texture depth = create_render_target(GL_DEPTH_COMPONENT32F, size.x, size.y);
   Framebuffer framebuffer = create_framebuffer();
@@ -228,62 +213,81 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::uint32_t layers, std::u
   const std::size_t texel_bytes = result.identifiers ? sizeof(std::uint64_t) : sizeof(std::uint32_t);
   Buffer texels = create_buffer();
   glNamedBufferStorage(texels.id(), static_cast<GLsizeiptr>(pixels * texel_bytes), nullptr, GL_DYNAMIC_STORAGE_BIT);
-
-  auto clear_raster = [&] {
-    const GLuint no_id = 0;
-    const GLfloat far = 1.0f;
-    glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, &no_id);
-    glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
-  };
-  auto run_raster = [&] {
-    raster.use();
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-    glViewport(0, 0, size.x, size.y);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_CULL_FACE);
-    glBindVertexArray(vertices.id());
-    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sheets.indices.size()), GL_UNSIGNED_INT, nullptr);
-  };
-  // Every texel's bits set: farther than any depth.
-  auto clear_compute = [&] {
-    const std::uint32_t all = 0xffffffffu;
-    glClearNamedBufferData(texels.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  };
-  auto run_compute = [&] {
-    compute.use();
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, indices.id());
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, texels.id());
-    const GLuint groups = (result.triangles + 63u) / 64u;
-    // A dispatch's x count is capped at 65,535 groups: the rest in y.
-    const GLuint x = std::min(groups, 65535u);
-    glDispatchCompute(x, (groups + x - 1u) / x, 1);
-  };
   PassTimer timer;
   result.timing = timer.method_name();
-  result.raster_ms = median_time(timer, "raster", result.runs, clear_raster, run_raster);
-  result.compute_ms = median_time(timer, "compute", result.runs, clear_compute, run_compute);
-  glDisable(GL_DEPTH_TEST);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
-  // The last run of each, pixel by pixel.
-  const auto raster_depth = read_texture<float>(depth, size, GL_DEPTH_COMPONENT, GL_FLOAT);
-  const auto raster_ids = read_texture<std::uint32_t>(ids, size, GL_RED_INTEGER, GL_UNSIGNED_INT);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  std::vector<std::uint32_t> words(pixels * texel_bytes / sizeof(std::uint32_t));
-  glGetNamedBufferSubData(texels.id(), 0, static_cast<GLsizeiptr>(words.size() * sizeof(std::uint32_t)), words.data());
-  for (std::size_t i = 0; i < pixels; ++i) {
-    // A 64-bit texel in little-endian words: the identifier low, the depth's bits high.
-    const std::uint32_t depth_bits = result.identifiers ? words[2 * i + 1] : words[i];
-    const bool raster_covered = raster_depth[i] < 1.0f, compute_covered = depth_bits != 0xffffffffu;
-    if (raster_covered) ++result.covered;
-    float compute_depth = 1.0f;
-    if (compute_covered) std::memcpy(&compute_depth, &depth_bits, sizeof compute_depth);
-    if (raster_covered != compute_covered || std::abs(raster_depth[i] - compute_depth) > 1e-5f) ++result.depth_mismatches;
-    if (result.identifiers && raster_covered && compute_covered && raster_ids[i] != words[2 * i]) ++result.identifier_mismatches;
+  for (const int cell : cells) {
+    RasterProbeRow row;
+    row.cell = std::max(cell, 1);
+    const Sheets sheets = make_sheets(size, row.cell, result.layers);
+    row.triangles = static_cast<std::uint32_t>(sheets.indices.size() / 3);
+    compute.set("u_triangles", row.triangles);
+    Buffer positions = create_buffer();
+    glNamedBufferStorage(positions.id(), static_cast<GLsizeiptr>(sheets.positions.size() * sizeof(float)), sheets.positions.data(), 0);
+    Buffer indices = create_index_buffer();
+    glNamedBufferStorage(indices.id(), static_cast<GLsizeiptr>(sheets.indices.size() * sizeof(std::uint32_t)), sheets.indices.data(), 0);
+    VertexArray vertices = create_vertex_array();
+    glVertexArrayVertexBuffer(vertices.id(), 0, positions.id(), 0, 3 * sizeof(float));
+    glVertexArrayElementBuffer(vertices.id(), indices.id());
+    glEnableVertexArrayAttrib(vertices.id(), 0);
+    glVertexArrayAttribFormat(vertices.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(vertices.id(), 0, 0);
+
+    auto clear_raster = [&] {
+      const GLuint no_id = 0;
+      const GLfloat far = 1.0f;
+      glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, &no_id);
+      glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
+    };
+    auto run_raster = [&] {
+      raster.use();
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
+      glViewport(0, 0, size.x, size.y);
+      glEnable(GL_DEPTH_TEST);
+      glDepthFunc(GL_LESS);
+      glDepthMask(GL_TRUE);
+      glDisable(GL_CULL_FACE);
+      glBindVertexArray(vertices.id());
+      glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sheets.indices.size()), GL_UNSIGNED_INT, nullptr);
+    };
+    // Every texel's bits set: farther than any depth.
+    auto clear_compute = [&] {
+      const std::uint32_t all = 0xffffffffu;
+      glClearNamedBufferData(texels.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    };
+    auto run_compute = [&] {
+      compute.use();
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, positions.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, indices.id());
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, texels.id());
+      const GLuint groups = (row.triangles + 63u) / 64u;
+      // A dispatch's x count is capped at 65,535 groups: the rest in y.
+      const GLuint x = std::min(groups, 65535u);
+      glDispatchCompute(x, (groups + x - 1u) / x, 1);
+    };
+    row.raster_ms = median_time(timer, "raster", result.runs, clear_raster, run_raster);
+    row.compute_ms = median_time(timer, "compute", result.runs, clear_compute, run_compute);
+    glDisable(GL_DEPTH_TEST);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+    // The last run of each, pixel by pixel.
+    const auto raster_depth = read_texture<float>(depth, size, GL_DEPTH_COMPONENT, GL_FLOAT);
+    const auto raster_ids = read_texture<std::uint32_t>(ids, size, GL_RED_INTEGER, GL_UNSIGNED_INT);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    std::vector<std::uint32_t> words(pixels * texel_bytes / sizeof(std::uint32_t));
+    glGetNamedBufferSubData(texels.id(), 0, static_cast<GLsizeiptr>(words.size() * sizeof(std::uint32_t)), words.data());
+    for (std::size_t i = 0; i < pixels; ++i) {
+      // A 64-bit texel in little-endian words: the identifier low, the depth's bits high.
+      const std::uint32_t depth_bits = result.identifiers ? words[2 * i + 1] : words[i];
+      const bool raster_covered = raster_depth[i] < 1.0f, compute_covered = depth_bits != 0xffffffffu;
+      if (raster_covered) ++row.covered;
+      float compute_depth = 1.0f;
+      if (compute_covered) std::memcpy(&compute_depth, &depth_bits, sizeof compute_depth);
+      if (raster_covered != compute_covered || std::abs(raster_depth[i] - compute_depth) > 1e-5f) ++row.depth_mismatches;
+      if (result.identifiers && raster_covered && compute_covered && raster_ids[i] != words[2 * i]) ++row.identifier_mismatches;
+    }
+    result.rows.push_back(row);
   }
   return result;
 }

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -39,32 +40,43 @@ struct StageProbeResult {
 // storage buffers (throws std::runtime_error naming what is missing).
 [[nodiscard]] StageProbeResult run_stage_probe(glm::ivec2 size, std::uint32_t iterations = 256, std::uint32_t runs = 5);
 
-// The visibility buffer's geometry work for triangles of about two pixels
-// (the density of the twelve-courtyard grid at 1080p), done twice: by the
-// raster pipeline (depth test, the identifier written) and by a compute
+// The visibility buffer's geometry work for small triangles, done twice: by
+// the raster pipeline (depth test, the identifier written) and by a compute
 // shader that rasterises a triangle an invocation (shaders/probe/raster.comp,
 // as Nanite does small triangles). Where the raster pipeline reaches few SMs,
-// this is what moving the geometry pass to compute would gain; the two
-// pictures are compared pixel by pixel, so the compute side is known to do
-// the same work.
-struct RasterProbeResult {
-  glm::ivec2 size{0};
-  std::uint32_t layers = 0;     // full-image sheets of triangles, drawn farthest first (each passes the depth test)
+// this is what moving the geometry pass to compute would gain, and the
+// triangle sizes say up to where; the two pictures are compared pixel by
+// pixel, so the compute side is known to do the same work.
+struct RasterProbeRow {
+  int cell = 0;                 // square cells of this many pixels a side, two triangles each
   std::uint32_t triangles = 0;  // in all layers
-  std::uint32_t runs = 0;
-  // The compute side keeps depth and identifier in one 64-bit texel
-  // (GL_NV_shader_atomic_int64, as on NVIDIA); without it, depth alone.
-  bool identifiers = false;
-  std::string timing;
   double raster_ms = 0, compute_ms = 0;  // medians of the runs
   // Pixels where the two disagree: one covered and the other not, or the
   // nearest depths apart by more than 1e-5; with identifiers, a different triangle.
   std::uint64_t depth_mismatches = 0, identifier_mismatches = 0;
   std::uint64_t covered = 0;  // pixels the raster side covered
+  [[nodiscard]] double triangle_pixels() const { return cell * cell / 2.0; }
 };
+
+struct RasterProbeResult {
+  glm::ivec2 size{0};
+  std::uint32_t layers = 0;  // full-image sheets of triangles, drawn farthest first (each passes the depth test)
+  std::uint32_t runs = 0;
+  // The compute side keeps depth and identifier in one 64-bit texel
+  // (GL_NV_shader_atomic_int64, as on NVIDIA); without it, depth alone.
+  bool identifiers = false;
+  std::string timing;
+  std::vector<RasterProbeRow> rows;  // one per cell size, smallest first
+};
+
+// Cells of 2 pixels give triangles of 2 pixels, the twelve-courtyard grid's
+// density at 1080p; 16 pixels, 128-pixel triangles, where one invocation a
+// triangle is expected to lose.
+inline constexpr int kRasterProbeCells[] = {2, 4, 8, 16};
 
 // Runs it on the current context (compute shaders and storage buffers, as
 // run_stage_probe).
-[[nodiscard]] RasterProbeResult run_raster_probe(glm::ivec2 size, std::uint32_t layers = 3, std::uint32_t runs = 5);
+[[nodiscard]] RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells = kRasterProbeCells,
+                                                 std::uint32_t layers = 3, std::uint32_t runs = 5);
 
 }  // namespace atrium::gfx

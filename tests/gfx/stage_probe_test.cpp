@@ -45,18 +45,24 @@ TEST_F(StageProbe, CountsSmsOnlyWhereTheDriverNamesThem) {
 }
 
 TEST_F(StageProbe, ComputeRasterisesTheTrianglesTheRasterPipelineDraws) {
-  // An odd size too: the last column and row of cells reach past the image.
+  // An odd size and an odd cell too: the last column and row of cells reach past the image.
+  const int cells[] = {2, 5};
   for (const glm::ivec2 size : {glm::ivec2(160, 90), glm::ivec2(161, 91)}) {
     SCOPED_TRACE(std::to_string(size.x) + "x" + std::to_string(size.y));
-    const RasterProbeResult result = run_raster_probe(size, 3, 2);
-    const std::uint32_t cells = static_cast<std::uint32_t>(((size.x + 1) / 2) * ((size.y + 1) / 2));
-    EXPECT_EQ(result.triangles, 3u * 2u * cells);
+    const RasterProbeResult result = run_raster_probe(size, cells, 3, 2);
     EXPECT_EQ(result.layers, 3u);
-    EXPECT_EQ(result.covered, static_cast<std::uint64_t>(size.x) * static_cast<std::uint64_t>(size.y));
-    EXPECT_EQ(result.depth_mismatches, 0u);
-    EXPECT_EQ(result.identifier_mismatches, 0u);
-    EXPECT_GT(result.raster_ms, 0.0);
-    EXPECT_GT(result.compute_ms, 0.0);
+    ASSERT_EQ(result.rows.size(), 2u);
+    for (const RasterProbeRow& row : result.rows) {
+      SCOPED_TRACE("cells of " + std::to_string(row.cell) + " pixels");
+      const auto cells_in_image = static_cast<std::uint32_t>(((size.x + row.cell - 1) / row.cell) * ((size.y + row.cell - 1) / row.cell));
+      EXPECT_EQ(row.triangles, 3u * 2u * cells_in_image);
+      EXPECT_EQ(row.covered, static_cast<std::uint64_t>(size.x) * static_cast<std::uint64_t>(size.y));
+      EXPECT_EQ(row.depth_mismatches, 0u);
+      EXPECT_EQ(row.identifier_mismatches, 0u);
+      EXPECT_GT(row.raster_ms, 0.0);
+      EXPECT_GT(row.compute_ms, 0.0);
+    }
+    EXPECT_EQ(result.rows[1].cell, 5);
     // zink.raster_probe fails on this line: there the identifiers must be compared.
     if (!result.identifiers) std::printf("the compute side kept depth alone (no 64-bit atomics)\n");
   }
