@@ -260,10 +260,17 @@ int run_probe(const CliOptions& options) {
     throw UsageError("--size " + std::to_string(options.size.x) + "x" + std::to_string(options.size.y) + " is larger than this context renders (" +
                      std::to_string(gfx::max_render_size().x) + "x" + std::to_string(gfx::max_render_size().y) + ")");
   }
-  const gfx::StageProbeResult stages = gfx::run_stage_probe(options.size);
-  const gfx::RasterProbeResult raster = gfx::run_raster_probe(options.size);
   const std::string& renderer = context->info().renderer;
-  std::fputs((options.json ? format_probe_json(stages, raster, renderer) : format_probe_text(stages, raster, renderer)).c_str(), stdout);
+  const gfx::StageProbeResult stages = gfx::run_stage_probe(options.size);
+  if (options.json) {
+    std::fputs(format_probe_json(stages, gfx::run_raster_probe(options.size), renderer).c_str(), stdout);
+    return kExitOk;
+  }
+  // The SM counts out first: they are what a GPU session learns first, kept
+  // even if the raster probe then fails on a driver.
+  std::fputs(format_probe_text(stages, renderer).c_str(), stdout);
+  std::fflush(stdout);
+  std::fputs(format_raster_probe_text(gfx::run_raster_probe(options.size)).c_str(), stdout);
   return kExitOk;
 }
 

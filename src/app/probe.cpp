@@ -39,23 +39,6 @@ double mtriangles(std::uint32_t triangles, double milliseconds) {
   return milliseconds > 0 ? triangles / (milliseconds * 1e3) : 0.0;
 }
 
-std::string raster_text(const gfx::RasterProbeResult& r) {
-  std::string text;
-  append(text, "triangles    %u layers over %dx%d, each passing the depth test; %s; median of %u runs\n", r.layers, r.size.x, r.size.y,
-         r.identifiers ? "depth and identifier" : "depth and identifier by the raster pipeline, depth alone by compute (no 64-bit atomics)",
-         r.runs);
-  append(text, "  pixels a triangle  triangles   raster ms  Mtri/s   compute ms  Mtri/s   raster/compute  pixels that differ\n");
-  for (const gfx::RasterProbeRow& row : r.rows) {
-    append(text, "  %17.1f  %9u  %10.3f  %6.0f  %11.3f  %6.0f  %14.2f  %llu of %llu", row.triangle_pixels(), row.triangles, row.raster_ms,
-           mtriangles(row.triangles, row.raster_ms), row.compute_ms, mtriangles(row.triangles, row.compute_ms),
-           row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0, static_cast<unsigned long long>(row.depth_mismatches),
-           static_cast<unsigned long long>(row.covered));
-    if (r.identifiers) append(text, " (identifier: %llu)", static_cast<unsigned long long>(row.identifier_mismatches));
-    text += "\n";
-  }
-  return text;
-}
-
 nlohmann::json raster_json(const gfx::RasterProbeResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const gfx::RasterProbeRow& row : r.rows) {
@@ -74,7 +57,7 @@ nlohmann::json raster_json(const gfx::RasterProbeResult& r) {
 
 }  // namespace
 
-std::string format_probe_text(const gfx::StageProbeResult& r, const gfx::RasterProbeResult& raster, const std::string& renderer) {
+std::string format_probe_text(const gfx::StageProbeResult& r, const std::string& renderer) {
   std::string text;
   append(text, "gpu          %s\n", renderer.c_str());
   if (r.sm_ids) {
@@ -93,7 +76,24 @@ std::string format_probe_text(const gfx::StageProbeResult& r, const gfx::RasterP
     text += "\n";
   }
   if (r.compute.milliseconds > 0) append(text, "ratio        fragment time / compute time: %.2f\n", r.fragment.milliseconds / r.compute.milliseconds);
-  return text + raster_text(raster);
+  return text;
+}
+
+std::string format_raster_probe_text(const gfx::RasterProbeResult& r) {
+  std::string text;
+  append(text, "triangles    %u layers over %dx%d, each passing the depth test; %s; median of %u runs\n", r.layers, r.size.x, r.size.y,
+         r.identifiers ? "depth and identifier" : "depth and identifier by the raster pipeline, depth alone by compute (no 64-bit atomics)",
+         r.runs);
+  append(text, "  pixels a triangle  triangles   raster ms  Mtri/s   compute ms  Mtri/s   raster/compute  pixels that differ\n");
+  for (const gfx::RasterProbeRow& row : r.rows) {
+    append(text, "  %17.1f  %9u  %10.3f  %6.0f  %11.3f  %6.0f  %14.2f  %llu of %llu", row.triangle_pixels(), row.triangles, row.raster_ms,
+           mtriangles(row.triangles, row.raster_ms), row.compute_ms, mtriangles(row.triangles, row.compute_ms),
+           row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0, static_cast<unsigned long long>(row.depth_mismatches),
+           static_cast<unsigned long long>(row.covered));
+    if (r.identifiers) append(text, " (identifier: %llu)", static_cast<unsigned long long>(row.identifier_mismatches));
+    text += "\n";
+  }
+  return text;
 }
 
 std::string format_probe_json(const gfx::StageProbeResult& r, const gfx::RasterProbeResult& raster, const std::string& renderer) {

@@ -10,8 +10,8 @@
 
 namespace atrium {
 
-[[nodiscard]] std::string format_probe_text(const gfx::StageProbeResult& stages, const gfx::RasterProbeResult& raster,
-                                            const std::string& renderer);
+[[nodiscard]] std::string format_probe_text(const gfx::StageProbeResult& stages, const std::string& renderer);
+[[nodiscard]] std::string format_raster_probe_text(const gfx::RasterProbeResult& raster);
 [[nodiscard]] std::string format_probe_json(const gfx::StageProbeResult& stages, const gfx::RasterProbeResult& raster,
                                             const std::string& renderer);
 
