@@ -42,6 +42,10 @@ double mtriangles(std::uint32_t triangles, double milliseconds) {
 nlohmann::json raster_json(const gfx::RasterProbeResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const gfx::RasterProbeRow& row : r.rows) {
+    if (row.skipped) {
+      rows.push_back({{"cell_pixels", row.cell}, {"triangle_pixels", row.triangle_pixels()}, {"triangles", row.triangles}, {"skipped", true}});
+      continue;
+    }
     rows.push_back({{"cell_pixels", row.cell},
                     {"triangle_pixels", row.triangle_pixels()},
                     {"triangles", row.triangles},
@@ -86,6 +90,10 @@ std::string format_raster_probe_text(const gfx::RasterProbeResult& r) {
          r.runs);
   append(text, "  pixels a triangle  triangles   raster ms  Mtri/s   compute ms  Mtri/s   raster/compute  pixels that differ\n");
   for (const gfx::RasterProbeRow& row : r.rows) {
+    if (row.skipped) {
+      append(text, "  %17.1f  %9u  skipped: more than %u triangles\n", row.triangle_pixels(), row.triangles, gfx::kRasterProbeMaxTriangles);
+      continue;
+    }
     append(text, "  %17.1f  %9u  %10.3f  %6.0f  %11.3f  %6.0f  %14.2f  %llu of %llu", row.triangle_pixels(), row.triangles, row.raster_ms,
            mtriangles(row.triangles, row.raster_ms), row.compute_ms, mtriangles(row.triangles, row.compute_ms),
            row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0, static_cast<unsigned long long>(row.depth_mismatches),

@@ -55,6 +55,7 @@ struct RasterProbeRow {
   // nearest depths apart by more than 1e-5; with identifiers, a different triangle.
   std::uint64_t depth_mismatches = 0, identifier_mismatches = 0;
   std::uint64_t covered = 0;  // pixels the raster side covered
+  bool skipped = false;       // more than kRasterProbeMaxTriangles: not drawn
   [[nodiscard]] double triangle_pixels() const { return cell * cell / 2.0; }
 };
 
@@ -73,6 +74,9 @@ struct RasterProbeResult {
 // density at 1080p; 16 pixels, 128-pixel triangles, where one invocation a
 // triangle is expected to lose.
 inline constexpr int kRasterProbeCells[] = {2, 4, 8, 16};
+// A size's rows past this many triangles are skipped (at 4K, 2-pixel cells:
+// 12.4 million, a third of a gigabyte of vertices and indices on each side).
+inline constexpr std::uint32_t kRasterProbeMaxTriangles = 1u << 23;
 
 // Runs it on the current context (compute shaders and storage buffers, as
 // run_stage_probe).

@@ -68,5 +68,18 @@ TEST_F(StageProbe, ComputeRasterisesTheTrianglesTheRasterPipelineDraws) {
   }
 }
 
+TEST_F(StageProbe, RasterSizesOverItsTriangleCapAreSkippedNotDrawn) {
+  // 4096x2048 in 1-pixel cells: 50 million triangles, over the cap; 64-pixel cells are drawn.
+  const int cells[] = {1, 64};
+  const RasterProbeResult result = run_raster_probe({4096, 2048}, cells, 3, 1);
+  ASSERT_EQ(result.rows.size(), 2u);
+  EXPECT_TRUE(result.rows[0].skipped);
+  EXPECT_EQ(result.rows[0].triangles, 3u * 2u * 4096u * 2048u);
+  EXPECT_EQ(result.rows[0].covered, 0u);
+  EXPECT_FALSE(result.rows[1].skipped);
+  EXPECT_EQ(result.rows[1].depth_mismatches, 0u);
+  EXPECT_EQ(result.rows[1].covered, 4096u * 2048u);
+}
+
 }  // namespace
 }  // namespace atrium::gfx
