@@ -1,9 +1,11 @@
 #version 450 core
 // Raster probe, compute side (gfx/stage_probe.hpp): one invocation rasterises
 // one small triangle, as Nanite's software rasteriser does, into a storage
-// buffer of a texel per pixel by atomicMin. With IDENTIFIERS (64-bit atomics,
-// NV_shader_atomic_int64) a texel holds the depth's bits over the triangle's
-// index, the visibility buffer's content; without, the depth alone. Coverage
+// buffer of a texel per pixel by atomicMax: Atrium's depth is reversed
+// (gfx/depth.hpp, nearer is larger), and a positive float's bits order as the
+// float does. With IDENTIFIERS (64-bit atomics, NV_shader_atomic_int64) a
+// texel holds the depth's bits over the triangle's index, the visibility
+// buffer's content; without, the depth alone. Coverage
 // follows the raster pipeline's rules: vertices snapped to 1/256 pixel,
 // pixel centres tested, ties to top and left edges. Edge values are 32-bit:
 // triangles up to about 100 pixels a side.
@@ -13,7 +15,7 @@
 #endif
 layout(local_size_x = 64) in;
 
-layout(std430, binding = 0) readonly buffer Positions { float positions[]; };  // clip-space xyz a vertex
+layout(std430, binding = 0) readonly buffer Positions { float positions[]; };  // clip-space xyz a vertex, w = 1
 layout(std430, binding = 1) readonly buffer Indices { uint indices[]; };
 #ifdef IDENTIFIERS
 layout(std430, binding = 2) buffer Target { uint64_t texels[]; };
@@ -45,7 +47,7 @@ void main() {
     uint i = indices[3u * t + uint(k)];
     vec3 ndc = vec3(positions[3u * i], positions[3u * i + 1u], positions[3u * i + 2u]);
     v[k] = ivec2(round((ndc.xy * 0.5 + 0.5) * vec2(u_size) * 256.0));
-    z[k] = ndc.z * 0.5 + 0.5;
+    z[k] = ndc.z;  // clip-space z is the depth (glClipControl's GL_ZERO_TO_ONE, or clip.glsl's remap)
   }
   int area = edge(v[0], v[1], v[2]);
   if (area == 0) return;
@@ -67,9 +69,9 @@ void main() {
       float depth = (float(w0) * z[0] + float(w1) * z[1] + float(w2) * z[2]) / float(area);
       uint index = uint(y * u_size.x + x);
 #ifdef IDENTIFIERS
-      atomicMin(texels[index], uint64_t(floatBitsToUint(depth)) << 32 | uint64_t(t));
+      atomicMax(texels[index], uint64_t(floatBitsToUint(depth)) << 32 | uint64_t(t));
 #else
-      atomicMin(texels[index], floatBitsToUint(depth));
+      atomicMax(texels[index], floatBitsToUint(depth));
 #endif
     }
   }

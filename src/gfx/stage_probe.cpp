@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string_view>
 
+#include "gfx/depth.hpp"
 #include "gfx/gl_features.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/pass_timer.hpp"
@@ -74,8 +75,9 @@ double median_time(PassTimer& timer, const char* name, std::uint32_t runs, const
 // The raster probe's sheets: a grid of square cells `cell` pixels a side,
 // two triangles each, per layer, in clip space. Vertices sit at a quarter and
 // three eighths of a pixel off the grid, so that no edge passes through a
-// pixel centre and the two sides' rules for ties never decide a pixel. Layers are planes tilted in
-// x, the farthest first, their vertices bumped off them.
+// pixel centre and the two sides' rules for ties never decide a pixel.
+// Layers are planes tilted in x, their vertices bumped off them, the farthest
+// (the smallest depth: gfx/depth.hpp) first.
 struct Sheets {
   std::vector<float> positions;  // xyz a vertex
   std::vector<std::uint32_t> indices;
@@ -86,7 +88,7 @@ Sheets make_sheets(glm::ivec2 size, int cell, std::uint32_t layers) {
   const auto row = static_cast<std::uint32_t>(cells_x + 1);
   Sheets sheets;
   for (std::uint32_t layer = 0; layer < layers; ++layer) {
-    const float base = 0.6f - 1.0f * static_cast<float>(layer) / static_cast<float>(std::max(layers, 2u) - 1u);
+    const float base = 0.2f + 0.6f * static_cast<float>(layer) / static_cast<float>(std::max(layers, 2u) - 1u);
     const auto first = static_cast<std::uint32_t>(sheets.positions.size() / 3);
     for (int j = 0; j <= cells_y; ++j) {
       for (int i = 0; i <= cells_x; ++i) {
@@ -203,6 +205,9 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, 
   ShaderProgram raster = ShaderProgram::load({"probe/raster.vert", "probe/raster.frag"});
   ShaderProgram compute = ShaderProgram::load({"probe/raster.comp"}, result.identifiers ? std::vector<ShaderDefine>{{"IDENTIFIERS"}} : std::vector<ShaderDefine>{});
   glProgramUniform2i(compute.id(), glGetUniformLocation(compute.id(), "u_size"), size.x, size.y);
+  // The geometry pass's depth convention: reversed, nearer is larger.
+  static_assert(kDepthCloser == GL_GREATER && kDepthFar == 0.0f, "raster.comp keeps the largest depth, over texels cleared to 0");
+  use_depth_convention();
   Texture ids = create_render_target(GL_R32UI, size.x, size.y);
   Texture depth = create_render_target(GL_DEPTH_COMPONENT32F, size.x, size.y);
   Framebuffer framebuffer = create_framebuffer();
@@ -243,7 +248,7 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, 
 
     auto clear_raster = [&] {
       const GLuint no_id = 0;
-      const GLfloat far = 1.0f;
+      const GLfloat far = kDepthFar;
       glClearNamedFramebufferuiv(framebuffer.id(), GL_COLOR, 0, &no_id);
       glClearNamedFramebufferfv(framebuffer.id(), GL_DEPTH, 0, &far);
     };
@@ -252,16 +257,16 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, 
       glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
       glViewport(0, 0, size.x, size.y);
       glEnable(GL_DEPTH_TEST);
-      glDepthFunc(GL_LESS);
+      glDepthFunc(kDepthCloser);
       glDepthMask(GL_TRUE);
       glDisable(GL_CULL_FACE);
       glBindVertexArray(vertices.id());
       glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(sheets.indices.size()), GL_UNSIGNED_INT, nullptr);
     };
-    // Every texel's bits set: farther than any depth.
+    // Every texel 0: kDepthFar's bits, farther than any depth.
     auto clear_compute = [&] {
-      const std::uint32_t all = 0xffffffffu;
-      glClearNamedBufferData(texels.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &all);
+      const std::uint32_t far = 0;
+      glClearNamedBufferData(texels.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &far);
       glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     };
     auto run_compute = [&] {
@@ -288,10 +293,10 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, 
     for (std::size_t i = 0; i < pixels; ++i) {
       // A 64-bit texel in little-endian words: the identifier low, the depth's bits high.
       const std::uint32_t depth_bits = result.identifiers ? words[2 * i + 1] : words[i];
-      const bool raster_covered = raster_depth[i] < 1.0f, compute_covered = depth_bits != 0xffffffffu;
+      float compute_depth = kDepthFar;
+      std::memcpy(&compute_depth, &depth_bits, sizeof compute_depth);
+      const bool raster_covered = raster_depth[i] != kDepthFar, compute_covered = compute_depth != kDepthFar;
       if (raster_covered) ++row.covered;
-      float compute_depth = 1.0f;
-      if (compute_covered) std::memcpy(&compute_depth, &depth_bits, sizeof compute_depth);
       if (raster_covered != compute_covered || std::abs(raster_depth[i] - compute_depth) > 1e-5f) ++row.depth_mismatches;
       if (result.identifiers && raster_covered && compute_covered && raster_ids[i] != words[2 * i]) ++row.identifier_mismatches;
     }
