@@ -5,10 +5,10 @@
 // (gfx/depth.hpp, nearer is larger), and a positive float's bits order as the
 // float does. With IDENTIFIERS (64-bit atomics, NV_shader_atomic_int64) a
 // texel holds the depth's bits over the triangle's index, the visibility
-// buffer's content; without, the depth alone. Coverage
-// follows the raster pipeline's rules: vertices snapped to 1/256 pixel,
-// pixel centres tested, ties to top and left edges. Edge values are 32-bit:
-// triangles up to about 100 pixels a side.
+// buffer's content; without, the depth alone. Coverage follows the raster
+// pipeline's rules: vertices snapped to 1/256 pixel, pixel centres tested,
+// ties to top and left edges. Edge values are 32-bit: triangles up to about
+// 100 pixels a side.
 #ifdef IDENTIFIERS
 #extension GL_ARB_gpu_shader_int64 : require
 #extension GL_NV_shader_atomic_int64 : require

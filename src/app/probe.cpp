@@ -42,19 +42,18 @@ double mtriangles(std::uint32_t triangles, double milliseconds) {
 nlohmann::json raster_json(const gfx::RasterProbeResult& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const gfx::RasterProbeRow& row : r.rows) {
+    nlohmann::json entry = {{"cell_pixels", row.cell}, {"triangle_pixels", row.triangle_pixels()}, {"triangles", row.triangles}};
     if (row.skipped) {
-      rows.push_back({{"cell_pixels", row.cell}, {"triangle_pixels", row.triangle_pixels()}, {"triangles", row.triangles}, {"skipped", true}});
-      continue;
-    }
-    rows.push_back({{"cell_pixels", row.cell},
-                    {"triangle_pixels", row.triangle_pixels()},
-                    {"triangles", row.triangles},
-                    {"raster_milliseconds", row.raster_ms},
+      entry["skipped"] = true;
+    } else {
+      entry.update({{"raster_milliseconds", row.raster_ms},
                     {"compute_milliseconds", row.compute_ms},
                     {"raster_over_compute", row.compute_ms > 0 ? row.raster_ms / row.compute_ms : 0.0},
                     {"covered_pixels", row.covered},
                     {"depth_mismatches", row.depth_mismatches},
                     {"identifier_mismatches", row.identifier_mismatches}});
+    }
+    rows.push_back(std::move(entry));
   }
   return {{"size", {r.size.x, r.size.y}}, {"layers", r.layers}, {"runs", r.runs}, {"compute_identifiers", r.identifiers}, {"sizes", rows}};
 }

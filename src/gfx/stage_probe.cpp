@@ -226,14 +226,13 @@ RasterProbeResult run_raster_probe(glm::ivec2 size, std::span<const int> cells, 
     row.cell = std::max(cell, 1);
     const std::uint64_t triangles = std::uint64_t{result.layers} * 2u * static_cast<std::uint64_t>((size.x + row.cell - 1) / row.cell) *
                                     static_cast<std::uint64_t>((size.y + row.cell - 1) / row.cell);
+    row.triangles = static_cast<std::uint32_t>(std::min<std::uint64_t>(triangles, 0xffffffffu));
     if (triangles > kRasterProbeMaxTriangles) {
-      row.triangles = static_cast<std::uint32_t>(std::min<std::uint64_t>(triangles, 0xffffffffu));
       row.skipped = true;
       result.rows.push_back(row);
       continue;
     }
     const Sheets sheets = make_sheets(size, row.cell, result.layers);
-    row.triangles = static_cast<std::uint32_t>(sheets.indices.size() / 3);
     compute.set("u_triangles", row.triangles);
     Buffer positions = create_buffer();
     glNamedBufferStorage(positions.id(), static_cast<GLsizeiptr>(sheets.positions.size() * sizeof(float)), sheets.positions.data(), 0);
