@@ -10,8 +10,11 @@ namespace atrium {
 
 // The six planes (xyz: inward normal, w: offset) of the frustum of a
 // view-projection matrix with clip z in [0, 1], either depth direction.
+// Planes from a matrix are not unit length; each normal's length is kept for
+// the sphere test, which frustum culling runs once per meshlet in view.
 struct Frustum {
   std::array<glm::vec4, 6> planes;
+  std::array<float, 6> lengths;
 };
 
 [[nodiscard]] inline Frustum frustum_of(const glm::mat4& m) {
@@ -21,7 +24,9 @@ struct Frustum {
   const glm::vec4 z{m[0][2], m[1][2], m[2][2], m[3][2]};
   const glm::vec4 w{m[0][3], m[1][3], m[2][3], m[3][3]};
   // -w <= x, y <= w; 0 <= z <= w holds for both depth directions.
-  return {{w + x, w - x, w + y, w - y, z, w - z}};
+  Frustum frustum{{w + x, w - x, w + y, w - y, z, w - z}, {}};
+  for (std::size_t i = 0; i < frustum.planes.size(); ++i) frustum.lengths[i] = glm::length(glm::vec3(frustum.planes[i]));
+  return frustum;
 }
 
 // False only when the box lies wholly outside one plane; boxes that cross a
@@ -36,11 +41,22 @@ struct Frustum {
   return true;
 }
 
+// True only when the box lies wholly inside every plane: then so does all it
+// holds, and its parts need no test of their own. Non-finite planes contain nothing.
+[[nodiscard]] inline bool contains(const Frustum& frustum, glm::vec3 min, glm::vec3 max) {
+  for (const glm::vec4& plane : frustum.planes) {
+    // The box's corner nearest along the plane's normal.
+    const glm::vec3 corner{plane.x >= 0.0f ? min.x : max.x, plane.y >= 0.0f ? min.y : max.y, plane.z >= 0.0f ? min.z : max.z};
+    if (!(glm::dot(glm::vec3(plane), corner) + plane.w >= 0.0f)) return false;
+  }
+  return true;
+}
+
 // The same for a sphere.
 [[nodiscard]] inline bool intersects(const Frustum& frustum, glm::vec3 center, float radius) {
-  for (const glm::vec4& plane : frustum.planes) {
-    // Planes from a matrix are not unit length: scale the radius with them.
-    if (glm::dot(glm::vec3(plane), center) + plane.w < -radius * glm::length(glm::vec3(plane))) return false;
+  for (std::size_t i = 0; i < frustum.planes.size(); ++i) {
+    const glm::vec4& plane = frustum.planes[i];
+    if (glm::dot(glm::vec3(plane), center) + plane.w < -radius * frustum.lengths[i]) return false;
   }
   return true;
 }

@@ -9,7 +9,10 @@
 namespace atrium {
 
 bool faces_away(const MeshletBounds& meshlet, glm::vec3 eye) {
-  return glm::dot(glm::normalize(meshlet.cone_apex - eye), meshlet.cone_axis) >= meshlet.cone_cutoff;
+  // dot(normalize(d), axis) >= cutoff without the division; an eye on the apex cannot tell.
+  const glm::vec3 d = meshlet.cone_apex - eye;
+  const float distance = glm::length(d);
+  return distance > 0.0f && glm::dot(d, meshlet.cone_axis) >= meshlet.cone_cutoff * distance;
 }
 
 namespace {
@@ -49,6 +52,8 @@ void update_frustum_culling(ecs::Registry& registry) {
     for (std::uint32_t p = 0; p < bounds.primitives.size(); ++p) {
       const Box& box = bounds.primitives[p];
       bool in_view = any_in_view && !box.empty && (!culling || intersects(frustum, box.min, box.max));
+      // A box wholly in view holds meshlets wholly in view: only their cones are left to test.
+      const bool wholly_in_view = in_view && culling && contains(frustum, box.min, box.max);
       const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
       bool meshlet_in_view = false;
       for (std::uint32_t m = first; m < last; ++m) {
@@ -56,7 +61,7 @@ void update_frustum_culling(ecs::Registry& registry) {
         bool visible = in_view;
         if (visible && culling) {
           ++stats.meshlets;
-          visible = intersects(frustum, world.center, world.radius) && !faces_away(world, view.camera_position);
+          visible = (wholly_in_view || intersects(frustum, world.center, world.radius)) && !faces_away(world, view.camera_position);
           stats.meshlets_visible += visible;
         }
         mark_in_view(visibility.meshlets[m], visible);

@@ -1,4 +1,5 @@
-// Frustum culling: the plane test against boxes with known answers, and in the
+// Frustum culling: the plane tests against boxes, spheres and normal cones with
+// known answers, and in the
 // running engine that culling changes no pixel of any view or mode, drops what
 // the camera cannot see, follows entities that move, and keeps draw calls from
 // growing with copies of the scene; meshlets facing away are dropped only where
@@ -43,10 +44,47 @@ TEST(FrustumOf, KeepsBoxesInsideOrCrossingAndDropsBoxesOutside) {
   EXPECT_FALSE(intersects(frustum, {-1, -1, -300}, {1, 1, -200})) << "beyond the far plane";
 }
 
+// What lies wholly inside needs no test of its parts; what crosses a plane does.
+TEST(FrustumOf, ContainsOnlyBoxesWhollyInside) {
+  const Frustum frustum = test_frustum();
+  EXPECT_TRUE(contains(frustum, {-1, -1, -11}, {1, 1, -9})) << "straight ahead";
+  EXPECT_FALSE(contains(frustum, {9, -1, -11}, {12, 1, -9})) << "crossing the right plane (x = -z)";
+  EXPECT_FALSE(contains(frustum, {-1, -1, -1}, {1, 1, 1})) << "around the camera";
+  EXPECT_FALSE(contains(frustum, {-1, -1, -101}, {1, 1, -99})) << "crossing the far plane";
+  EXPECT_FALSE(contains(frustum, {-1, -1, 5}, {1, 1, 7})) << "behind";
+}
+
+TEST(FrustumOf, SpheresAreTestedAtTheirDistanceFromEachPlane) {
+  const Frustum frustum = test_frustum();
+  // The right plane is x = -z; (12, 0, -10) lies 2 / sqrt(2) = 1.41 outside it.
+  EXPECT_FALSE(intersects(frustum, glm::vec3{12, 0, -10}, 1.4f));
+  EXPECT_TRUE(intersects(frustum, glm::vec3{12, 0, -10}, 1.42f));
+  EXPECT_FALSE(intersects(frustum, glm::vec3{0, 0, 0.5f}, 0.55f)) << "behind the near plane";
+  EXPECT_TRUE(intersects(frustum, glm::vec3{0, 0, 0.5f}, 0.65f));
+}
+
 TEST(FrustumOf, ANonFiniteMatrixKeepsEveryBox) {
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const Frustum frustum = frustum_of(glm::mat4(nan));
   EXPECT_TRUE(intersects(frustum, {-1, -1, 5}, {1, 1, 7}));
+  EXPECT_TRUE(intersects(frustum, glm::vec3{0, 0, 5}, 1.0f));
+  EXPECT_FALSE(contains(frustum, {-1, -1, 5}, {1, 1, 7})) << "contains nothing, so every part is tested";
+}
+
+// A cone of triangles facing +Z whose normals spread 60 degrees from its axis:
+// it faces away from an eye in front of it only beyond the cone's back (meshoptimizer's cutoff).
+TEST(FacesAway, OnlyFromBehindTheConeAndNeverFromItsApex) {
+  MeshletBounds meshlet;
+  meshlet.cone_apex = {0, 0, 0};
+  meshlet.cone_axis = {0, 0, 1};
+  meshlet.cone_cutoff = std::sin(glm::radians(60.0f));
+  EXPECT_TRUE(faces_away(meshlet, {0, 0, -5})) << "straight behind";
+  EXPECT_TRUE(faces_away(meshlet, {1, 0, -5})) << "behind, within the cutoff";
+  EXPECT_FALSE(faces_away(meshlet, {5, 0, -1})) << "beside";
+  EXPECT_FALSE(faces_away(meshlet, {0, 0, 5})) << "in front";
+  EXPECT_FALSE(faces_away(meshlet, {0, 0, 0})) << "on the apex";
+  meshlet.cone_cutoff = 2.0f;
+  EXPECT_FALSE(faces_away(meshlet, {0, 0, -5})) << "a cone that cannot tell";
 }
 
 using FrustumCulling = testing::GlTest;
