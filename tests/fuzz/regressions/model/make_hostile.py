@@ -30,6 +30,13 @@ struct.pack_into("<I", huge, at + 1, 0x3FFFFFFF)  # arrayLength: 8 GiB of double
 wrong = bytearray(fbx)
 struct.pack_into("<I", wrong, at + 9, 0xFFFFFFF0)  # compressedLength past the file's end
 (here / "fbx-array-past-end.fbx").write_bytes(bytes(wrong))
+# libassimp 5.2.5 takes a file for binary FBX by its first 18 bytes; the 19th
+# and 20th (two spaces in every exporter's files) may be anything. Behind
+# them, the Vertices array's zlib header broken: the stream does not inflate.
+loose = bytearray(fbx)
+loose[18:20] = b"XX"
+struct.pack_into("<BB", loose, at + 13, 0xFF, 0xFF)
+(here / "fbx-loose-magic-array-does-not-inflate.fbx").write_bytes(bytes(loose))
 
 # OBJ (assimp's) naming material libraries that are missing, a directory
 # (FuzzRegressions makes 'folder.mtl' one), outside the folder, or its own MTL
