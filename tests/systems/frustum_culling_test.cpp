@@ -1,9 +1,9 @@
-// Frustum culling: the plane tests against boxes, spheres and normal cones with
-// known answers, and in the
-// running engine that culling changes no pixel of any view or mode, drops what
-// the camera cannot see, follows entities that move, and keeps draw calls from
-// growing with copies of the scene; meshlets facing away are dropped only where
-// the transform keeps their normal cones true (not mirrored, not stretched).
+// Frustum culling: the plane tests against boxes, spheres and normal cones
+// with known answers, and in the running engine that culling changes no pixel
+// of any view or mode, drops what the camera cannot see, follows entities that
+// move, and keeps draw calls from growing with copies of the scene; meshlets
+// facing away are dropped only where the transform keeps their normal cones
+// true (not mirrored, not stretched).
 #include "app/cli.hpp"
 #include "systems/frustum_culling.hpp"
 
@@ -71,8 +71,9 @@ TEST(FrustumOf, ANonFiniteMatrixKeepsEveryBox) {
   EXPECT_FALSE(contains(frustum, {-1, -1, 5}, {1, 1, 7})) << "contains nothing, so every part is tested";
 }
 
-// A cone of triangles facing +Z whose normals spread 60 degrees from its axis:
-// it faces away from an eye in front of it only beyond the cone's back (meshoptimizer's cutoff).
+// Triangles facing +Z whose normals spread up to 60 degrees from the cone's
+// axis (meshoptimizer's cutoff is the sine of the spread): every one faces
+// away only from an eye behind them, within the cutoff of the axis.
 TEST(FacesAway, OnlyFromBehindTheConeAndNeverFromItsApex) {
   MeshletBounds meshlet;
   meshlet.cone_apex = {0, 0, 0};
