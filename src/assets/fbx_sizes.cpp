@@ -18,13 +18,28 @@ constexpr char kMagic[] = "Kaydara FBX Binary";
 // zlib's deflate expands at most 1032:1 (RFC 1951 blocks of 258-byte matches).
 constexpr std::uint64_t kInflateRatio = 1032;
 
-// The size of one value of the arrays libassimp inflates (float, int,
-// double, long); 0 for every other type.
-std::size_t inflated_size(std::uint8_t type) {
+// How libassimp's tokenizer reads a property of each type code: one value of
+// `size` bytes, a string or raw block after its 32-bit length, an array of
+// `size`-byte values after its three-word header (size 0: byte arrays, which
+// no reader of libassimp's inflates), or, for 'b', the rest of its node's
+// properties. A type it does not know stops the tokenizer.
+struct PropertyLayout {
+  enum Kind { kUnknown, kValue, kSized, kArray, kRestOfNode } kind = kUnknown;
+  std::size_t size = 0;
+};
+
+PropertyLayout layout_of(std::uint8_t type) {
   switch (type) {
-    case 'f': case 'i': return 4;
-    case 'd': case 'l': return 8;
-    default: return 0;
+    case 'C': return {PropertyLayout::kValue, 1};
+    case 'Y': return {PropertyLayout::kValue, 2};
+    case 'I': case 'F': return {PropertyLayout::kValue, 4};
+    case 'D': case 'L': return {PropertyLayout::kValue, 8};
+    case 'S': case 'R': return {PropertyLayout::kSized, 0};
+    case 'c': return {PropertyLayout::kArray, 0};
+    case 'f': case 'i': return {PropertyLayout::kArray, 4};
+    case 'd': case 'l': return {PropertyLayout::kArray, 8};
+    case 'b': return {PropertyLayout::kRestOfNode, 0};
+    default: return {};
   }
 }
 
@@ -87,25 +102,23 @@ std::string fbx_array_size_problem(std::span<const std::uint8_t> bytes, std::siz
       if (node_end <= at || node_end > list.end || properties > node_end || property_bytes > node_end - properties) return {};
       const std::uint64_t properties_end = properties + property_bytes;
       for (std::uint64_t p = properties; p < properties_end;) {
-        const std::uint8_t type = bytes[p];
-        if (type == 'b') break;  // libassimp takes the rest of the properties for it
-        const std::size_t scalar = type == 'Y' ? 2 : type == 'C' ? 1 : type == 'I' || type == 'F' ? 4 : type == 'D' || type == 'L' ? 8 : 0;
-        if (scalar) {
-          p += 1 + scalar;
+        const PropertyLayout layout = layout_of(bytes[p]);
+        if (layout.kind == PropertyLayout::kRestOfNode) break;
+        if (layout.kind == PropertyLayout::kUnknown) return {};
+        if (layout.kind == PropertyLayout::kValue) {
+          p += 1 + layout.size;
           continue;
         }
-        if (type == 'S' || type == 'R') {
+        if (layout.kind == PropertyLayout::kSized) {
           if (p + 5 > properties_end) return {};
           p += 5 + read_le(bytes, p + 1, 4);
           continue;
         }
-        if (type != 'c' && inflated_size(type) == 0) return {};  // no type libassimp reads
         if (p + 13 > properties_end) return {};
         const std::uint64_t count = read_le(bytes, p + 1, 4), encoding = read_le(bytes, p + 5, 4), stored = read_le(bytes, p + 9, 4);
         if (p + 13 + stored > properties_end) return {};
-        // Byte arrays ('c') are never inflated: no reader of libassimp's asks for one.
-        if (const std::size_t size = inflated_size(type)) {
-          const std::uint64_t declared = count * size;
+        if (layout.size > 0) {
+          const std::uint64_t declared = count * layout.size;
           const std::string name(reinterpret_cast<const char*>(&bytes[at + null_record]), name_length);
           const std::string what = "its array '" + name + "' at byte " + std::to_string(p) + " declares " + std::to_string(count) + " values (" +
                                    format_bytes(static_cast<double>(declared)) + ")";

@@ -52,9 +52,9 @@ void update_frustum_culling(ecs::Registry& registry) {
     for (std::uint32_t p = 0; p < bounds.primitives.size(); ++p) {
       const Box& box = bounds.primitives[p];
       bool in_view = any_in_view && !box.empty && (!culling || intersects(frustum, box.min, box.max));
-      // A box wholly in view holds meshlets wholly in view: only their cones are left to test.
-      const bool wholly_in_view = in_view && culling && contains(frustum, box.min, box.max);
       const std::uint32_t first = bounds.meshlet_offsets[p], last = bounds.meshlet_offsets[p + 1];
+      // A box wholly in view holds meshlets wholly in view: only their cones are left to test.
+      const bool wholly_in_view = first != last && in_view && culling && contains(frustum, box.min, box.max);
       bool meshlet_in_view = false;
       for (std::uint32_t m = first; m < last; ++m) {
         const MeshletBounds& world = bounds.meshlets[m];
