@@ -1,5 +1,6 @@
 #include "gfx/gl_features.hpp"
 
+#include "gfx/allocation_poison.hpp"
 #include "gfx/gl.hpp"
 #include "gfx/gl_emulation.hpp"
 
@@ -69,6 +70,7 @@ const GlFeatures& gl_features() { return g_features; }
 void adopt_current_context() {
   g_features = ask_current_context();
   route_missing_entry_points(g_features);
+  route_allocation_poison(g_features.direct_state_access);
 }
 
 }  // namespace atrium::gfx

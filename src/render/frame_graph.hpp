@@ -27,6 +27,7 @@
 
 #include <glm/glm.hpp>
 
+#include "gfx/allocation_poison.hpp"
 #include "gfx/gl.hpp"
 #include "gfx/gl_object.hpp"
 #include "gfx/pass_timer.hpp"
@@ -224,7 +225,7 @@ class FrameGraph {
   // keeps a long-lived texture's texels (a cached shadow map) declares a read.
   void set_poison(bool on) { poison_ = on; }
   static constexpr glm::vec4 kPoison{64.0f, 0.0f, 64.0f, 1.0f};  // bright magenta; saturates unorm targets
-  static constexpr std::uint32_t kPoisonIdentifier = 0xdeadbeefu;
+  static constexpr std::uint32_t kPoisonIdentifier = gfx::kPoisonWord;  // as in the tests' new buffers
   static constexpr float kPoisonDepth = 0.5f;
 
   [[nodiscard]] const std::vector<CompiledPass>& passes() const { return compiled_; }

@@ -1,5 +1,6 @@
 // main() for GL test programs: creates the headless context (with KHR_debug
-// output) before any test runs and destroys it after the last.
+// output, and buffers poisoned as they are made: gfx/allocation_poison.hpp)
+// before any test runs and destroys it after the last.
 // $ATRIUM_TEST_GL (auto, 4.5, 4.1, es3.0; as --gl) picks the API it asks for.
 #include <cstdio>
 #include <cstdlib>
@@ -7,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gfx/allocation_poison.hpp"
 #include "gfx/context.hpp"
 
 namespace {
@@ -19,6 +21,8 @@ class GlEnvironment : public ::testing::Environment {
       std::fprintf(stderr, "ATRIUM_TEST_GL=%s is not an API (auto, 4.5, 4.1, es3.0)\n", api_name);
       std::exit(2);
     }
+    // Every test reads what its passes wrote, never what a new buffer happened to hold.
+    atrium::gfx::set_allocation_poison(true);
     context_ = atrium::gfx::HeadlessContext::create(atrium::gfx::ContextOptions{.api = *api, .debug = true});
     std::printf("GL context: %s, %s, %s (%s)\n", context_->info().renderer.c_str(), context_->info().api.c_str(),
                 context_->info().version.c_str(), context_->info().platform.c_str());
